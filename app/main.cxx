@@ -1,0 +1,7 @@
+#include <cstdio>
+
+int main()
+{
+  std::puts("aniso");
+  return 0;
+}

@@ -1,0 +1,1 @@
+#include "brdf/ashikhmin_shirley.h"

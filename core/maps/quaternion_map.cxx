@@ -1,0 +1,1 @@
+#include "maps/quaternion_map.h"

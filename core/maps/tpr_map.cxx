@@ -1,0 +1,1 @@
+#include "maps/tpr_map.h"
