@@ -13,6 +13,13 @@ struct AsLobe
   double nv = 100.0; // exponent along the bitangent b
 };
 
+// Largest exponent the model is specified (and tested) for.
+constexpr double kMaxExponent = 1e6;
+
+// Throws aniso::Error ("n_u: ..." or "n_v: ...") unless both exponents are finite and in
+// [0, kMaxExponent]. The evaluation functions below assume a valid lobe and do not check.
+void validateLobe(const AsLobe& lobe);
+
 // Exponent (n_u (t.h)^2 + n_v (b.h)^2) / (1 - (n.h)^2), written with the tangent-plane
 // components so that h = n (0/0) is well defined (the mean of n_u and n_v there).
 double asExponent(const AsLobe& lobe, const glm::dvec3& h);
@@ -45,5 +52,5 @@ glm::dvec3 schlickFresnel(const glm::dvec3& f0, double vDotH);
 
 // f_s(v, l) = p_h F(v.h) / (4 (v.h) max(n.v, n.l)); zero below either horizon.
 glm::dvec3 evalSpecular(const AsLobe& lobe, const glm::dvec3& f0, const glm::dvec3& v,
-  const glm::dvec3& l);
+                        const glm::dvec3& l);
 } // namespace aniso
