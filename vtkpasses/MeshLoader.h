@@ -1,0 +1,40 @@
+#pragma once
+// Loading a surface mesh file into the triangle surface the renderer draws.
+//
+// Formats, chosen by the file extension (case-insensitive):
+//   .obj (vtkOBJReader), .ply (vtkPLYReader), .stl (vtkSTLReader, coincident corners merged by
+//   the reader as usual for STL), .off (OffReader), .vtk (legacy, any dataset: non-polygonal ones
+//   are reduced to their outer surface), .vtp (XML polydata), .gltf/.glb (vtkGLTFReader: every
+//   mesh of the default scene with its node transforms applied, merged into one polydata).
+// glTF is Y-up by specification; the loader turns it into the Z-up world the way Blender's
+// importer does, (x, y, z) -> (x, -z, y), normals and tangents included.
+//
+// The result then goes through sanitizeSurface() (MeshValidation.h): triangles only, no NaN, no
+// zero-area faces, exact duplicates merged, and float "Normals"/"TCoords"/"Tangents" arrays when
+// the file had them. Normals and tangents that are missing are made by SurfacePreparation.h.
+//
+// Errors are aniso::Error "PATH: reason": missing or unreadable file, empty file, unknown
+// extension, whatever the reader reported (VTK's error and warning output is captured while
+// reading, so nothing is printed; warnings end up in MeshReport::readerWarnings), no faces left.
+// Hostile input (truncated, garbage, out-of-range indices) gives an error or a smaller mesh,
+// never a crash. loadMesh serialises itself: VTK's message output is process-wide.
+#include "MeshValidation.h"
+
+#include <string>
+#include <vtkSmartPointer.h>
+
+class vtkPolyData;
+
+namespace aniso
+{
+struct LoadedMesh
+{
+  vtkSmartPointer<vtkPolyData> polyData; // triangles, see MeshValidation.h for its arrays
+  MeshReport report;
+};
+
+LoadedMesh loadMesh(const std::string& path);
+
+// The extensions loadMesh accepts, for help texts and file dialogs: "*.obj *.ply ...".
+std::string meshFilePatterns();
+} // namespace aniso
