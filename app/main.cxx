@@ -1,7 +1,59 @@
-#include <cstdio>
+// The aniso executable: dispatches to its subcommands.
+#include "bake_command.h"
+#include "cli.h"
 
-int main()
+#include <iostream>
+#include <string>
+#include <vector>
+
+namespace
 {
-  std::puts("aniso");
-  return 0;
+std::string mainHelp()
+{
+  return "Usage: aniso [--help | --version] COMMAND [ARGS...]\n\n"
+         "aniso renders meshes with anisotropic Ashikhmin-Shirley materials under image-based\n"
+         "lighting.\n\n"
+         "Commands:\n"
+         "  bake KIND   bake lookup tables, maps and environment data to files, KIND one of:\n" +
+         aniso::cli::bakeKindsSummary(6) +
+         "\nOptions:\n"
+         "  -h, --help  show this help and exit\n"
+         "  --version   print the version and exit\n\n"
+         "Run 'aniso bake --help' or 'aniso bake KIND --help' for details.\n";
+}
+
+int run(const std::vector<std::string>& args)
+{
+  using aniso::cli::usageError;
+  if (args.empty())
+  {
+    throw aniso::cli::UsageError("missing COMMAND (see aniso --help)");
+  }
+  const std::string& command = args[0];
+  if (command == "-h" || command == "--help")
+  {
+    std::cout << mainHelp();
+    return 0;
+  }
+  if (command == "--version")
+  {
+    std::cout << "aniso " << ANISO_VERSION << "\n";
+    return 0;
+  }
+  if (command == "bake")
+  {
+    return aniso::cli::runBake(std::vector<std::string>(args.begin() + 1, args.end()), std::cout);
+  }
+  if (command.size() > 1 && command[0] == '-')
+  {
+    throw usageError(command, "unknown option (see aniso --help)");
+  }
+  throw usageError(command, "unknown command (see aniso --help)");
+}
+} // namespace
+
+int main(int argc, char** argv)
+{
+  const std::vector<std::string> args(argv + 1, argv + argc);
+  return aniso::cli::runReportingErrors([&] { return run(args); }, std::cerr);
 }

@@ -1,0 +1,86 @@
+#pragma once
+// A small command-line parser for the aniso subcommands. Options that set a tunable
+// parameter are derived from its declaration (core/material/parameters.h), so their type,
+// default, range and help text are stated once for the CLI, the docks and the sessions.
+#include "error.h"
+#include "material/parameters.h"
+
+#include <functional>
+#include <glm/vec3.hpp>
+#include <map>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace aniso::cli
+{
+// A bad command line (exit code 2); any other aniso::Error is a run-time failure (exit code 1).
+class UsageError : public Error
+{
+public:
+  using Error::Error;
+};
+
+inline UsageError usageError(const std::string& subject, const std::string& reason)
+{
+  return UsageError(subject + ": " + reason);
+}
+
+struct Option
+{
+  std::string name;                 // "--nu"
+  std::string alias;                // "-o", or empty
+  std::string valueName;            // "N", "FILE"; empty for a flag
+  ParameterSpec spec;               // type, default, range, unit and help (spec.name is not used)
+  std::vector<std::string> choices; // allowed values of a text option, if restricted
+  bool required = false;
+};
+
+// The option of declared parameter PARAMETER, named "--" + PARAMETER unless NAME is given
+// (the bake commands call lut-size just --size); HELP replaces the declared help if given.
+Option parameterOption(std::string_view parameter, std::string name = {},
+                       std::string_view help = {});
+// A text option that no declared parameter covers (paths, patterns, choices).
+Option textOption(std::string name, std::string valueName, std::string_view help,
+                  std::string_view defaultText = {});
+
+struct Command
+{
+  std::string usage;                    // "aniso bake brdf [options] -o FILE"
+  std::string summary;                  // what it does, one or two sentences
+  std::vector<std::string> positionals; // required positional arguments, in order
+  std::vector<Option> options;
+  std::string details; // output format and examples, printed after the options
+};
+
+class Arguments
+{
+public:
+  bool helpRequested = false;
+  std::vector<std::string> positionals;
+
+  bool has(const std::string& name) const; // given on the command line
+  // The given value (already parsed and range-checked), or the option's default.
+  const ParameterValue& value(const std::string& name) const;
+  double real(const std::string& name) const;
+  int integer(const std::string& name) const;
+  glm::dvec3 color(const std::string& name) const;
+  const std::string& text(const std::string& name) const;
+
+private:
+  friend Arguments parseArguments(const Command&, const std::vector<std::string>&);
+  std::map<std::string, ParameterValue> given_;
+  std::map<std::string, ParameterValue> defaults_;
+};
+
+// "--name VALUE", "--name=VALUE", aliases ("-o FILE"), "-h"/"--help", "--" ending the options.
+// Every value is parsed and range-checked here, so a bad one is reported before any work.
+// Throws UsageError naming the argument.
+Arguments parseArguments(const Command& command, const std::vector<std::string>& args);
+
+std::string helpText(const Command& command);
+
+// Runs BODY and turns what it throws into exactly one line "aniso: subject: reason" on ERR
+// and an exit code: 2 for usage errors, 1 for run-time failures.
+int runReportingErrors(const std::function<int()>& body, std::ostream& err);
+} // namespace aniso::cli
