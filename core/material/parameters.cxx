@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <utility>
 
 namespace aniso
 {
@@ -52,6 +53,15 @@ ParameterSpec text(std::string_view name, std::string_view label, std::string_vi
   return s;
 }
 
+ParameterSpec choice(std::string_view name, std::string_view label,
+                     std::vector<std::string_view> choices, std::string_view value,
+                     std::string_view help)
+{
+  ParameterSpec s = text(name, label, value, help);
+  s.choices = std::move(choices);
+  return s;
+}
+
 ParameterSpec powerOfTwo(ParameterSpec s)
 {
   s.powerOfTwo = true;
@@ -88,6 +98,32 @@ std::vector<ParameterSpec> declare()
              "exposure applied before tone mapping"),
       powerOfTwo(number("cube-size", "Cube size", T::Integer, 256.0, 1.0, 2048.0, 1.0,
                         S::Logarithmic, "texels", "edge of a level-0 environment cubemap face")),
+      // How a material is shaded and a scene shown (the application's docks and sessions).
+      choice("method", "Specular method", {"exact", "split-sum"}, "exact",
+             "specular integration: exact per-sample AS weights, or the split sum with the BRDF "
+             "lookup table"),
+      choice("filtered", "Filtered sampling", {"on", "off"}, "on",
+             "read each sample at the environment mip level its pdf and the sample count call for"),
+      choice("half-vectors", "Half vectors", {"shader", "lut"}, "shader",
+             "where the importance-sampled half vectors come from: computed in the shader or "
+             "fetched from the half-vector lookup table"),
+      number("target-samples", "Quality", T::Integer, 256.0, 1.0, 65536.0, 1.0, S::Logarithmic, {},
+             "samples per pixel a still view accumulates by progressive refinement"),
+      choice("bump", "Bump mapping", {"none", "normal", "quaternion"}, "none",
+             "how the maps perturb the shading frame: not at all, by the normal map, or by the "
+             "quaternion map (baked from the normal map when none is given)"),
+      number("height-scale", "Height scale", T::Real, 0.02, 0.0, 0.5, 0.001, S::Linear, "uv",
+             "relief depth of parallax occlusion mapping, in texture-coordinate units"),
+      text("tangents", "Tangents", "auto",
+           "tangent field: auto (the mesh's, else from UVs, else axis:1,0,0), uv, axis:X,Y,Z, "
+           "around:X,Y,Z or radial:X,Y,Z"),
+      choice("background", "Background", {"env", "color", "none"}, "env",
+             "what lies behind the surfaces: the environment, background-color, or nothing "
+             "(transparent)"),
+      color("background-color", "Background colour", {0.18, 0.18, 0.18}, 0.01,
+            "linear radiance of a plain background"),
+      choice("tone-mapping", "Tone mapping", {"aces", "reinhard", "clamp"}, "aces",
+             "display transform from linear radiance for the screen and PNG files"),
   };
 }
 
@@ -222,6 +258,16 @@ void checkParameterValue(const ParameterSpec& spec, const ParameterValue& value,
     if (value.text.empty())
     {
       throw errorAbout(subject, "empty value");
+    }
+    if (!spec.choices.empty() &&
+        std::find(spec.choices.begin(), spec.choices.end(), value.text) == spec.choices.end())
+    {
+      std::string allowed;
+      for (std::size_t i = 0; i < spec.choices.size(); ++i)
+      {
+        allowed += (i ? ", " : "") + std::string(spec.choices[i]);
+      }
+      throw errorAbout(subject, quoted(value.text) + " is not one of " + allowed);
     }
     return;
   }

@@ -17,7 +17,7 @@ enum class ParameterType
   Integer, // whole number
   Real,    // floating point
   Color,   // linear RGB triple; a single number on input means grey
-  Text     // free text (a path or a spec such as "builtin:studio"); no range
+  Text     // free text (a path or a spec such as "builtin:studio"), or one of `choices`
 };
 
 // How a slider should move through the range: exponents span six decades, so they use a
@@ -42,6 +42,9 @@ struct ParameterSpec
   bool powerOfTwo = false; // Integer only: also a power of two (mip chains down to 1x1)
   std::string_view unit;   // empty when dimensionless
   std::string_view help;   // one sentence
+  // Text only: the accepted values when restricted to a few words (a combo box in the docks),
+  // the first being the usual choice; empty = free text.
+  std::vector<std::string_view> choices;
 
   int components() const { return type == ParameterType::Color ? 3 : 1; }
 };
