@@ -1,1 +1,278 @@
 #include "reference/reference_integrator.h"
+
+#include "env/parallel.h"
+#include "env/quadrature.h"
+#include "error.h"
+
+#include <algorithm>
+#include <cmath>
+#include <glm/common.hpp>
+#include <glm/geometric.hpp>
+#include <limits>
+#include <string>
+#include <vector>
+
+namespace aniso
+{
+namespace
+{
+constexpr double kPi = 3.14159265358979323846;
+constexpr double kTwoPi = 2.0 * kPi;
+constexpr int kMaxLevel = 12;
+
+double luminance(const glm::dvec3& c)
+{
+  return 0.2126 * c.x + 0.7152 * c.y + 0.0722 * c.z;
+}
+
+// Level k: (32 << k) azimuths times (8 << k) panels of 4 Gauss-Legendre nodes along each
+// azimuth (the specular rule splits its panels between two pieces); its cost counts the nodes.
+int azimuthsAt(int level)
+{
+  return 32 << level;
+}
+int panelsAt(int level)
+{
+  return 8 << level;
+}
+uint64_t costAt(int level)
+{
+  return 1024ull << (2 * level);
+}
+
+void validate(const ReferenceOptions& options)
+{
+  if (!(options.relativeTolerance >= 0.0) || !std::isfinite(options.relativeTolerance))
+    throw errorAbout("relativeTolerance", "must be finite and >= 0");
+  if (!(options.absoluteTolerance >= 0.0) || !std::isfinite(options.absoluteTolerance))
+    throw errorAbout("absoluteTolerance", "must be finite and >= 0");
+  if (options.maxEvaluations < kReferenceMinEvaluations)
+    throw errorAbout("maxEvaluations", "must be at least " +
+                                           std::to_string(kReferenceMinEvaluations) + ", got " +
+                                           std::to_string(options.maxEvaluations));
+}
+
+// Doubles the resolution until two successive differences between levels are both within
+// tolerance (in luminance), so that a chance agreement of two coarse levels is not taken for
+// convergence, or until the next level would exceed the evaluation budget.
+template <class LevelFn>
+ReferenceResult refine(const LevelFn& evaluateLevel, const ReferenceOptions& options)
+{
+  ReferenceResult result;
+  glm::dvec3 previous = evaluateLevel(0);
+  result.evaluations = costAt(0);
+  double previousDifference = std::numeric_limits<double>::infinity();
+  for (int level = 1; level <= kMaxLevel; ++level)
+  {
+    const uint64_t cost = costAt(level);
+    if (result.evaluations + cost > options.maxEvaluations)
+      break;
+    const glm::dvec3 current = evaluateLevel(level);
+    result.evaluations += cost;
+    result.value = current;
+    result.errorEstimate = luminance(glm::abs(current - previous));
+    const double allowed = std::max(options.relativeTolerance * std::abs(luminance(current)),
+                                    options.absoluteTolerance);
+    if (result.errorEstimate <= allowed && previousDifference <= allowed)
+    {
+      result.converged = true;
+      break;
+    }
+    previousDifference = result.errorEstimate;
+    previous = current;
+  }
+  return result;
+}
+
+// Row sums of a (rows x columns) grid, in parallel once the grid is large enough to pay for the
+// threads; summed in row order so the result does not depend on the thread count.
+template <class RowFn>
+glm::dvec3 sumRows(int rows, std::size_t columns, const RowFn& row)
+{
+  std::vector<glm::dvec3> sums(std::size_t(rows), glm::dvec3(0.0));
+  const bool large = std::size_t(rows) * columns >= 16384;
+  parallelFor(
+      rows, [&](int i) { sums[std::size_t(i)] = row(i); }, large ? 1 : rows);
+  glm::dvec3 total(0.0);
+  for (const glm::dvec3& s : sums)
+    total += s;
+  return total;
+}
+
+// The specular integral over half vectors. With dw_l = 4 (v.h) dw_h, f_s L (n.l) dw_l becomes
+// p_h(h) F(v.h) L(l) (n.l) / max(n.v, n.l) dw_h. In spherical coordinates of h,
+// p_h dw_h = C mu^e(phi) dmu dphi with mu = cos(theta), e(phi) = nu cos^2 + nv sin^2 and
+// C = sqrt(a b) / (2 pi), a = nu + 1, b = nv + 1. Two substitutions make this measure simple:
+//   mu^(e + 1) = exp(-rho^2)    gives mu^e dmu = 2 rho exp(-rho^2) drho / (e + 1);
+//   (cos phi, sin phi) ~ (sqrt(b) cos psi, sqrt(a) sin psi)
+//                               gives dphi / (e + 1) = dpsi / sqrt(a b), and e + 1 = a b / R^2
+//                               with R^2 = b cos^2 psi + a sin^2 psi.
+// So p_h dw_h = 2 rho exp(-rho^2) drho dpsi / (2 pi): a unit Gaussian in the plane with polar
+// coordinates (rho, psi), whatever the exponents; the lobe's width is gone from the grid, and
+// rho > 6 holds less than 1e-15 of it. The integrand is smooth and periodic in psi (see
+// specularAtLevel for where it is steep). Along each azimuth (a meridian of h), n.l = 2 (v.h)(n.h)
+// - n.v = A cos(2 theta - alpha) with A cos(alpha) = n.v, A sin(alpha) = v.(cos phi, sin phi, 0): l
+// reaches the horizon at theta = (alpha + pi/2) / 2 and, when alpha > 0, crosses n.l = n.v (the
+// kink of max) at theta = alpha. The rho interval is split there, so each piece is smooth and
+// Gauss-Legendre converges quickly on it.
+constexpr double kRhoMax = 6.0;
+
+struct SpecularSetup
+{
+  double sqrtA;
+  double sqrtB;
+  double ab;
+  glm::dvec3 v; // tangent space, v.z > 0
+  glm::dvec3 f0;
+  Frame frame;
+  const Environment* env;
+};
+
+// Integral over rho of F L (n.l) / max(n.v, n.l) 2 rho exp(-rho^2) along one azimuth.
+glm::dvec3 specularRow(const SpecularSetup& s, double cosPhi, double sinPhi, double ePlusOne,
+                       const QuadratureRule& unit)
+{
+  const double alpha = std::atan2(s.v.x * cosPhi + s.v.y * sinPhi, s.v.z);
+  // rho of a polar angle: rho^2 = -(e + 1) ln cos(theta), written to stay exact for small theta.
+  auto rhoOf = [&](double theta)
+  {
+    const double sn = std::sin(theta);
+    return std::sqrt(-0.5 * ePlusOne * std::log1p(-sn * sn));
+  };
+  const double rhoEnd = std::min(rhoOf(0.5 * (alpha + 0.5 * kPi)), kRhoMax);
+  const double rhoKink = alpha > 0.0 ? std::min(rhoOf(alpha), rhoEnd) : 0.0;
+  const double bounds[3] = {0.0, rhoKink, rhoEnd};
+  glm::dvec3 sum(0.0);
+  for (int piece = 0; piece < 2; ++piece)
+  {
+    const double r0 = bounds[piece];
+    const double width = bounds[piece + 1] - r0;
+    if (!(width > 0.0))
+      continue;
+    for (std::size_t k = 0; k < unit.nodes.size(); ++k)
+    {
+      const double rho = r0 + width * unit.nodes[k];
+      // mu and sin(theta) through logarithms and expm1, so that a lobe of exponent 1e6
+      // (theta ~ 1e-3) keeps full relative precision.
+      const double logMu = -rho * rho / ePlusOne;
+      const double mu = std::exp(logMu);
+      const double sinTheta = std::sqrt(std::max(0.0, -std::expm1(2.0 * logMu)));
+      const glm::dvec3 h(sinTheta * cosPhi, sinTheta * sinPhi, mu);
+      const double vDotH = glm::dot(s.v, h);
+      const glm::dvec3 l = 2.0 * vDotH * h - s.v;
+      const double nDotL = l.z;
+      if (nDotL <= 0.0 || vDotH <= 0.0)
+        continue; // only by rounding at the horizon end of the last piece
+      const double m = 1.0 - vDotH;
+      const double m5 = m * m * m * m * m;
+      const glm::dvec3 fresnel = s.f0 + (glm::dvec3(1.0) - s.f0) * m5;
+      const glm::dvec3 radiance = s.env->radiance(s.frame.toWorld(l));
+      const double weight = width * unit.weights[k] * 2.0 * rho * std::exp(-rho * rho);
+      sum += (weight * nDotL / std::max(s.v.z, nDotL)) * fresnel * radiance;
+    }
+  }
+  return sum;
+}
+
+glm::dvec3 specularAtLevel(const SpecularSetup& s, int level)
+{
+  // Azimuths: where h's meridian is perpendicular to the view (v.(cos phi, sin phi, 0) = 0),
+  // alpha swings from -pi/2 to pi/2 within an angle ~ n.v, so at grazing views the row integral
+  // changes steeply there. The circle is cut at those two azimuths into two arcs, each mapped
+  // by psi = psi0 + pi (t - sin(2 pi t) / (2 pi)), which crowds the nodes towards the cuts;
+  // the midpoint rule in t stays high-order since the map's derivative vanishes at both ends.
+  const double phiCut = std::atan2(s.v.y, s.v.x) + 0.5 * kPi;
+  const double psiCut = std::atan2(std::sin(phiCut) / s.sqrtA, std::cos(phiCut) / s.sqrtB);
+  const int perArc = azimuthsAt(level) / 2;
+  // Each of the (at most two) rho pieces gets half the panels of the irradiance rule.
+  const QuadratureRule unit = compositeGaussLegendre(panelsAt(level) / 2, 4, 0.0, 1.0);
+  const glm::dvec3 total =
+      sumRows(2 * perArc, 2 * unit.nodes.size(),
+              [&](int i)
+              {
+                const double t = (i % perArc + 0.5) / perArc;
+                const double psi =
+                    psiCut + kPi * ((i / perArc) + t - std::sin(kTwoPi * t) / kTwoPi);
+                const double dPsi = kPi * (1.0 - std::cos(kTwoPi * t)) / perArc;
+                const double x = s.sqrtB * std::cos(psi);
+                const double y = s.sqrtA * std::sin(psi);
+                const double r2 = x * x + y * y;
+                const double r = std::sqrt(r2);
+                return dPsi * specularRow(s, x / r, y / r, s.ab / r2, unit);
+              });
+  return total / kTwoPi;
+}
+
+glm::dvec3 irradianceAtLevel(const Frame& frame, const Environment& env, int level)
+{
+  // E = integral over the hemisphere of L mu dmu dphi: Gauss-Legendre in mu = n.l, equally
+  // spaced azimuths.
+  const int azimuths = azimuthsAt(level);
+  const QuadratureRule muRule = compositeGaussLegendre(panelsAt(level), 4, 0.0, 1.0);
+  const glm::dvec3 total = sumRows(
+      azimuths, muRule.nodes.size(),
+      [&](int i)
+      {
+        const double phi = (i + 0.5) * kTwoPi / azimuths;
+        const double c = std::cos(phi);
+        const double sn = std::sin(phi);
+        glm::dvec3 sum(0.0);
+        for (std::size_t k = 0; k < muRule.nodes.size(); ++k)
+        {
+          const double mu = muRule.nodes[k];
+          const double r = std::sqrt(std::max(0.0, 1.0 - mu * mu));
+          sum += (muRule.weights[k] * mu) * env.radiance(frame.toWorld({r * c, r * sn, mu}));
+        }
+        return sum;
+      });
+  return total * (kTwoPi / azimuths);
+}
+
+bool finiteVector(const glm::dvec3& d)
+{
+  return std::isfinite(d.x) && std::isfinite(d.y) && std::isfinite(d.z);
+}
+} // namespace
+
+ReferenceResult integrateSpecular(const AsLobe& lobe, const glm::dvec3& f0, const Frame& frame,
+                                  const glm::dvec3& viewWorld, const Environment& env,
+                                  const ReferenceOptions& options)
+{
+  validate(options);
+  if (!(lobe.nu >= 0.0 && lobe.nu <= 1e7))
+    throw errorAbout("nu", "must be in [0, 1e7]");
+  if (!(lobe.nv >= 0.0 && lobe.nv <= 1e7))
+    throw errorAbout("nv", "must be in [0, 1e7]");
+  for (int c = 0; c < 3; ++c)
+    if (!(f0[c] >= 0.0 && f0[c] <= 1.0))
+      throw errorAbout("F0", "must be in [0, 1] per channel");
+  if (!finiteVector(viewWorld) || !(glm::length(viewWorld) > 0.0))
+    throw errorAbout("view", "must be a finite non-zero vector");
+
+  SpecularSetup setup;
+  setup.sqrtA = std::sqrt(lobe.nu + 1.0);
+  setup.sqrtB = std::sqrt(lobe.nv + 1.0);
+  setup.ab = (lobe.nu + 1.0) * (lobe.nv + 1.0);
+  setup.v = glm::normalize(frame.toLocal(glm::normalize(viewWorld)));
+  setup.f0 = f0;
+  setup.frame = frame;
+  setup.env = &env;
+  if (setup.v.z <= 0.0)
+  {
+    ReferenceResult below;
+    below.converged = true; // f_s is zero for views below the surface
+    return below;
+  }
+  return refine([&](int level) { return specularAtLevel(setup, level); }, options);
+}
+
+ReferenceResult integrateIrradiance(const glm::dvec3& normalWorld, const Environment& env,
+                                    const ReferenceOptions& options)
+{
+  validate(options);
+  if (!finiteVector(normalWorld) || !(glm::length(normalWorld) > 0.0))
+    throw errorAbout("normal", "must be a finite non-zero vector");
+  const Frame frame = Frame::fromNormalTangent(normalWorld, {1.0, 0.0, 0.0});
+  return refine([&](int level) { return irradianceAtLevel(frame, env, level); }, options);
+}
+} // namespace aniso

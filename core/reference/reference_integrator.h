@@ -1,16 +1,16 @@
 #pragma once
 // Ground truth: the reflected radiance integral of f_s L_i (n.l) over the hemisphere, without the
 // split-sum approximation and without any LUT. Independent of the sampling code it checks:
-// it does not call sampleHalfVector or the LUT bakers; it integrates deterministically over the
-// half-vector hemisphere with a change of variables adapted to the lobe width, and refines
-// until two successive resolutions agree to the requested precision.
-#include <cstdint>
-
-#include <glm/vec3.hpp>
-
+// it does not call sampleHalfVector, the BRDF functions or the LUT bakers; it integrates
+// deterministically over the half-vector hemisphere with a change of variables adapted to the
+// lobe width, and doubles the resolution until three successive resolutions agree to the
+// requested precision.
 #include "brdf/ashikhmin_shirley.h"
 #include "env/environment.h"
 #include "frame.h"
+
+#include <cstdint>
+#include <glm/vec3.hpp>
 
 namespace aniso
 {
@@ -18,23 +18,31 @@ struct ReferenceOptions
 {
   double relativeTolerance = 1e-3; // on the luminance of the result
   double absoluteTolerance = 1e-6;
-  uint64_t maxEvaluations = 1ull << 26;
+  uint64_t maxEvaluations = 1ull << 26; // at least kReferenceMinEvaluations
 };
+
+// The three coarsest resolutions: the fewest with which an integration can converge.
+constexpr uint64_t kReferenceMinEvaluations = 21504;
 
 struct ReferenceResult
 {
   glm::dvec3 value{0.0};
   double errorEstimate = 0.0; // |difference| between the last two resolutions (luminance)
-  uint64_t evaluations = 0;
+  uint64_t evaluations = 0;   // quadrature nodes visited (radiance lookups at most)
+  // The last two differences between successive resolutions were within tolerance before
+  // maxEvaluations ran out.
   bool converged = false;
 };
 
 // Outgoing specular radiance towards world direction viewWorld from a surface with shading frame
-// `frame` (world space) lit by env.
+// `frame` (world space, orthonormal) lit by env. A view below the surface gives 0.
+// Throws aniso::Error for exponents outside [0, 1e7], F0 outside [0, 1], a non-finite or zero
+// view, negative tolerances or maxEvaluations below kReferenceMinEvaluations.
 ReferenceResult integrateSpecular(const AsLobe& lobe, const glm::dvec3& f0, const Frame& frame,
-  const glm::dvec3& viewWorld, const Environment& env, const ReferenceOptions& options = {});
+                                  const glm::dvec3& viewWorld, const Environment& env,
+                                  const ReferenceOptions& options = {});
 
 // Irradiance E(n) = integral of L (n.l)+ dw by brute-force quadrature (checks the SH9 path).
 ReferenceResult integrateIrradiance(const glm::dvec3& normalWorld, const Environment& env,
-  const ReferenceOptions& options = {});
+                                    const ReferenceOptions& options = {});
 } // namespace aniso
