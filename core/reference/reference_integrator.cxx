@@ -239,10 +239,7 @@ ReferenceResult integrateSpecular(const AsLobe& lobe, const glm::dvec3& f0, cons
                                   const ReferenceOptions& options)
 {
   validate(options);
-  if (!(lobe.nu >= 0.0 && lobe.nu <= 1e7))
-    throw errorAbout("nu", "must be in [0, 1e7]");
-  if (!(lobe.nv >= 0.0 && lobe.nv <= 1e7))
-    throw errorAbout("nv", "must be in [0, 1e7]");
+  validateLobe(lobe);
   for (int c = 0; c < 3; ++c)
     if (!(f0[c] >= 0.0 && f0[c] <= 1.0))
       throw errorAbout("F0", "must be in [0, 1] per channel");

@@ -1,7 +1,7 @@
 #pragma once
 // Ground truth: the reflected radiance integral of f_s L_i (n.l) over the hemisphere, without the
 // split-sum approximation and without any LUT. Independent of the sampling code it checks:
-// it does not call sampleHalfVector, the BRDF functions or the LUT bakers; it integrates
+// it does not call sampleHalfVector, the BRDF evaluation or the LUT bakers; it integrates
 // deterministically over the half-vector hemisphere with a change of variables adapted to the
 // lobe width, and doubles the resolution until three successive resolutions agree to the
 // requested precision.
@@ -36,8 +36,9 @@ struct ReferenceResult
 
 // Outgoing specular radiance towards world direction viewWorld from a surface with shading frame
 // `frame` (world space, orthonormal) lit by env. A view below the surface gives 0.
-// Throws aniso::Error for exponents outside [0, 1e7], F0 outside [0, 1], a non-finite or zero
-// view, negative tolerances or maxEvaluations below kReferenceMinEvaluations.
+// Throws aniso::Error for exponents outside [0, kMaxExponent] (validateLobe), F0 outside [0, 1],
+// a non-finite or zero view, negative tolerances or maxEvaluations below
+// kReferenceMinEvaluations.
 ReferenceResult integrateSpecular(const AsLobe& lobe, const glm::dvec3& f0, const Frame& frame,
                                   const glm::dvec3& viewWorld, const Environment& env,
                                   const ReferenceOptions& options = {});

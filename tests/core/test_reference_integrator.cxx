@@ -14,6 +14,7 @@
 #include <cstdio>
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -317,8 +318,11 @@ TEST(ReferenceSpecular, ArgumentsAndBelowHorizon)
     return "";
   };
   const aniso::ReferenceOptions defaults;
-  EXPECT_EQ(messageOf({-1, 1}, glm::dvec3(1), {0, 0, 1}, defaults).rfind("nu: ", 0), 0u);
-  EXPECT_EQ(messageOf({1, NAN}, glm::dvec3(1), {0, 0, 1}, defaults).rfind("nv: ", 0), 0u);
+  EXPECT_EQ(messageOf({-1, 1}, glm::dvec3(1), {0, 0, 1}, defaults).rfind("n_u: ", 0), 0u);
+  EXPECT_EQ(
+      messageOf({1, std::numeric_limits<double>::quiet_NaN()}, glm::dvec3(1), {0, 0, 1}, defaults)
+          .rfind("n_v: ", 0),
+      0u);
   EXPECT_EQ(messageOf({1, 1}, glm::dvec3(1.5), {0, 0, 1}, defaults).rfind("F0: ", 0), 0u);
   EXPECT_EQ(messageOf({1, 1}, glm::dvec3(1), {0, 0, 0}, defaults).rfind("view: ", 0), 0u);
   aniso::ReferenceOptions tiny;
