@@ -249,6 +249,16 @@ Arguments parseArguments(const Command& command, const std::vector<std::string>&
     {
       throw usageError(name, "given more than once");
     }
+    if (option->valueName.empty())
+    {
+      // A flag: present or not.
+      if (inlineValue)
+      {
+        throw usageError(name, "takes no value");
+      }
+      parsed.given_[option->name] = ParameterValue{};
+      continue;
+    }
     if (!inlineValue)
     {
       // A following "--option" is a forgotten value, not a value; "-30" is a value.
@@ -308,7 +318,10 @@ std::string helpText(const Command& command)
   for (const auto& option : command.options)
   {
     std::string left = (option.alias.empty() ? "" : option.alias + ", ") + option.name;
-    left += " " + (option.choices.empty() ? option.valueName : joined(option.choices, "|"));
+    if (!option.valueName.empty() || !option.choices.empty())
+    {
+      left += " " + (option.choices.empty() ? option.valueName : joined(option.choices, "|"));
+    }
     rows.emplace_back(left, std::string(option.spec.help) + rangeAndDefault(option));
   }
   rows.emplace_back("-h, --help", "show this help and exit");

@@ -1,6 +1,7 @@
 // The aniso executable: dispatches to its subcommands.
 #include "bake_command.h"
 #include "cli.h"
+#include "render_command.h"
 
 #include <iostream>
 #include <string>
@@ -15,7 +16,7 @@ std::string mainHelp()
          "lighting.\n\n"
          "Commands:\n"
          "  bake KIND   bake lookup tables, maps and environment data to files, KIND one of:\n" +
-         aniso::cli::bakeKindsSummary(6) +
+         aniso::cli::bakeKindsSummary(6) + "  render      " + aniso::cli::renderSummary() + "\n" +
          "\nOptions:\n"
          "  -h, --help  show this help and exit\n"
          "  --version   print the version and exit\n\n"
@@ -43,6 +44,10 @@ int run(const std::vector<std::string>& args)
   if (command == "bake")
   {
     return aniso::cli::runBake(std::vector<std::string>(args.begin() + 1, args.end()), std::cout);
+  }
+  if (command == "render")
+  {
+    return aniso::cli::runRender(std::vector<std::string>(args.begin() + 1, args.end()), std::cout);
   }
   if (command.size() > 1 && command[0] == '-')
   {

@@ -1,0 +1,450 @@
+#include "render_command.h"
+
+#include "BrushingModel.h"
+#include "BuiltinMeshes.h"
+#include "MeshLoader.h"
+#include "OffscreenRenderer.h"
+#include "SurfacePreparation.h"
+#include "cli.h"
+#include "env/environment.h"
+#include "image/image.h"
+#include "maps/quaternion_map.h"
+#include "maps/tpr_map.h"
+#include "material/parameters.h"
+
+#include <algorithm>
+#include <cctype>
+#include <filesystem>
+#include <memory>
+#include <sstream>
+#include <vtkPointData.h>
+#include <vtkPolyData.h>
+
+namespace aniso::cli
+{
+namespace
+{
+namespace fs = std::filesystem;
+
+constexpr int kMaxSide = 16384;
+constexpr int kTprBakeSide = 1024; // texels of a TPR pattern map: finer than any view needs
+
+// The declared parameters this command takes, as --NAME options.
+const char* const kDeclared[] = {"env",          "env-rotation", "nu",       "nv",
+                                 "f0",           "albedo",       "method",   "filtered",
+                                 "half-vectors", "samples",      "lut-size", "lut-samples",
+                                 "cube-size",    "height-scale", "exposure", "tone-mapping"};
+
+Option declared(const char* name)
+{
+  Option o = parameterOption(name);
+  for (std::string_view choice : o.spec.choices)
+  {
+    o.choices.emplace_back(choice);
+  }
+  if (std::string(name) == "env")
+  {
+    o.valueName = "FILE|builtin:studio";
+  }
+  return o;
+}
+
+Option numberOption(std::string name, std::string valueName, ParameterType type, double value,
+                    double minimum, double maximum, std::string_view unit, std::string_view help)
+{
+  Option o;
+  o.name = std::move(name);
+  o.valueName = std::move(valueName);
+  o.spec.type = type;
+  o.spec.defaultValue = {value, 0.0, 0.0};
+  o.spec.minimum = minimum;
+  o.spec.maximum = maximum;
+  o.spec.unit = unit;
+  o.spec.help = help;
+  return o;
+}
+
+Option flagOption(std::string name, std::string_view help)
+{
+  Option o;
+  o.name = std::move(name);
+  o.spec.type = ParameterType::Text;
+  o.spec.help = help;
+  return o;
+}
+
+Command renderCommand()
+{
+  Command c;
+  c.usage = "aniso render [MESH] [options] -o FILE";
+  c.summary = "Render MESH (OBJ, PLY, STL, OFF, VTK, VTP, glTF) or a built-in mesh with an "
+              "anisotropic Ashikhmin-Shirley material under image-based lighting, without a "
+              "window, to a PNG (tone-mapped 8-bit sRGB) or an EXR (linear float radiance, alpha "
+              "= coverage). Needs an X display; where there is none, run it under xvfb-run.";
+  c.positionals = {"MESH"};
+  Option builtin = textOption("--builtin", "NAME", "render a built-in mesh instead of a file");
+  builtin.choices = {"sphere", "torus", "plate"};
+  c.options.push_back(builtin);
+  for (const char* name : kDeclared)
+  {
+    c.options.push_back(declared(name));
+  }
+  c.options.push_back(numberOption(
+      "--frames", "N", ParameterType::Integer, 4.0, 1.0, 65536.0, {},
+      "progressive frames accumulated, each with a rotated sample set (N x samples per pixel)"));
+  c.options.push_back(textOption(
+      "--normal-map", "FILE",
+      "tangent-space normal map; its quaternion map is baked and used unless --bump normal"));
+  c.options.push_back(
+      textOption("--quaternion-map", "FILE",
+                 "quaternion map (a, b, c), stored like a normal map (8/16-bit files as 2c - 1)"));
+  Option bump = textOption(
+      "--bump", "MODE",
+      "how --normal-map perturbs the frame: the baked quaternion frame (the source's method) or "
+      "the normal alone with the tangent re-orthogonalised",
+      "quaternion");
+  bump.choices = {"quaternion", "normal"};
+  c.options.push_back(bump);
+  c.options.push_back(textOption(
+      "--tpr", "PATTERN|FILE",
+      "tangent-plane rotation map: a file (2 channels x, y, or 1 channel angle in [0, pi]) or a "
+      "pattern linear[:ANGLE], circular[:U,V], radial[:U,V], spiral[:U,V[:PITCH]], wave"));
+  c.options.push_back(
+      textOption("--height-map", "FILE",
+                 "height map (first channel, 1 = top) for parallax occlusion mapping"));
+  c.options.push_back(
+      textOption("--tangents", "MODEL",
+                 "tangent field: " + brushingModelSyntax() +
+                     "; by default the mesh's own, else from its UVs, else axis:1,0,0"));
+  c.options.push_back(textOption("--size", "WxH", "image size in pixels", "512x512"));
+  c.options.push_back(textOption(
+      "--view", "SIDE",
+      "camera on that side of the object looking at its centre, Z up: +x, -x, +y, -y, +z, -z",
+      "-y"));
+  c.options.push_back(
+      numberOption("--azimuth", "DEG", ParameterType::Real, 0.0, -360.0, 360.0, "deg",
+                   "camera direction instead of --view: 0 on the -Y side, 90 on +X"));
+  c.options.push_back(numberOption("--elevation", "DEG", ParameterType::Real, 0.0, -90.0, 90.0,
+                                   "deg", "camera height above the XY plane, with --azimuth"));
+  c.options.push_back(flagOption("--ortho", "parallel projection (the view fits the object)"));
+  c.options.push_back(textOption(
+      "--background", "env|none|R,G,B",
+      "behind the object: the environment, nothing (transparent PNG), or a uniform linear radiance",
+      "env"));
+  Option jitter = textOption(
+      "--jitter", "on|off",
+      "sub-pixel camera jitter between frames (anti-aliased edges, fractional coverage)", "on");
+  jitter.choices = {"on", "off"};
+  c.options.push_back(jitter);
+  Option output = textOption("--output", "FILE", "the image to write: .png or .exr");
+  output.alias = "-o";
+  output.required = true;
+  c.options.push_back(output);
+  c.options.push_back(
+      flagOption("--time", "print the median frame time and the samples per second"));
+  c.details = "Examples:\n"
+              "  aniso render --builtin sphere --nu 20000 --nv 70 -o sphere.png\n"
+              "  aniso render part.stl --tangents around:0,0,1 --frames 16 -o part.exr\n"
+              "  aniso render --builtin plate --tpr circular --view +z --time -o disc.png\n";
+  return c;
+}
+
+// MESH is optional when --builtin is given: parse with it, then without if it is missing.
+Arguments parse(const Command& command, const std::vector<std::string>& args)
+{
+  try
+  {
+    return parseArguments(command, args);
+  }
+  catch (const UsageError& e)
+  {
+    if (std::string(e.what()).rfind("MESH: missing argument", 0) != 0)
+    {
+      throw;
+    }
+    Command withoutMesh = command;
+    withoutMesh.positionals.clear();
+    Arguments a = parseArguments(withoutMesh, args);
+    if (!a.has("--builtin") && !a.helpRequested)
+    {
+      throw usageError("MESH", "missing argument (or give --builtin)");
+    }
+    return a;
+  }
+}
+
+std::string lowercaseExtension(const std::string& path)
+{
+  std::string ext = fs::path(path).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char ch) { return static_cast<char>(std::tolower(ch)); });
+  return ext;
+}
+
+std::pair<int, int> parseSize(const std::string& text)
+{
+  ParameterSpec side;
+  side.type = ParameterType::Integer;
+  side.minimum = 1.0;
+  side.maximum = kMaxSide;
+  const std::size_t x = text.find('x');
+  const std::string w = text.substr(0, x);
+  const std::string h = x == std::string::npos ? w : text.substr(x + 1);
+  return {static_cast<int>(parseParameterValue(side, w, "--size").number[0]),
+          static_cast<int>(parseParameterValue(side, h, "--size").number[0])};
+}
+
+void checkOutput(const std::string& output)
+{
+  const std::string ext = lowercaseExtension(output);
+  if (ext != ".png" && ext != ".exr")
+  {
+    throw usageError(output, "output file must end in .png or .exr");
+  }
+  std::error_code ec;
+  const fs::path parent =
+      fs::path(output).has_parent_path() ? fs::path(output).parent_path() : fs::path(".");
+  if (!fs::is_directory(parent, ec))
+  {
+    throw errorAbout(output, "directory '" + parent.string() + "' does not exist");
+  }
+  if (fs::is_directory(output, ec))
+  {
+    throw errorAbout(output, "is a directory");
+  }
+}
+
+// Integer-encoded files hold signed vectors as 2c - 1, as normal maps do.
+std::shared_ptr<const Image> readSignedMap(const std::string& path)
+{
+  ImageInfo info;
+  Image image = readImage(path, &info);
+  if (info.integerFormat)
+  {
+    for (float& value : image.data)
+    {
+      value = 2.0f * value - 1.0f;
+    }
+  }
+  return std::make_shared<const Image>(std::move(image));
+}
+
+std::shared_ptr<const Image> tprMap(const std::string& text)
+{
+  std::error_code ec;
+  if (!fs::exists(text, ec))
+  {
+    return std::make_shared<const Image>(
+        bakeTprMap(parseTprPattern(text), kTprBakeSide, kTprBakeSide));
+  }
+  ImageInfo info;
+  Image image = readImage(text, &info);
+  if (image.channels == 1)
+  {
+    return std::make_shared<const Image>(tprFromAngleImage(image));
+  }
+  if (info.integerFormat)
+  {
+    for (float& value : image.data)
+    {
+      value = 2.0f * value - 1.0f;
+    }
+  }
+  return std::make_shared<const Image>(std::move(image));
+}
+
+vtkSmartPointer<vtkPolyData> surfaceOf(const Arguments& a, std::string& source, std::ostream& out)
+{
+  LoadedMesh mesh;
+  if (a.has("--builtin"))
+  {
+    if (!a.positionals.empty())
+    {
+      throw usageError(a.positionals[0], "give either MESH or --builtin");
+    }
+    mesh = makeBuiltinMesh(parseBuiltinMesh(a.text("--builtin")));
+    source = "builtin:" + a.text("--builtin");
+  }
+  else
+  {
+    source = a.positionals.at(0);
+    mesh = loadMesh(source);
+  }
+  for (const std::string& line : mesh.report.notes())
+  {
+    out << "  " << line << "\n";
+  }
+  SurfaceOptions options;
+  if (a.has("--tangents"))
+  {
+    options.brushing = parseBrushingModel(a.text("--tangents"));
+  }
+  PreparedSurface prepared = prepareSurface(mesh.polyData, options, source);
+  for (const std::string& note : prepared.report.notes())
+  {
+    out << "  " << note << "\n";
+  }
+  return prepared.polyData;
+}
+
+std::string formatMilliseconds(double seconds)
+{
+  std::ostringstream s;
+  s.setf(std::ios::fixed);
+  s.precision(seconds < 0.1 ? 2 : 1);
+  s << seconds * 1e3 << " ms";
+  return s.str();
+}
+} // namespace
+
+std::string renderSummary()
+{
+  return "render a mesh with an anisotropic material to a PNG or EXR, headless";
+}
+
+int runRender(const std::vector<std::string>& args, std::ostream& out)
+{
+  const Command command = renderCommand();
+  const Arguments a = parse(command, args);
+  if (a.helpRequested)
+  {
+    out << helpText(command);
+    return 0;
+  }
+
+  // Everything the command line can get wrong is checked before any work.
+  const std::string output = a.text("--output");
+  checkOutput(output);
+  RenderSettings settings;
+  try
+  {
+    std::tie(settings.width, settings.height) = parseSize(a.text("--size"));
+  }
+  catch (const Error& e)
+  {
+    throw UsageError(e.what());
+  }
+  if (a.has("--view") && (a.has("--azimuth") || a.has("--elevation")))
+  {
+    throw usageError("--view", "give either --view or --azimuth/--elevation");
+  }
+  settings.view.direction =
+      a.has("--azimuth") || a.has("--elevation")
+          ? viewDirectionFromAngles(a.real("--azimuth"), a.real("--elevation"))
+          : viewDirectionFromName(a.text("--view"), "--view");
+  settings.view.parallel = a.has("--ortho");
+  if (a.has("--quaternion-map") && a.has("--normal-map"))
+  {
+    throw usageError("--quaternion-map", "give either --normal-map or --quaternion-map");
+  }
+  if (a.has("--bump") && !a.has("--normal-map"))
+  {
+    throw usageError("--bump", "only applies to --normal-map");
+  }
+
+  ParameterSet parameters;
+  for (const char* name : kDeclared)
+  {
+    parameters.setValue(name, a.value(std::string("--") + name));
+  }
+  const std::string background = a.text("--background");
+  if (background == "none" || background == "env")
+  {
+    parameters.setText("background", background);
+  }
+  else
+  {
+    try
+    {
+      parameters.setValue("background", ParameterValue{{}, "color"});
+      parameters.setValue("background-color", parseParameterValue(parameterSpec("background-color"),
+                                                                  background, "--background"));
+    }
+    catch (const Error& e)
+    {
+      throw usageError("--background", "'" + background + "' is not env, none or R,G,B");
+    }
+  }
+  settings.material = materialFromParameters(parameters);
+  settings.display = displayFromParameters(parameters);
+  settings.environmentRotationDegrees = parameters.real("env-rotation");
+  settings.cubeSize = parameters.integer("cube-size");
+  settings.frames = a.integer("--frames");
+  settings.jitter = a.text("--jitter") == "on";
+
+  // Then the inputs, each failing with its file's name.
+  std::string source;
+  settings.surface = surfaceOf(a, source, out);
+  settings.environment = openEnvironment(parameters.text("env"));
+  if (a.has("--normal-map"))
+  {
+    const std::string path = a.text("--normal-map");
+    if (a.text("--bump") == "normal")
+    {
+      settings.material.normalMap = readSignedMap(path);
+    }
+    else
+    {
+      ImageInfo info;
+      const Image normals = readImage(path, &info);
+      settings.material.quaternionMap =
+          std::make_shared<const Image>(bakeQuaternionMap(normals, info.integerFormat, nullptr));
+    }
+  }
+  if (a.has("--quaternion-map"))
+  {
+    settings.material.quaternionMap = readSignedMap(a.text("--quaternion-map"));
+  }
+  if (a.has("--tpr"))
+  {
+    settings.material.tprMap = tprMap(a.text("--tpr"));
+  }
+  if (a.has("--height-map"))
+  {
+    settings.material.heightMap = std::make_shared<const Image>(readImage(a.text("--height-map")));
+  }
+  if (settings.material.usesMaps() && !settings.surface->GetPointData()->GetArray("TCoords"))
+  {
+    throw errorAbout(source, "has no texture coordinates, which the maps need");
+  }
+
+  const RenderResult result = renderOffscreen(settings);
+
+  const bool exr = lowercaseExtension(output) == ".exr";
+  if (exr)
+  {
+    writeImage(output, result.linear);
+  }
+  else if (settings.display.background == BackgroundMode::Transparent)
+  {
+    writeImage(output, result.display);
+  }
+  else
+  {
+    Image rgb(result.display.width, result.display.height, 3);
+    for (std::size_t i = 0, n = std::size_t(rgb.width) * rgb.height; i < n; ++i)
+    {
+      std::copy_n(&result.display.data[i * 4], 3, &rgb.data[i * 3]);
+    }
+    writeImage(output, rgb);
+  }
+  const int samples = settings.material.samples;
+  out << "render: wrote " << output << " (" << settings.width << "x" << settings.height << ", "
+      << (exr ? "linear RGBA float, alpha = coverage" : "tone-mapped sRGB") << ") of " << source
+      << ": " << settings.frames << " frame(s) x " << samples << " samples, "
+      << parameters.text("method") << ", filtered " << parameters.text("filtered")
+      << ", half vectors from the " << parameters.text("half-vectors") << "\n";
+  if (a.has("--time"))
+  {
+    const double median = medianSeconds(result.frameSeconds);
+    const double samplesPerSecond =
+        median > 0.0 ? double(result.coveredPixels) * samples / median : 0.0;
+    out << "time: median frame " << formatMilliseconds(median) << " over " << settings.frames
+        << " frame(s) (first " << formatMilliseconds(result.frameSeconds.front())
+        << ", shaders and textures included); " << result.coveredPixels << " covered pixels x "
+        << samples << " samples: " << samplesPerSecond / 1e6 << " M samples/s on "
+        << result.renderer << "\n";
+  }
+  return 0;
+}
+} // namespace aniso::cli

@@ -1,0 +1,80 @@
+#include "EnvironmentLighting.h"
+
+#include "TextureUpload.h"
+#include "error.h"
+
+#include <cmath>
+#include <vtkOpenGLRenderWindow.h>
+#include <vtkTextureObject.h>
+
+namespace aniso
+{
+EnvironmentLighting::EnvironmentLighting(std::shared_ptr<const Environment> environment,
+                                         int cubeSize)
+    : environment_(std::move(environment))
+{
+  if (!environment_)
+  {
+    throw errorAbout("environment", "none given");
+  }
+  cubemap_ = buildCubemap(*environment_, cubeSize);
+  // Projected from the environment itself rather than the cubemap: the diffuse term then does
+  // not depend on the cube resolution.
+  const Sh9 radiance = projectSh9(*environment_);
+  // Cosine-lobe convolution factors of bands 0, 1, 2 (Ramamoorthi and Hanrahan).
+  const double bandFactor[3] = {M_PI, 2.0 * M_PI / 3.0, M_PI / 4.0};
+  for (int i = 0; i < 9; ++i)
+  {
+    const int band = i == 0 ? 0 : (i < 4 ? 1 : 2);
+    irradiance_[i] = glm::vec3(radiance[i] * bandFactor[band]);
+  }
+}
+
+EnvironmentLighting::~EnvironmentLighting() = default;
+
+void EnvironmentLighting::setRotationDegrees(double degrees)
+{
+  if (!std::isfinite(degrees))
+  {
+    throw errorAbout("env-rotation", "not a finite angle");
+  }
+  if (degrees != rotationDegrees_)
+  {
+    rotationDegrees_ = degrees;
+    ++revision_;
+  }
+}
+
+glm::dmat3 EnvironmentLighting::worldToEnvironment() const
+{
+  const double a = -rotationDegrees_ * M_PI / 180.0;
+  const double c = std::cos(a);
+  const double s = std::sin(a);
+  // Column-major: R_z(a) maps (x, y, z) to (c x - s y, s x + c y, z).
+  return glm::dmat3(c, s, 0.0, -s, c, 0.0, 0.0, 0.0, 1.0);
+}
+
+vtkTextureObject* EnvironmentLighting::cubeTexture(vtkOpenGLRenderWindow* window)
+{
+  if (!texture_ || textureWindow_ != window)
+  {
+    if (texture_ && textureWindow_)
+    {
+      texture_->ReleaseGraphicsResources(textureWindow_);
+    }
+    texture_ = uploadCubemap(window, cubemap_, "environment cubemap");
+    textureWindow_ = window;
+  }
+  return texture_;
+}
+
+void EnvironmentLighting::releaseGraphicsResources(vtkWindow* window)
+{
+  if (texture_ && textureWindow_ == window)
+  {
+    texture_->ReleaseGraphicsResources(window);
+    texture_ = nullptr;
+    textureWindow_ = nullptr;
+  }
+}
+} // namespace aniso

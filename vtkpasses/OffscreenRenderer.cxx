@@ -1,0 +1,207 @@
+#include "OffscreenRenderer.h"
+
+#include "AnisoMaterial.h"
+#include "EnvironmentLighting.h"
+#include "error.h"
+#include "vtkAnisoAccumulationPass.h"
+
+#include <X11/Xlib.h>
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdlib>
+#include <glm/geometric.hpp>
+#include <vtkActor.h>
+#include <vtkCamera.h>
+#include <vtkNew.h>
+#include <vtkOpenGLPolyDataMapper.h>
+#include <vtkOpenGLRenderWindow.h>
+#include <vtkOpenGLRenderer.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+#include <vtkRenderStepsPass.h>
+#include <vtkUnsignedCharArray.h>
+#include <vtk_glew.h>
+
+namespace aniso
+{
+namespace
+{
+constexpr int kMaxImageSide = 16384;
+constexpr int kMaxFrames = 1 << 20;
+
+void validate(const RenderSettings& s)
+{
+  if (!s.surface || s.surface->GetNumberOfPoints() == 0 || s.surface->GetNumberOfCells() == 0)
+  {
+    throw errorAbout("mesh", "no surface to render");
+  }
+  if (!s.environment)
+  {
+    throw errorAbout("env", "no environment");
+  }
+  if (s.width < 1 || s.height < 1 || s.width > kMaxImageSide || s.height > kMaxImageSide)
+  {
+    throw errorAbout("size",
+                     "width and height must be in [1, " + std::to_string(kMaxImageSide) + "]");
+  }
+  if (s.frames < 1 || s.frames > kMaxFrames)
+  {
+    throw errorAbout("frames", "must be in [1, " + std::to_string(kMaxFrames) + "]");
+  }
+  if (!std::isfinite(s.display.exposureEV))
+  {
+    throw errorAbout("exposure", "not a finite number");
+  }
+  AnisoMaterial::validate(s.material);
+}
+
+// VTK's X window aborts the process when it cannot reach a display: check first.
+void requireDisplay()
+{
+  const char* name = std::getenv("DISPLAY");
+  if (!name || !*name)
+  {
+    throw errorAbout("render", "no X display (DISPLAY is not set); run under xvfb-run");
+  }
+  Display* display = XOpenDisplay(nullptr);
+  if (!display)
+  {
+    throw errorAbout("render", std::string("cannot open the X display ") + name);
+  }
+  XCloseDisplay(display);
+}
+
+// Centre and radius of a sphere around every point (bounding-box centre, farthest point).
+void boundingSphere(vtkPolyData* surface, glm::dvec3& centre, double& radius)
+{
+  double bounds[6];
+  surface->GetBounds(bounds);
+  centre = {0.5 * (bounds[0] + bounds[1]), 0.5 * (bounds[2] + bounds[3]),
+            0.5 * (bounds[4] + bounds[5])};
+  double r2 = 0.0;
+  vtkPoints* points = surface->GetPoints();
+  for (vtkIdType i = 0; i < points->GetNumberOfPoints(); ++i)
+  {
+    double p[3];
+    points->GetPoint(i, p);
+    const glm::dvec3 d = glm::dvec3(p[0], p[1], p[2]) - centre;
+    r2 = std::max(r2, glm::dot(d, d));
+  }
+  radius = std::sqrt(r2);
+}
+} // namespace
+
+double medianSeconds(std::vector<double> seconds)
+{
+  if (seconds.empty())
+  {
+    return 0.0;
+  }
+  std::sort(seconds.begin(), seconds.end());
+  const std::size_t n = seconds.size();
+  return n % 2 ? seconds[n / 2] : 0.5 * (seconds[n / 2 - 1] + seconds[n / 2]);
+}
+
+RenderResult renderOffscreen(const RenderSettings& s)
+{
+  validate(s);
+  requireDisplay();
+
+  auto lighting = std::make_shared<EnvironmentLighting>(s.environment, s.cubeSize);
+  lighting->setRotationDegrees(s.environmentRotationDegrees);
+
+  vtkNew<vtkOpenGLPolyDataMapper> mapper;
+  mapper->SetInputData(s.surface);
+  mapper->ScalarVisibilityOff();
+  vtkNew<vtkActor> actor;
+  actor->SetMapper(mapper);
+
+  vtkNew<vtkOpenGLRenderer> renderer;
+  renderer->AddActor(actor);
+  vtkNew<vtkRenderWindow> window;
+  window->SetOffScreenRendering(1);
+  window->SetMultiSamples(0); // pixels are sampled at their centres (or jittered) only
+  window->SetAlphaBitPlanes(1);
+  window->SetSize(s.width, s.height);
+  window->AddRenderer(renderer);
+
+  glm::dvec3 centre;
+  double radius = 0.0;
+  boundingSphere(s.surface, centre, radius);
+  const CameraPlacement placement = placeCamera(s.view, centre, radius);
+  vtkCamera* camera = renderer->GetActiveCamera();
+  camera->SetFocalPoint(placement.focalPoint.x, placement.focalPoint.y, placement.focalPoint.z);
+  camera->SetPosition(placement.position.x, placement.position.y, placement.position.z);
+  camera->SetViewUp(placement.viewUp.x, placement.viewUp.y, placement.viewUp.z);
+  camera->SetViewAngle(placement.viewAngleDegrees);
+  camera->SetParallelScale(placement.parallelScale);
+  camera->SetParallelProjection(placement.parallel);
+  renderer->ResetCameraClippingRange();
+
+  vtkNew<vtkRenderStepsPass> steps;
+  vtkNew<vtkAnisoAccumulationPass> pass;
+  pass->SetDelegatePass(steps);
+  pass->SetLighting(lighting);
+  pass->SetDisplaySettings(s.display);
+  pass->SetJitter(s.jitter);
+  pass->SetTargetFrames(s.frames);
+  renderer->SetPass(pass);
+
+  AnisoMaterial material(lighting, s.material);
+  material.apply(actor, renderer);
+
+  RenderResult result;
+  result.frameSeconds.reserve(static_cast<std::size_t>(s.frames));
+  for (int frame = 0; frame < s.frames; ++frame)
+  {
+    const auto start = std::chrono::steady_clock::now();
+    window->Render();
+    window->WaitForCompletion();
+    const auto end = std::chrono::steady_clock::now();
+    result.frameSeconds.push_back(std::chrono::duration<double>(end - start).count());
+  }
+  if (pass->GetAccumulatedFrames() != s.frames)
+  {
+    throw errorAbout("render", "the OpenGL context could not render the frames");
+  }
+
+  auto* glWindow = vtkOpenGLRenderWindow::SafeDownCast(window);
+  glWindow->MakeCurrent();
+  if (const GLubyte* name = glGetString(GL_RENDERER))
+  {
+    result.renderer = reinterpret_cast<const char*>(name);
+  }
+  result.linear = pass->ReadAccumulation();
+  if (result.linear.empty())
+  {
+    throw errorAbout("render", "no image was rendered");
+  }
+
+  vtkNew<vtkUnsignedCharArray> pixels;
+  window->GetRGBACharPixelData(0, 0, s.width - 1, s.height - 1, 0, pixels);
+  result.display = Image(s.width, s.height, 4);
+  for (int y = 0; y < s.height; ++y)
+  {
+    const int row = s.height - 1 - y; // GL's first row is the bottom one
+    for (int x = 0; x < s.width; ++x)
+    {
+      for (int c = 0; c < 4; ++c)
+      {
+        result.display.at(x, y, c) =
+            pixels->GetValue((vtkIdType(row) * s.width + x) * 4 + c) / 255.0f;
+      }
+    }
+  }
+  for (int y = 0; y < s.height; ++y)
+  {
+    for (int x = 0; x < s.width; ++x)
+    {
+      result.coveredPixels += result.linear.at(x, y, 3) > 0.0f ? 1 : 0;
+    }
+  }
+  result.variant = material.variant();
+  result.mapsDropped = material.mapsDropped();
+  return result;
+}
+} // namespace aniso

@@ -1,0 +1,57 @@
+#pragma once
+// Headless rendering of one object with an anisotropic material: a plain off-screen
+// vtkRenderWindow (an X display is needed, e.g. under xvfb-run), progressive accumulation for
+// the requested number of frames, and the results read back: the linear float image (EXR) and
+// the display-transformed 8-bit one (PNG).
+#include "DisplaySettings.h"
+#include "MaterialSettings.h"
+#include "MaterialShaderSource.h"
+#include "ViewSettings.h"
+#include "env/environment.h"
+#include "image/image.h"
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+#include <vtkSmartPointer.h>
+
+class vtkPolyData;
+
+namespace aniso
+{
+struct RenderSettings
+{
+  // A prepared surface (SurfacePreparation.h): triangles with "Normals", and "Tangents",
+  // "TCoords" when available.
+  vtkSmartPointer<vtkPolyData> surface;
+  std::shared_ptr<const Environment> environment;
+  int cubeSize = 256; // level-0 face of the environment cubemap
+  double environmentRotationDegrees = 0.0;
+  MaterialSettings material;
+  DisplaySettings display;
+  ViewSettings view;
+  int width = 512;
+  int height = 512;
+  int frames = 1;     // progressive frames accumulated (each with its own sample shift)
+  bool jitter = true; // sub-pixel camera jitter between frames (anti-aliasing)
+};
+
+struct RenderResult
+{
+  Image linear;  // RGBA float, linear radiance, alpha = coverage; row 0 at the top
+  Image display; // RGBA in [0, 1] holding the 8-bit values / 255 of the displayed frame
+  std::vector<double> frameSeconds; // wall time of each frame, GPU work included
+  int64_t coveredPixels = 0;        // pixels with coverage > 0
+  MaterialVariant variant;          // the shader variant that was compiled
+  bool mapsDropped = false;         // maps given but the mesh has no texture coordinates
+  std::string renderer;             // the OpenGL renderer string (e.g. "llvmpipe ...")
+};
+
+// Throws aniso::Error "SUBJECT: reason" for invalid settings, a missing display or a failed
+// OpenGL context.
+RenderResult renderOffscreen(const RenderSettings& settings);
+
+// Median of the frame times (0 for none).
+double medianSeconds(std::vector<double> seconds);
+} // namespace aniso

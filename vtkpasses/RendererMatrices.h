@@ -1,0 +1,18 @@
+#pragma once
+// The camera transforms VTK's OpenGL mappers use, for shaders that reconstruct view rays.
+#include <glm/mat3x3.hpp>
+#include <glm/mat4x4.hpp>
+
+class vtkMatrix4x4;
+class vtkRenderer;
+
+namespace aniso
+{
+// World to clip coordinates of RENDERER's active camera at the renderer's tiled aspect ratio,
+// z in [-1, 1]: the matrix VTK's mappers draw with (vtkOpenGLCamera::GetKeyMatrices).
+glm::dmat4 worldToClip(vtkRenderer* renderer);
+// Its inverse: clip coordinates to homogeneous world coordinates.
+glm::dmat4 clipToWorld(vtkRenderer* renderer);
+
+glm::dmat4 toGlm(vtkMatrix4x4* matrix);
+} // namespace aniso

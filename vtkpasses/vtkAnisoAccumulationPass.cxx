@@ -1,0 +1,572 @@
+#include "vtkAnisoAccumulationPass.h"
+
+#include "EnvironmentLighting.h"
+#include "RendererMatrices.h"
+#include "aniso_shaders.h"
+#include "sampling/hammersley.h"
+
+#include <cmath>
+#include <glm/gtc/type_ptr.hpp>
+#include <glm/mat3x3.hpp>
+#include <vtkActor.h>
+#include <vtkCamera.h>
+#include <vtkDataObject.h>
+#include <vtkInformation.h>
+#include <vtkInformationDoubleVectorKey.h>
+#include <vtkMapper.h>
+#include <vtkObjectFactory.h>
+#include <vtkOpenGLFramebufferObject.h>
+#include <vtkOpenGLQuadHelper.h>
+#include <vtkOpenGLRenderWindow.h>
+#include <vtkOpenGLShaderCache.h>
+#include <vtkOpenGLState.h>
+#include <vtkProp.h>
+#include <vtkProperty.h>
+#include <vtkRenderState.h>
+#include <vtkRenderer.h>
+#include <vtkShaderProgram.h>
+#include <vtkShaderProperty.h>
+#include <vtkTextureObject.h>
+#include <vtk_glew.h>
+
+vtkStandardNewMacro(vtkAnisoAccumulationPass);
+vtkCxxSetObjectMacro(vtkAnisoAccumulationPass, DelegatePass, vtkRenderPass);
+vtkInformationKeyRestrictedMacro(vtkAnisoAccumulationPass, FRAME_SHIFT, DoubleVector, 2);
+
+namespace
+{
+// Radical inverse in base 2 or 3: the sub-pixel jitter follows the Halton sequence, a
+// different low-discrepancy sequence from the sample-set shifts (R2), so the two stay
+// uncorrelated across frames.
+double radicalInverse(int index, int base)
+{
+  double result = 0.0;
+  double scale = 1.0 / base;
+  for (int i = index; i > 0; i /= base)
+  {
+    result += (i % base) * scale;
+    scale /= base;
+  }
+  return result;
+}
+
+void setMatrix(vtkShaderProgram* program, const char* name, const glm::dmat4& m)
+{
+  glm::mat4 f(m);
+  program->SetUniformMatrix4x4(name, glm::value_ptr(f));
+}
+
+void setMatrix(vtkShaderProgram* program, const char* name, const glm::dmat3& m)
+{
+  glm::mat3 f(m);
+  program->SetUniformMatrix3x3(name, glm::value_ptr(f));
+}
+
+void allocateColor(vtkTextureObject* texture, vtkOpenGLRenderWindow* window, int width, int height)
+{
+  texture->SetContext(window);
+  if (!texture->GetHandle())
+  {
+    texture->SetInternalFormat(GL_RGBA32F);
+    texture->SetFormat(GL_RGBA);
+    texture->SetDataType(GL_FLOAT);
+    texture->SetMinificationFilter(vtkTextureObject::Nearest);
+    texture->SetMagnificationFilter(vtkTextureObject::Nearest);
+    texture->SetWrapS(vtkTextureObject::ClampToEdge);
+    texture->SetWrapT(vtkTextureObject::ClampToEdge);
+    texture->Allocate2D(static_cast<unsigned int>(width), static_cast<unsigned int>(height), 4,
+                        VTK_FLOAT);
+  }
+  else
+  {
+    texture->Resize(static_cast<unsigned int>(width), static_cast<unsigned int>(height));
+  }
+}
+} // namespace
+
+vtkAnisoAccumulationPass::vtkAnisoAccumulationPass() = default;
+
+vtkAnisoAccumulationPass::~vtkAnisoAccumulationPass()
+{
+  this->SetDelegatePass(nullptr);
+  if (this->FrameBuffer)
+  {
+    this->FrameBuffer->Delete();
+  }
+  if (this->AccumulationBuffer)
+  {
+    this->AccumulationBuffer->Delete();
+  }
+  for (vtkTextureObject* texture : {this->FrameColor, this->FrameDepth, this->AccumulationColor})
+  {
+    if (texture)
+    {
+      texture->Delete();
+    }
+  }
+}
+
+void vtkAnisoAccumulationPass::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "AccumulatedFrames: " << this->AccumulatedFrames << "\n";
+  os << indent << "TargetFrames: " << this->TargetFrames << "\n";
+  os << indent << "Jitter: " << this->Jitter << "\n";
+  os << indent << "ExposureEV: " << this->Display.exposureEV << "\n";
+}
+
+void vtkAnisoAccumulationPass::SetDisplaySettings(const aniso::DisplaySettings& settings)
+{
+  if (settings != this->Display)
+  {
+    this->Display = settings;
+    this->Modified();
+  }
+}
+
+void vtkAnisoAccumulationPass::SetLighting(std::shared_ptr<aniso::EnvironmentLighting> lighting)
+{
+  if (lighting != this->Lighting)
+  {
+    this->Lighting = std::move(lighting);
+    this->Modified();
+  }
+}
+
+void vtkAnisoAccumulationPass::SetTargetFrames(int frames)
+{
+  this->TargetFrames = frames > 0 ? frames : 0;
+}
+
+void vtkAnisoAccumulationPass::SetJitter(bool jitter)
+{
+  if (jitter != this->Jitter)
+  {
+    this->Jitter = jitter;
+    this->Reset();
+  }
+}
+
+bool vtkAnisoAccumulationPass::IsConverged() const
+{
+  return this->TargetFrames > 0 && this->AccumulatedFrames >= this->TargetFrames;
+}
+
+void vtkAnisoAccumulationPass::Reset()
+{
+  this->AccumulatedFrames = 0;
+}
+
+vtkAnisoAccumulationPass::Signature
+vtkAnisoAccumulationPass::ComputeSignature(const vtkRenderState* s, int width, int height) const
+{
+  Signature signature;
+  std::vector<double>& v = signature.values;
+  vtkRenderer* renderer = s->GetRenderer();
+  v.push_back(width);
+  v.push_back(height);
+  const glm::dmat4 clip = aniso::worldToClip(renderer);
+  for (int i = 0; i < 16; ++i)
+  {
+    v.push_back(glm::value_ptr(clip)[i]);
+  }
+  // The background is part of the mean; exposure and tone mapping are not.
+  v.push_back(static_cast<double>(this->Display.background));
+  for (int i = 0; i < 3; ++i)
+  {
+    v.push_back(this->Display.backgroundColor[i]);
+  }
+  v.push_back(static_cast<double>(reinterpret_cast<std::uintptr_t>(this->Lighting.get())));
+  v.push_back(this->Lighting ? static_cast<double>(this->Lighting->revision()) : 0.0);
+  v.push_back(this->Jitter ? 1.0 : 0.0);
+  for (int i = 0; i < s->GetPropArrayCount(); ++i)
+  {
+    vtkProp* prop = s->GetPropArray()[i];
+    v.push_back(static_cast<double>(prop->GetRedrawMTime()));
+    v.push_back(prop->GetVisibility());
+    if (auto* actor = vtkActor::SafeDownCast(prop))
+    {
+      v.push_back(static_cast<double>(actor->GetProperty()->GetMTime()));
+      v.push_back(static_cast<double>(actor->GetShaderProperty()->GetMTime()));
+      if (vtkMapper* mapper = actor->GetMapper())
+      {
+        v.push_back(static_cast<double>(mapper->GetMTime()));
+        if (vtkDataObject* input = mapper->GetInputDataObject(0, 0))
+        {
+          v.push_back(static_cast<double>(input->GetMTime()));
+        }
+      }
+    }
+  }
+  return signature;
+}
+
+void vtkAnisoAccumulationPass::Render(const vtkRenderState* s)
+{
+  this->NumberOfRenderedProps = 0;
+  vtkRenderer* renderer = s->GetRenderer();
+  auto* window = vtkOpenGLRenderWindow::SafeDownCast(renderer->GetRenderWindow());
+  if (!this->DelegatePass || !window)
+  {
+    vtkWarningMacro("vtkAnisoAccumulationPass needs a delegate pass and an OpenGL window.");
+    return;
+  }
+  int x = 0;
+  int y = 0;
+  int width = 0;
+  int height = 0;
+  if (s->GetFrameBuffer())
+  {
+    int size[2];
+    s->GetWindowSize(size);
+    width = size[0];
+    height = size[1];
+  }
+  else
+  {
+    renderer->GetTiledSizeAndOrigin(&width, &height, &x, &y);
+  }
+  if (width <= 0 || height <= 0)
+  {
+    return;
+  }
+
+  if (window != this->LastWindow)
+  {
+    if (this->LastWindow)
+    {
+      this->ReleaseGraphicsResources(this->LastWindow);
+    }
+    this->LastWindow = window;
+    this->AccumulatedFrames = 0;
+  }
+  if (width != this->Width || height != this->Height ||
+      !(this->ComputeSignature(s, width, height) == this->LastSignature))
+  {
+    this->AccumulatedFrames = 0;
+  }
+
+  if (!this->IsConverged() || this->AccumulatedFrames == 0)
+  {
+    this->PrepareTargets(window, width, height);
+    this->RenderFrame(s, window, width, height);
+    this->Accumulate(window, width, height);
+    ++this->AccumulatedFrames;
+    // Taken after drawing: what the draw itself modified (first shader build, attribute
+    // mappings) is the baseline, not a change.
+    this->LastSignature = this->ComputeSignature(s, width, height);
+  }
+  this->NumberOfRenderedProps = this->LastRenderedProps;
+  this->Present(window, x, y, width, height);
+}
+
+void vtkAnisoAccumulationPass::PrepareTargets(vtkOpenGLRenderWindow* window, int width, int height)
+{
+  if (!this->FrameColor)
+  {
+    this->FrameColor = vtkTextureObject::New();
+    this->FrameDepth = vtkTextureObject::New();
+    this->AccumulationColor = vtkTextureObject::New();
+  }
+  allocateColor(this->FrameColor, window, width, height);
+  allocateColor(this->AccumulationColor, window, width, height);
+  this->FrameDepth->SetContext(window);
+  if (!this->FrameDepth->GetHandle())
+  {
+    this->FrameDepth->AllocateDepth(static_cast<unsigned int>(width),
+                                    static_cast<unsigned int>(height), vtkTextureObject::Float32);
+  }
+  else
+  {
+    this->FrameDepth->Resize(static_cast<unsigned int>(width), static_cast<unsigned int>(height));
+  }
+  if (!this->FrameBuffer)
+  {
+    this->FrameBuffer = vtkOpenGLFramebufferObject::New();
+    this->FrameBuffer->SetContext(window);
+    this->AccumulationBuffer = vtkOpenGLFramebufferObject::New();
+    this->AccumulationBuffer->SetContext(window);
+  }
+  this->Width = width;
+  this->Height = height;
+}
+
+void vtkAnisoAccumulationPass::RenderFrame(const vtkRenderState* s, vtkOpenGLRenderWindow* window,
+                                           int width, int height)
+{
+  vtkRenderer* renderer = s->GetRenderer();
+  vtkOpenGLState* ostate = window->GetState();
+  const int frame = this->AccumulatedFrames;
+
+  vtkCamera* camera = renderer->GetActiveCamera();
+  double center[2];
+  camera->GetWindowCenter(center);
+  if (this->Jitter && frame > 0)
+  {
+    // A window-centre offset of 2/width moves the image by one pixel.
+    const double jx = radicalInverse(frame, 2) - 0.5;
+    const double jy = radicalInverse(frame, 3) - 0.5;
+    camera->SetWindowCenter(center[0] + 2.0 * jx / width, center[1] + 2.0 * jy / height);
+  }
+  const glm::dvec2 shift = aniso::frameShift(static_cast<uint32_t>(frame));
+  const double shiftValues[2] = {shift.x, shift.y};
+  renderer->GetInformation()->Set(FRAME_SHIFT(), shiftValues, 2);
+
+  ostate->PushFramebufferBindings();
+  this->FrameBuffer->Bind();
+  this->FrameBuffer->AddColorAttachment(0, this->FrameColor);
+  this->FrameBuffer->ActivateBuffer(0);
+  this->FrameBuffer->AddDepthAttachment(this->FrameDepth);
+  this->FrameBuffer->StartNonOrtho(width, height);
+  {
+    vtkOpenGLState::ScopedglViewport viewport(ostate);
+    vtkOpenGLState::ScopedglScissor scissor(ostate);
+    vtkOpenGLState::ScopedglClearColor clearColor(ostate);
+    ostate->vtkglViewport(0, 0, width, height);
+    ostate->vtkglScissor(0, 0, width, height);
+    ostate->vtkglClearColor(0.0f, 0.0f, 0.0f, 0.0f);
+    ostate->vtkglDepthMask(GL_TRUE);
+    ostate->vtkglClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+
+    vtkRenderState delegateState(renderer);
+    delegateState.SetPropArrayAndCount(s->GetPropArray(), s->GetPropArrayCount());
+    delegateState.SetFrameBuffer(this->FrameBuffer);
+    ostate->vtkglEnable(GL_DEPTH_TEST);
+    this->DelegatePass->Render(&delegateState);
+    this->LastRenderedProps = this->DelegatePass->GetNumberOfRenderedProps();
+
+    ostate->vtkglViewport(0, 0, width, height);
+    ostate->vtkglScissor(0, 0, width, height);
+    this->DrawBackground(window, renderer);
+  }
+  ostate->PopFramebufferBindings();
+
+  renderer->GetInformation()->Remove(FRAME_SHIFT());
+  camera->SetWindowCenter(center[0], center[1]);
+}
+
+vtkOpenGLQuadHelper* vtkAnisoAccumulationPass::Quad(vtkOpenGLRenderWindow* window,
+                                                    std::unique_ptr<vtkOpenGLQuadHelper>& quad,
+                                                    const char* fragmentSource,
+                                                    const std::string& defines,
+                                                    std::string& builtDefines)
+{
+  if (quad && builtDefines == defines)
+  {
+    window->GetShaderCache()->ReadyShaderProgram(quad->Program);
+  }
+  else
+  {
+    std::string source = fragmentSource;
+    vtkShaderProgram::Substitute(source, "//VTK::System::Dec", "//VTK::System::Dec\n" + defines);
+    quad = std::make_unique<vtkOpenGLQuadHelper>(window, aniso::shaders::kFullscreenVs,
+                                                 source.c_str(), "");
+    builtDefines = defines;
+  }
+  if (!quad->Program || !quad->Program->GetCompiled())
+  {
+    vtkErrorMacro("A shader of vtkAnisoAccumulationPass failed to compile.");
+    return nullptr;
+  }
+  return quad.get();
+}
+
+void vtkAnisoAccumulationPass::DrawBackground(vtkOpenGLRenderWindow* window, vtkRenderer* renderer)
+{
+  const bool environment =
+      this->Display.background == aniso::BackgroundMode::Environment && this->Lighting;
+  vtkOpenGLQuadHelper* quad = this->Quad(
+      window, this->BackgroundQuad, aniso::shaders::kBackgroundFs,
+      environment ? "#define ANISO_BACKGROUND_ENVIRONMENT\n" : "", this->BackgroundDefines);
+  if (!quad)
+  {
+    return;
+  }
+  vtkShaderProgram* program = quad->Program;
+  vtkOpenGLState* ostate = window->GetState();
+  vtkOpenGLState::ScopedglEnableDisable depthTest(ostate, GL_DEPTH_TEST);
+  vtkOpenGLState::ScopedglEnableDisable blend(ostate, GL_BLEND);
+  vtkOpenGLState::ScopedglDepthFunc depthFunc(ostate);
+  vtkOpenGLState::ScopedglDepthMask depthMask(ostate);
+  // Drawn at the far plane: only pixels no surface covered keep depth 1 and pass.
+  ostate->vtkglEnable(GL_DEPTH_TEST);
+  ostate->vtkglDepthFunc(GL_LEQUAL);
+  ostate->vtkglDepthMask(GL_FALSE);
+  ostate->vtkglDisable(GL_BLEND);
+  program->SetUniformf("quadDepth", 1.0f);
+
+  vtkTextureObject* cube = nullptr;
+  if (environment)
+  {
+    cube = this->Lighting->cubeTexture(window);
+    cube->Activate();
+    ostate->vtkglEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS);
+    program->SetUniformi("environment", cube->GetTextureUnit());
+    setMatrix(program, "clipToWorld", aniso::clipToWorld(renderer));
+    setMatrix(program, "worldToEnvironment", this->Lighting->worldToEnvironment());
+  }
+  else
+  {
+    const bool color = this->Display.background == aniso::BackgroundMode::Color;
+    const glm::vec3 radiance = color ? glm::vec3(this->Display.backgroundColor) : glm::vec3(0.0f);
+    program->SetUniform3f("backgroundRadiance", glm::value_ptr(radiance));
+  }
+  quad->Render();
+  if (cube)
+  {
+    cube->Deactivate();
+  }
+}
+
+void vtkAnisoAccumulationPass::Accumulate(vtkOpenGLRenderWindow* window, int width, int height)
+{
+  vtkOpenGLQuadHelper* quad = this->Quad(
+      window, this->AccumulateQuad, aniso::shaders::kAccumulateFs, "", this->AccumulateDefines);
+  if (!quad)
+  {
+    return;
+  }
+  vtkOpenGLState* ostate = window->GetState();
+  ostate->PushFramebufferBindings();
+  this->AccumulationBuffer->Bind();
+  this->AccumulationBuffer->AddColorAttachment(0, this->AccumulationColor);
+  this->AccumulationBuffer->ActivateBuffer(0);
+  this->AccumulationBuffer->RemoveDepthAttachment();
+  this->AccumulationBuffer->StartNonOrtho(width, height);
+  {
+    vtkOpenGLState::ScopedglViewport viewport(ostate);
+    vtkOpenGLState::ScopedglScissor scissor(ostate);
+    vtkOpenGLState::ScopedglEnableDisable depthTest(ostate, GL_DEPTH_TEST);
+    vtkOpenGLState::ScopedglEnableDisable blend(ostate, GL_BLEND);
+    vtkOpenGLState::ScopedglBlendFuncSeparate blendFunc(ostate);
+    ostate->vtkglViewport(0, 0, width, height);
+    ostate->vtkglScissor(0, 0, width, height);
+    ostate->vtkglDisable(GL_DEPTH_TEST);
+    const int frame = this->AccumulatedFrames;
+    if (frame == 0)
+    {
+      ostate->vtkglDisable(GL_BLEND);
+    }
+    else
+    {
+      // Running mean: mean_k = mean_{k-1} + (frame - mean_{k-1}) / (k + 1), as a blend.
+      ostate->vtkglEnable(GL_BLEND);
+      glBlendColor(0.0f, 0.0f, 0.0f, 1.0f / static_cast<float>(frame + 1));
+      ostate->vtkglBlendFuncSeparate(GL_CONSTANT_ALPHA, GL_ONE_MINUS_CONSTANT_ALPHA,
+                                     GL_CONSTANT_ALPHA, GL_ONE_MINUS_CONSTANT_ALPHA);
+    }
+    this->FrameColor->Activate();
+    quad->Program->SetUniformi("frame", this->FrameColor->GetTextureUnit());
+    quad->Render();
+    this->FrameColor->Deactivate();
+  }
+  ostate->PopFramebufferBindings();
+}
+
+void vtkAnisoAccumulationPass::Present(vtkOpenGLRenderWindow* window, int x, int y, int width,
+                                       int height)
+{
+  std::string defines;
+  switch (this->Display.toneMapping)
+  {
+  case aniso::ToneMapping::Aces:
+    defines += "#define ANISO_TONE_MAP_ACES\n";
+    break;
+  case aniso::ToneMapping::Reinhard:
+    defines += "#define ANISO_TONE_MAP_REINHARD\n";
+    break;
+  case aniso::ToneMapping::Clamp:
+    break;
+  }
+  if (this->Display.background == aniso::BackgroundMode::Transparent)
+  {
+    defines += "#define ANISO_TRANSPARENT_BACKGROUND\n";
+  }
+  vtkOpenGLQuadHelper* quad = this->Quad(window, this->DisplayQuad, aniso::shaders::kDisplayFs,
+                                         defines, this->DisplayDefines);
+  if (!quad)
+  {
+    return;
+  }
+  vtkOpenGLState* ostate = window->GetState();
+  vtkOpenGLState::ScopedglViewport viewport(ostate);
+  vtkOpenGLState::ScopedglScissor scissor(ostate);
+  vtkOpenGLState::ScopedglEnableDisable depthTest(ostate, GL_DEPTH_TEST);
+  vtkOpenGLState::ScopedglEnableDisable blend(ostate, GL_BLEND);
+  ostate->vtkglViewport(x, y, width, height);
+  ostate->vtkglScissor(x, y, width, height);
+  ostate->vtkglDisable(GL_DEPTH_TEST);
+  ostate->vtkglDisable(GL_BLEND);
+  this->AccumulationColor->Activate();
+  vtkShaderProgram* program = quad->Program;
+  program->SetUniformi("accumulation", this->AccumulationColor->GetTextureUnit());
+  program->SetUniformf("exposureScale", static_cast<float>(std::exp2(this->Display.exposureEV)));
+  program->SetUniformf("quadDepth", 0.0f);
+  quad->Render();
+  this->AccumulationColor->Deactivate();
+}
+
+aniso::Image vtkAnisoAccumulationPass::ReadAccumulation()
+{
+  if (!this->LastWindow || !this->AccumulationBuffer || this->AccumulatedFrames == 0)
+  {
+    return {};
+  }
+  vtkOpenGLRenderWindow* window = this->LastWindow;
+  window->MakeCurrent();
+  vtkOpenGLState* ostate = window->GetState();
+  aniso::Image image(this->Width, this->Height, 4);
+  std::vector<float> rows(image.data.size());
+  ostate->PushReadFramebufferBinding();
+  this->AccumulationBuffer->Bind(vtkOpenGLFramebufferObject::GetReadMode());
+  this->AccumulationBuffer->ActivateReadBuffer(0);
+  ostate->vtkglPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glReadPixels(0, 0, this->Width, this->Height, GL_RGBA, GL_FLOAT, rows.data());
+  ostate->PopReadFramebufferBinding();
+  const std::size_t rowValues = std::size_t(this->Width) * 4;
+  for (int row = 0; row < this->Height; ++row)
+  {
+    // GL's first row is the bottom one; images start at the top.
+    std::copy_n(&rows[std::size_t(this->Height - 1 - row) * rowValues], rowValues,
+                &image.data[std::size_t(row) * rowValues]);
+  }
+  return image;
+}
+
+void vtkAnisoAccumulationPass::ReleaseGraphicsResources(vtkWindow* w)
+{
+  this->Superclass::ReleaseGraphicsResources(w);
+  if (this->DelegatePass)
+  {
+    this->DelegatePass->ReleaseGraphicsResources(w);
+  }
+  for (auto* quad : {&this->BackgroundQuad, &this->AccumulateQuad, &this->DisplayQuad})
+  {
+    if (*quad)
+    {
+      (*quad)->ReleaseGraphicsResources(w);
+      quad->reset();
+    }
+  }
+  if (this->FrameBuffer)
+  {
+    this->FrameBuffer->ReleaseGraphicsResources(w);
+    this->FrameBuffer->Delete();
+    this->FrameBuffer = nullptr;
+    this->AccumulationBuffer->ReleaseGraphicsResources(w);
+    this->AccumulationBuffer->Delete();
+    this->AccumulationBuffer = nullptr;
+  }
+  for (vtkTextureObject* texture : {this->FrameColor, this->FrameDepth, this->AccumulationColor})
+  {
+    if (texture)
+    {
+      texture->ReleaseGraphicsResources(w);
+    }
+  }
+  if (this->Lighting)
+  {
+    this->Lighting->releaseGraphicsResources(w);
+  }
+  this->AccumulatedFrames = 0;
+}

@@ -1,0 +1,126 @@
+#pragma once
+// Progressive refinement and display for the anisotropic materials.
+//
+// Each Render() draws the delegate (usually a vtkRenderStepsPass) into a float RGBA frame,
+// puts the background behind the surfaces (environment along the view rays, a colour, or
+// nothing), and folds the frame into a float running mean. Frame k asks the materials for the
+// sample-set shift frameShift(k) (through FRAME_SHIFT() on the renderer's information) and,
+// with jitter on, moves the camera by a sub-pixel offset so edges converge anti-aliased.
+// The mean is then drawn into whatever framebuffer was bound, through the display transform
+// (exposure, tone mapping, sRGB). The bound framebuffer is saved and restored; 0 is never
+// bound. Any change of camera, props, size or lighting starts the mean over; once the target
+// frame count is reached the scene is not drawn again until something changes.
+//
+// The mean is linear radiance: RGB everything seen (surfaces and background), alpha the
+// coverage of the surfaces.
+#include "DisplaySettings.h"
+#include "image/image.h"
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+#include <vtkRenderPass.h>
+#include <vtkWeakPointer.h>
+
+class vtkInformationDoubleVectorKey;
+class vtkOpenGLFramebufferObject;
+class vtkOpenGLQuadHelper;
+class vtkOpenGLRenderWindow;
+class vtkRenderer;
+class vtkTextureObject;
+
+namespace aniso
+{
+class EnvironmentLighting;
+}
+
+class vtkAnisoAccumulationPass : public vtkRenderPass
+{
+public:
+  static vtkAnisoAccumulationPass* New();
+  vtkTypeMacro(vtkAnisoAccumulationPass, vtkRenderPass) void PrintSelf(ostream& os,
+                                                                       vtkIndent indent) override;
+
+  void Render(const vtkRenderState* s) override;
+  void ReleaseGraphicsResources(vtkWindow* w) override;
+
+  // The pass that draws the scene.
+  vtkGetObjectMacro(DelegatePass, vtkRenderPass);
+  virtual void SetDelegatePass(vtkRenderPass* delegatePass);
+
+  // Shift of the sample set for the frame being drawn (2 doubles), set on the renderer's
+  // information during the delegate's render; absent = (0, 0).
+  static vtkInformationDoubleVectorKey* FRAME_SHIFT();
+
+  void SetDisplaySettings(const aniso::DisplaySettings& settings);
+  const aniso::DisplaySettings& GetDisplaySettings() const { return this->Display; }
+
+  // Lighting whose environment is the background (BackgroundMode::Environment).
+  void SetLighting(std::shared_ptr<aniso::EnvironmentLighting> lighting);
+
+  // Frames to accumulate before stopping (0: never stop).
+  void SetTargetFrames(int frames);
+  int GetTargetFrames() const { return this->TargetFrames; }
+  // Sub-pixel camera jitter per frame (anti-aliasing, fractional coverage). Off: every frame
+  // samples pixel centres, as a per-pixel reference does.
+  void SetJitter(bool jitter);
+  bool GetJitter() const { return this->Jitter; }
+
+  int GetAccumulatedFrames() const { return this->AccumulatedFrames; }
+  bool IsConverged() const;
+  // Forget the mean: the next Render() starts over.
+  void Reset();
+
+  // The running mean (RGBA, linear, row 0 at the top), read back from the GPU in the window of
+  // the last Render(). Empty if nothing was rendered yet.
+  aniso::Image ReadAccumulation();
+
+protected:
+  vtkAnisoAccumulationPass();
+  ~vtkAnisoAccumulationPass() override;
+
+private:
+  vtkAnisoAccumulationPass(const vtkAnisoAccumulationPass&) = delete;
+  void operator=(const vtkAnisoAccumulationPass&) = delete;
+
+  // What a frame depends on; a difference from the last frame restarts the mean.
+  struct Signature
+  {
+    std::vector<double> values;
+    bool operator==(const Signature& o) const { return values == o.values; }
+  };
+  Signature ComputeSignature(const vtkRenderState* s, int width, int height) const;
+  void PrepareTargets(vtkOpenGLRenderWindow* window, int width, int height);
+  void RenderFrame(const vtkRenderState* s, vtkOpenGLRenderWindow* window, int width, int height);
+  void DrawBackground(vtkOpenGLRenderWindow* window, vtkRenderer* renderer);
+  void Accumulate(vtkOpenGLRenderWindow* window, int width, int height);
+  void Present(vtkOpenGLRenderWindow* window, int x, int y, int width, int height);
+  vtkOpenGLQuadHelper* Quad(vtkOpenGLRenderWindow* window,
+                            std::unique_ptr<vtkOpenGLQuadHelper>& quad, const char* fragmentSource,
+                            const std::string& defines, std::string& builtDefines);
+
+  vtkRenderPass* DelegatePass = nullptr;
+  aniso::DisplaySettings Display;
+  std::shared_ptr<aniso::EnvironmentLighting> Lighting;
+  int TargetFrames = 0;
+  bool Jitter = true;
+  int AccumulatedFrames = 0;
+  Signature LastSignature;
+  int LastRenderedProps = 0;
+
+  vtkWeakPointer<vtkOpenGLRenderWindow> LastWindow; // where the targets live
+  int Width = 0;
+  int Height = 0;
+  vtkTextureObject* FrameColor = nullptr;
+  vtkTextureObject* FrameDepth = nullptr;
+  vtkTextureObject* AccumulationColor = nullptr;
+  vtkOpenGLFramebufferObject* FrameBuffer = nullptr;
+  vtkOpenGLFramebufferObject* AccumulationBuffer = nullptr;
+  std::unique_ptr<vtkOpenGLQuadHelper> BackgroundQuad;
+  std::unique_ptr<vtkOpenGLQuadHelper> AccumulateQuad;
+  std::unique_ptr<vtkOpenGLQuadHelper> DisplayQuad;
+  std::string BackgroundDefines;
+  std::string AccumulateDefines;
+  std::string DisplayDefines;
+};
