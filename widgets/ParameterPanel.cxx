@@ -1,0 +1,124 @@
+#include "ParameterPanel.h"
+
+#include "ParameterControls.h"
+#include "error.h"
+
+#include <QFormLayout>
+#include <QLabel>
+#include <QScrollArea>
+#include <QVBoxLayout>
+
+namespace aniso
+{
+ParameterPanel::ParameterPanel(SceneEditor* editor, QWidget* parent)
+    : QWidget(parent), editor_(editor), form_(new QFormLayout(this))
+{
+  form_->setFieldGrowthPolicy(QFormLayout::AllNonFixedFieldsGrow);
+  connect(model(), &SceneModel::valueChanged, this, &ParameterPanel::modelChanged);
+}
+
+ParameterControl* ParameterPanel::addParameter(std::string_view key)
+{
+  const SceneKey& k = sceneKey(key);
+  ParameterControl* c = makeParameterControl(k.spec, this);
+  if (!c)
+  {
+    throw errorAbout(std::string(key), "free text has no generic control");
+  }
+  c->setValue(model()->value(key));
+  const std::string name(key);
+  connect(c, &ParameterControl::dragStarted, this,
+          [this]
+          {
+            drag_ = editor_->beginDrag();
+            dragStartPending_ = true;
+          });
+  connect(c, &ParameterControl::dragFinished, this,
+          [this, c, name]
+          {
+            drag_ = 0;
+            dragStartPending_ = false;
+            // The slider was left where the hand put it; show what the model holds now.
+            c->setValue(model()->value(name));
+          });
+  connect(c, &ParameterControl::edited, this,
+          [this, name](const ParameterValue& value, bool dragging)
+          { submit(name, value, dragging); });
+  auto* label = new QLabel(QString::fromStdString(std::string(k.spec.label)), this);
+  label->setToolTip(c->toolTip());
+  label->setBuddy(c);
+  form_->addRow(label, c);
+  controls_.emplace(name, c);
+  return c;
+}
+
+void ParameterPanel::addRow(const QString& label, QWidget* widget)
+{
+  form_->addRow(label, widget);
+}
+
+ParameterControl* ParameterPanel::control(std::string_view key) const
+{
+  const auto it = controls_.find(key);
+  return it == controls_.end() ? nullptr : it->second;
+}
+
+void ParameterPanel::setExpander(Expander expander)
+{
+  expander_ = std::move(expander);
+}
+
+void ParameterPanel::submit(const std::string& key, const ParameterValue& value, bool dragging)
+{
+  const bool gestureStart = !dragging || dragStartPending_;
+  dragStartPending_ = false;
+  try
+  {
+    SceneModel::Values changes;
+    if (expander_)
+    {
+      changes = expander_(key, value, gestureStart);
+    }
+    else
+    {
+      changes.emplace(key, value);
+    }
+    editor_->edit(changes, dragging ? drag_ : 0);
+  }
+  catch (const Error& e)
+  {
+    emit errorOccurred(QString::fromStdString(e.what()));
+  }
+  // Show what the model holds: a refused or adjusted value does not stay on screen.
+  ParameterControl* c = control(key);
+  if (c && !(model()->value(key) == value))
+  {
+    c->setValue(model()->value(key));
+  }
+}
+
+void ParameterPanel::modelChanged(const QString& key)
+{
+  const std::string name = key.toStdString();
+  if (ParameterControl* c = control(name))
+  {
+    c->setValue(model()->value(name));
+  }
+}
+
+QWidget* scrollableColumn(const QList<QWidget*>& panels, QWidget* parent)
+{
+  auto* scroll = new QScrollArea(parent);
+  scroll->setWidgetResizable(true);
+  scroll->setFrameShape(QFrame::NoFrame);
+  auto* inner = new QWidget(scroll);
+  auto* column = new QVBoxLayout(inner);
+  for (QWidget* panel : panels)
+  {
+    column->addWidget(panel);
+  }
+  column->addStretch(1);
+  scroll->setWidget(inner);
+  return scroll;
+}
+} // namespace aniso
