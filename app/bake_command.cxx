@@ -18,6 +18,7 @@
 #include <cstring>
 #include <filesystem>
 #include <sstream>
+#include <sys/stat.h>
 #include <unistd.h>
 #include <utility>
 
@@ -148,6 +149,10 @@ void writeTextAtomically(const std::string& path, const std::string& text)
   {
     throw errorAbout(path, std::strerror(errno));
   }
+  // mkstemp creates the file private (0600); give it the mode a plain create would.
+  const mode_t mask = ::umask(0);
+  ::umask(mask);
+  ::fchmod(fd, 0666 & ~mask);
   std::size_t written = 0;
   while (written < text.size())
   {
@@ -481,9 +486,11 @@ std::string sh9Text(const Sh9& sh, const std::string& spec)
   static const int lm[9][2] = {{0, 0},  {1, -1}, {1, 0}, {1, 1}, {2, -2},
                                {2, -1}, {2, 0},  {2, 1}, {2, 2}};
   std::ostringstream s;
-  s << "# aniso SH9: spherical-harmonic coefficients of the radiance of " << spec << "\n"
-    << "# real basis, world Z up; irradiance E(n) = sum over (l, m) of A_l c_lm Y_lm(n),\n"
-    << "# A_0 = pi, A_1 = 2 pi / 3, A_2 = pi / 4\n"
+  s << "# aniso SH9: real spherical-harmonic coefficients c_lm of the radiance of " << spec << "\n"
+    << "# world Z up, unit d = (x, y, z): Y00 = 0.282095, Y1-1 = 0.488603 y, Y10 = 0.488603 z,\n"
+    << "# Y11 = 0.488603 x, Y2-2 = 1.092548 x y, Y2-1 = 1.092548 y z, Y20 = 0.315392 (3 z^2 - 1),\n"
+    << "# Y21 = 1.092548 x z, Y22 = 0.546274 (x^2 - y^2)\n"
+    << "# irradiance E(n) = sum of A_l c_lm Y_lm(n), A_0 = pi, A_1 = 2 pi / 3, A_2 = pi / 4\n"
     << "# l m R G B\n";
   for (std::size_t k = 0; k < 9; ++k)
   {
