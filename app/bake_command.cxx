@@ -257,18 +257,23 @@ std::string cacheDirectoryOf(const Arguments& a)
   return a.has("--cache") ? a.text("--cache") : std::string();
 }
 
-std::string cacheReport(const LutCache& cache, const std::string& requested)
+std::string cacheReport(const LutCache& cache)
 {
   const LutCacheStats stats = cache.stats();
-  if (requested == "none")
+  const std::string& directory = cache.directory();
+  if (directory.empty())
   {
     return "no disk cache";
   }
   if (stats.diskHits > 0)
   {
-    return "read from the cache in " + cache.directory();
+    return "read from the cache in " + directory;
   }
-  return "cached in " + cache.directory();
+  if (stats.diskWriteFailures > 0)
+  {
+    return "not cached: cannot write to " + directory;
+  }
+  return "cached in " + directory;
 }
 
 AsLobe lobeOf(const Arguments& a)
@@ -307,8 +312,7 @@ int runHalfVector(const Arguments& a, std::ostream& out)
   out << "halfvector: wrote " << output << " (" << size << "x" << size
       << " RGBA float: h in tangent space, A = log2 p_h) for n_u " << formatNumber(lobe.nu)
       << ", n_v " << formatNumber(lobe.nv) << "\n"
-      << "  baked in " << formatDuration(ms) << " (" << cacheReport(cache, cacheDirectoryOf(a))
-      << ")\n";
+      << "  baked in " << formatDuration(ms) << " (" << cacheReport(cache) << ")\n";
   return 0;
 }
 
@@ -331,8 +335,7 @@ int runBrdf(const Arguments& a, std::ostream& out)
   out << "brdf: wrote " << output << " (" << size << "x" << size
       << " RG float: R = s, G = b, albedo = F0 s + b) for n_u " << formatNumber(lobe.nu) << ", n_v "
       << formatNumber(lobe.nv) << ", " << samples << " samples\n"
-      << "  baked in " << formatDuration(ms) << " (" << cacheReport(cache, cacheDirectoryOf(a))
-      << ")\n";
+      << "  baked in " << formatDuration(ms) << " (" << cacheReport(cache) << ")\n";
   return 0;
 }
 
