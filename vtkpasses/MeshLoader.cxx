@@ -1,15 +1,27 @@
 #include "MeshLoader.h"
 
 #include "OffReader.h"
+#include "PlyReader.h"
+#include "StlReader.h"
 #include "error.h"
 
 #include <algorithm>
 #include <cctype>
+#include <cerrno>
+#include <chrono>
+#include <csignal>
+#include <cstdint>
+#include <cstring>
+#include <fcntl.h>
 #include <filesystem>
 #include <fstream>
 #include <mutex>
 #include <new>
+#include <poll.h>
+#include <sys/resource.h>
+#include <sys/wait.h>
 #include <system_error>
+#include <unistd.h>
 #include <vector>
 #include <vtkAppendPolyData.h>
 #include <vtkDataArray.h>
@@ -25,12 +37,11 @@
 #include <vtkOBJReader.h>
 #include <vtkObjectFactory.h>
 #include <vtkOutputWindow.h>
-#include <vtkPLYReader.h>
 #include <vtkPointData.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
-#include <vtkSTLReader.h>
 #include <vtkXMLPolyDataReader.h>
+#include <vtkXMLPolyDataWriter.h>
 
 namespace aniso
 {
@@ -63,10 +74,44 @@ VtkMessage parseVtkMessage(const char* raw)
     message.origin = text.substr(0, open);
     text = text.substr(close + 3);
   }
-  std::replace(text.begin(), text.end(), '\n', ' ');
-  const size_t first = text.find_first_not_of(" \t\r");
-  const size_t last = text.find_last_not_of(" \t\r");
-  message.text = first == std::string::npos ? std::string() : text.substr(first, last - first + 1);
+  // One line of printable text: readers quote raw file bytes in their messages, and a user
+  // message must carry neither binary junk nor a whole line of a corrupt file, so it stops at
+  // the first unprintable byte.
+  constexpr size_t kMaxLength = 160;
+  std::string clean;
+  bool cut = false;
+  for (char c : text)
+  {
+    const auto u = static_cast<unsigned char>(c);
+    if (u >= 0x7f || (u < 0x20 && !std::isspace(u)))
+    {
+      cut = true;
+      break;
+    }
+    if (std::isspace(u) && (clean.empty() || clean.back() == ' '))
+    {
+      continue;
+    }
+    clean += std::isspace(u) ? ' ' : c;
+  }
+  while (!clean.empty() && clean.back() == ' ')
+  {
+    clean.pop_back();
+  }
+  if (clean.rfind("* ", 0) == 0)
+  {
+    clean.erase(0, 2); // jsoncpp's bullet before "Line N, Column M"
+  }
+  if (clean.size() > kMaxLength)
+  {
+    clean.resize(kMaxLength);
+    cut = true;
+  }
+  if (cut)
+  {
+    clean += "...";
+  }
+  message.text = clean;
   return message;
 }
 
@@ -103,13 +148,13 @@ protected:
 vtkStandardNewMacro(CapturingOutputWindow);
 
 // Installs the capturing window and silences vtkLogger's stderr copy of the same messages for
-// the lifetime of the object; restores both afterwards. VTK's output window is process-wide, so
-// loads are serialised.
+// the lifetime of the object; restores both afterwards. Both are process-wide: loadMesh
+// serialises loads with loadMutex().
 class ScopedVtkMessageCapture
 {
 public:
   ScopedVtkMessageCapture()
-      : Lock(mutex()), Previous(vtkOutputWindow::GetInstance()),
+      : Previous(vtkOutputWindow::GetInstance()),
         PreviousVerbosity(vtkLogger::GetCurrentVerbosityCutoff())
   {
     vtkOutputWindow::SetInstance(this->Window);
@@ -126,17 +171,16 @@ public:
   const CapturingOutputWindow& messages() const { return *this->Window; }
 
 private:
-  static std::mutex& mutex()
-  {
-    static std::mutex instance;
-    return instance;
-  }
-
-  std::lock_guard<std::mutex> Lock;
   vtkSmartPointer<vtkOutputWindow> Previous;
   vtkLogger::Verbosity PreviousVerbosity;
   vtkNew<CapturingOutputWindow> Window;
 };
+
+std::mutex& loadMutex()
+{
+  static std::mutex instance;
+  return instance;
+}
 
 bool isPipelineClass(const std::string& origin)
 {
@@ -144,25 +188,24 @@ bool isPipelineClass(const std::string& origin)
          origin == "vtkCompositeDataPipeline" || origin == "vtkDemandDrivenPipeline";
 }
 
-// The reader's own messages first (the pipeline's "returned failure" adds nothing a user can
-// act on); at most three, joined.
+// The reader's first own message: the most specific one (the pipeline's "returned failure" and
+// the readers' follow-up "failed to load" messages add nothing a user can act on).
 void throwIfReaderFailed(const std::string& path, vtkAlgorithm* reader,
                          const ScopedVtkMessageCapture& capture)
 {
   const auto& errors = capture.messages().Errors;
   std::string reason;
-  int shown = 0;
   for (const VtkMessage& message : errors)
   {
-    if (isPipelineClass(message.origin) || message.text.empty() || shown == 3)
+    if (!isPipelineClass(message.origin) && !message.text.empty())
     {
-      continue;
+      reason = message.text;
+      break;
     }
-    reason += (shown++ > 0 ? "; " : "") + message.text;
   }
   if (reason.empty() && !errors.empty())
   {
-    reason = "the reader failed";
+    reason = "the reader failed (corrupt file, or not in this format)";
   }
   const unsigned long code =
       reader ? reader->GetErrorCode() : static_cast<unsigned long>(vtkErrorCode::NoError);
@@ -295,20 +338,13 @@ vtkSmartPointer<vtkPolyData> readLegacy(const std::string& path, ScopedVtkMessag
   return output;
 }
 
-vtkSmartPointer<vtkPolyData> readByExtension(const std::string& path, const std::string& ext,
-                                             ScopedVtkMessageCapture& capture)
+// The formats read by VTK's readers; run inside the isolated child process.
+vtkSmartPointer<vtkPolyData> readWithVtk(const std::string& path, const std::string& ext,
+                                         ScopedVtkMessageCapture& capture)
 {
   if (ext == ".obj")
   {
     return readPolyData<vtkOBJReader>(path, capture);
-  }
-  if (ext == ".ply")
-  {
-    return readPolyData<vtkPLYReader>(path, capture);
-  }
-  if (ext == ".stl")
-  {
-    return readPolyData<vtkSTLReader>(path, capture);
   }
   if (ext == ".vtp")
   {
@@ -318,19 +354,279 @@ vtkSmartPointer<vtkPolyData> readByExtension(const std::string& path, const std:
   {
     return readLegacy(path, capture);
   }
-  if (ext == ".gltf" || ext == ".glb")
+  return readGltf(path, capture);
+}
+
+// Reading with VTK's readers in a child process. They are not hardened against hostile files
+// (VTK 9.1's legacy reader crashes on truncated input, for one): a crash, a runaway allocation
+// or an endless loop then ends the child, not the application. The child sends back its
+// messages and the surface as VTK XML (VTK's own output, read back safely).
+constexpr int kReaderTimeoutSeconds = 120;
+
+enum class Record : char
+{
+  Error = 'E',
+  Warning = 'W',
+  Data = 'D'
+};
+
+bool writeAll(int fd, const char* data, size_t size)
+{
+  while (size > 0)
   {
-    return readGltf(path, capture);
+    const ssize_t written = ::write(fd, data, size);
+    if (written < 0 && errno == EINTR)
+    {
+      continue;
+    }
+    if (written <= 0)
+    {
+      return false;
+    }
+    data += written;
+    size -= static_cast<size_t>(written);
+  }
+  return true;
+}
+
+void sendRecord(int fd, Record tag, const std::string& payload)
+{
+  const uint64_t size = payload.size();
+  char header[1 + sizeof(size)];
+  header[0] = static_cast<char>(tag);
+  std::memcpy(header + 1, &size, sizeof(size));
+  if (!writeAll(fd, header, sizeof(header)) || !writeAll(fd, payload.data(), payload.size()))
+  {
+    ::_exit(3);
+  }
+}
+
+std::string toXml(vtkPolyData* polyData)
+{
+  vtkNew<vtkXMLPolyDataWriter> writer;
+  writer->SetInputData(polyData);
+  writer->WriteToOutputStringOn();
+  writer->SetDataModeToAppended();
+  writer->EncodeAppendedDataOff();
+  writer->SetCompressorTypeToNone();
+  writer->SetHeaderTypeToUInt64();
+  writer->SetIdTypeToInt64();
+  if (writer->Write() != 1)
+  {
+    throw std::runtime_error("the surface could not be passed back from the reader process");
+  }
+  return writer->GetOutputString();
+}
+
+// Bounds the child's address space to what it has plus a budget proportional to the file, so a
+// hostile size field fails as an allocation error instead of exhausting the machine.
+void limitChildMemory(uintmax_t fileSize)
+{
+  long pageSize = ::sysconf(_SC_PAGESIZE);
+  std::ifstream statm("/proc/self/statm");
+  unsigned long long pages = 0;
+  if (!(statm >> pages) || pageSize <= 0)
+  {
+    return;
+  }
+  const unsigned long long current = pages * static_cast<unsigned long long>(pageSize);
+  const unsigned long long budget =
+      std::max<unsigned long long>(512ull << 20, 64ull * static_cast<unsigned long long>(fileSize));
+  struct rlimit limit;
+  limit.rlim_cur = limit.rlim_max = static_cast<rlim_t>(current + budget);
+  ::setrlimit(RLIMIT_AS, &limit);
+}
+
+[[noreturn]] void runChild(int fd, const std::string& path, const std::string& ext,
+                           uintmax_t fileSize)
+{
+  // Nothing the readers print may reach the terminal.
+  const int devNull = ::open("/dev/null", O_WRONLY);
+  if (devNull >= 0)
+  {
+    ::dup2(devNull, STDOUT_FILENO);
+    ::dup2(devNull, STDERR_FILENO);
+  }
+  limitChildMemory(fileSize);
+  try
+  {
+    ScopedVtkMessageCapture capture;
+    vtkSmartPointer<vtkPolyData> polyData = readWithVtk(path, ext, capture);
+    for (const VtkMessage& warning : capture.messages().Warnings)
+    {
+      if (!warning.text.empty())
+      {
+        sendRecord(fd, Record::Warning, warning.text);
+      }
+    }
+    sendRecord(fd, Record::Data, toXml(polyData));
+  }
+  catch (const Error& e)
+  {
+    sendRecord(fd, Record::Error, e.what());
+  }
+  catch (const std::bad_alloc&)
+  {
+    sendRecord(fd, Record::Error, path + ": the reader ran out of memory (corrupt sizes?)");
+  }
+  catch (const std::exception& e)
+  {
+    sendRecord(fd, Record::Error, path + ": the reader failed: " + e.what());
+  }
+  ::close(fd);
+  ::_exit(0); // no static destructors or atexit handlers of the parent's libraries
+}
+
+// Reads the child's records until it closes the pipe or the time runs out.
+bool receiveAll(int fd, std::string& received)
+{
+  const auto deadline =
+      std::chrono::steady_clock::now() + std::chrono::seconds(kReaderTimeoutSeconds);
+  char buffer[1 << 16];
+  while (true)
+  {
+    const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(
+        deadline - std::chrono::steady_clock::now());
+    if (left.count() <= 0)
+    {
+      return false;
+    }
+    struct pollfd pfd = {fd, POLLIN, 0};
+    const int ready = ::poll(&pfd, 1, static_cast<int>(left.count()));
+    if (ready < 0 && errno == EINTR)
+    {
+      continue;
+    }
+    if (ready <= 0)
+    {
+      return false;
+    }
+    const ssize_t got = ::read(fd, buffer, sizeof(buffer));
+    if (got < 0 && errno == EINTR)
+    {
+      continue;
+    }
+    if (got <= 0)
+    {
+      return true; // end of data (or an error, which the record parsing then reports)
+    }
+    received.append(buffer, static_cast<size_t>(got));
+  }
+}
+
+vtkSmartPointer<vtkPolyData> fromXml(const std::string& xml, const std::string& path)
+{
+  vtkNew<vtkXMLPolyDataReader> reader;
+  reader->ReadFromInputStringOn();
+  reader->SetInputString(xml);
+  reader->Update();
+  if (reader->GetErrorCode() != vtkErrorCode::NoError || !reader->GetOutput())
+  {
+    throw errorAbout(path, "the surface could not be passed back from the reader process");
+  }
+  vtkSmartPointer<vtkPolyData> output = reader->GetOutput();
+  return output;
+}
+
+vtkSmartPointer<vtkPolyData> readIsolated(const std::string& path, const std::string& ext,
+                                          uintmax_t fileSize, std::vector<std::string>& warnings)
+{
+  int fds[2];
+  if (::pipe(fds) != 0)
+  {
+    throw errorAbout(path, "cannot start the reader process (no pipe)");
+  }
+  const pid_t child = ::fork();
+  if (child < 0)
+  {
+    ::close(fds[0]);
+    ::close(fds[1]);
+    throw errorAbout(path, "cannot start the reader process");
+  }
+  if (child == 0)
+  {
+    ::close(fds[0]);
+    runChild(fds[1], path, ext, fileSize);
+  }
+  ::close(fds[1]);
+  std::string received;
+  const bool finished = receiveAll(fds[0], received);
+  ::close(fds[0]);
+  if (!finished)
+  {
+    ::kill(child, SIGKILL);
+  }
+  int status = 0;
+  while (::waitpid(child, &status, 0) < 0 && errno == EINTR)
+  {
+  }
+  if (!finished)
+  {
+    throw errorAbout(path, "the reader did not finish within " +
+                               std::to_string(kReaderTimeoutSeconds) + " s (corrupt file?)");
+  }
+  if (WIFSIGNALED(status))
+  {
+    throw errorAbout(path, "the reader crashed on this file (corrupt or unsupported content)");
+  }
+
+  vtkSmartPointer<vtkPolyData> polyData;
+  size_t position = 0;
+  while (position < received.size())
+  {
+    uint64_t size = 0;
+    if (received.size() - position < 1 + sizeof(size))
+    {
+      break;
+    }
+    const auto tag = static_cast<Record>(received[position]);
+    std::memcpy(&size, received.data() + position + 1, sizeof(size));
+    position += 1 + sizeof(size);
+    if (size > received.size() - position)
+    {
+      break;
+    }
+    const std::string payload = received.substr(position, static_cast<size_t>(size));
+    position += static_cast<size_t>(size);
+    switch (tag)
+    {
+    case Record::Error:
+      throw Error(payload);
+    case Record::Warning:
+      warnings.push_back(payload);
+      break;
+    case Record::Data:
+      polyData = fromXml(payload, path);
+      break;
+    }
+  }
+  if (!polyData)
+  {
+    throw errorAbout(path, "the reader process ended without a result (corrupt file?)");
+  }
+  return polyData;
+}
+
+vtkSmartPointer<vtkPolyData> readByExtension(const std::string& path, const std::string& ext,
+                                             uintmax_t fileSize, std::vector<std::string>& warnings)
+{
+  if (ext == ".ply")
+  {
+    return readPly(path);
+  }
+  if (ext == ".stl")
+  {
+    return readStl(path, warnings);
   }
   if (ext == ".off")
   {
     return readOff(path);
   }
-  throw errorAbout(path, "unknown mesh format '" + ext + "'");
+  return readIsolated(path, ext, fileSize, warnings);
 }
 
 // Existence, type, readability and size, before any reader sees the file.
-void checkFile(const std::filesystem::path& file, const std::string& path)
+uintmax_t checkFile(const std::filesystem::path& file, const std::string& path)
 {
   std::error_code ec;
   const auto status = std::filesystem::status(file, ec);
@@ -356,6 +652,7 @@ void checkFile(const std::filesystem::path& file, const std::string& path)
   {
     throw errorAbout(path, "empty file");
   }
+  return size;
 }
 } // namespace
 
@@ -379,15 +676,17 @@ LoadedMesh loadMesh(const std::string& path)
         ext.empty() ? "no file extension" : "unknown mesh format '" + ext + "'";
     throw errorAbout(path, what + " (expected " + meshFilePatterns() + ")");
   }
-  checkFile(file, path);
+  const uintmax_t fileSize = checkFile(file, path);
 
+  std::lock_guard<std::mutex> lock(loadMutex());
   LoadedMesh mesh;
   mesh.report.source = path;
+  // The validation's own VTK calls (polygon triangulation) stay quiet too.
   ScopedVtkMessageCapture capture;
   vtkSmartPointer<vtkPolyData> raw;
   try
   {
-    raw = readByExtension(path, ext, capture);
+    raw = readByExtension(path, ext, fileSize, mesh.report.readerWarnings);
   }
   catch (const Error&)
   {
@@ -400,13 +699,6 @@ LoadedMesh loadMesh(const std::string& path)
   catch (const std::exception& e)
   {
     throw errorAbout(path, std::string("the reader failed: ") + e.what());
-  }
-  for (const VtkMessage& warning : capture.messages().Warnings)
-  {
-    if (!warning.text.empty())
-    {
-      mesh.report.readerWarnings.push_back(warning.text);
-    }
   }
   mesh.polyData = sanitizeSurface(raw, path, mesh.report);
   return mesh;

@@ -2,10 +2,11 @@
 // Loading a surface mesh file into the triangle surface the renderer draws.
 //
 // Formats, chosen by the file extension (case-insensitive):
-//   .obj (vtkOBJReader), .ply (vtkPLYReader), .stl (vtkSTLReader, coincident corners merged by
-//   the reader as usual for STL), .off (OffReader), .vtk (legacy, any dataset: non-polygonal ones
-//   are reduced to their outer surface), .vtp (XML polydata), .gltf/.glb (vtkGLTFReader: every
-//   mesh of the default scene with its node transforms applied, merged into one polydata).
+//   .obj (vtkOBJReader), .ply (PlyReader), .stl (StlReader), .off (OffReader), .vtk (legacy, any
+//   dataset: non-polygonal ones are reduced to their outer surface), .vtp (XML polydata),
+//   .gltf/.glb (vtkGLTFReader: every mesh of the default scene with its node transforms
+//   applied, merged into one polydata). PLY, STL and OFF have their own readers: VTK has none
+//   for OFF, and its PLY and STL readers are not safe on hostile files.
 // glTF is Y-up by specification; the loader turns it into the Z-up world the way Blender's
 // importer does, (x, y, z) -> (x, -z, y), normals and tangents included.
 //
@@ -17,7 +18,10 @@
 // extension, whatever the reader reported (VTK's error and warning output is captured while
 // reading, so nothing is printed; warnings end up in MeshReport::readerWarnings), no faces left.
 // Hostile input (truncated, garbage, out-of-range indices) gives an error or a smaller mesh,
-// never a crash. loadMesh serialises itself: VTK's message output is process-wide.
+// never a crash: VTK's readers (OBJ, VTK, VTP, glTF) run in a forked child process with a
+// memory limit and a time limit, which hands the surface back as VTK XML; a crash there
+// becomes "PATH: the reader crashed on this file ...". loadMesh serialises itself, since
+// VTK's message output is process-wide.
 #include "MeshValidation.h"
 
 #include <string>
