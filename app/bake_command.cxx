@@ -115,27 +115,6 @@ void checkOutputFile(const std::string& output, const std::vector<std::string>& 
   checkOutputDirectory(output, parentOf(output));
 }
 
-// "N" (square) or "WxH", each side in [1, kMaxMapSide].
-std::pair<int, int> parseImageSize(const std::string& text, const std::string& subject)
-{
-  ParameterSpec side;
-  side.type = ParameterType::Integer;
-  side.minimum = 1.0;
-  side.maximum = kMaxMapSide;
-  const std::size_t x = text.find('x');
-  const std::string w = text.substr(0, x);
-  const std::string h = x == std::string::npos ? w : text.substr(x + 1);
-  try
-  {
-    return {static_cast<int>(parseParameterValue(side, w, subject).number[0]),
-            static_cast<int>(parseParameterValue(side, h, subject).number[0])};
-  }
-  catch (const Error& e)
-  {
-    throw UsageError(e.what());
-  }
-}
-
 // ---------------------------------------------------------------- writing
 
 // Text files get the same guarantee as writeImage: a temporary file renamed into place.
@@ -396,7 +375,7 @@ int runTpr(const Arguments& a, std::ostream& out)
       throw usageError("--pattern", e.what());
     }
   }
-  const auto [width, height] = parseImageSize(a.text("--size"), "--size");
+  const auto [width, height] = parseImageSize(a.text("--size"), "--size", kMaxMapSide);
   const std::string output = a.text("--output");
   checkOutputFile(output, {".exr"});
 
@@ -513,7 +492,7 @@ int runIrradiance(const Arguments& a, std::ostream& out)
   {
     throw usageError("--size", "only used for an .exr output");
   }
-  const auto [width, height] = parseImageSize(a.text("--size"), "--size");
+  const auto [width, height] = parseImageSize(a.text("--size"), "--size", kMaxMapSide);
 
   const auto start = Clock::now();
   const auto env = openEnvironment(spec);

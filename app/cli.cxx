@@ -348,6 +348,26 @@ std::string helpText(const Command& command)
   return s.str();
 }
 
+std::pair<int, int> parseImageSize(const std::string& text, const std::string& subject, int maxSide)
+{
+  ParameterSpec side;
+  side.type = ParameterType::Integer;
+  side.minimum = 1.0;
+  side.maximum = maxSide;
+  const std::size_t x = text.find('x');
+  const std::string w = text.substr(0, x);
+  const std::string h = x == std::string::npos ? w : text.substr(x + 1);
+  try
+  {
+    return {static_cast<int>(parseParameterValue(side, w, subject).number[0]),
+            static_cast<int>(parseParameterValue(side, h, subject).number[0])};
+  }
+  catch (const Error& e)
+  {
+    throw UsageError(e.what());
+  }
+}
+
 int runReportingErrors(const std::function<int()>& body, std::ostream& err)
 {
   try

@@ -10,6 +10,7 @@
 #include <map>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 namespace aniso::cli
@@ -79,6 +80,11 @@ private:
 Arguments parseArguments(const Command& command, const std::vector<std::string>& args);
 
 std::string helpText(const Command& command);
+
+// An image size "N" (square) or "WxH", each side in [1, maxSide]; throws UsageError
+// "SUBJECT: reason".
+std::pair<int, int> parseImageSize(const std::string& text, const std::string& subject,
+                                   int maxSide);
 
 // Runs BODY and turns what it throws into exactly one line "aniso: subject: reason" on ERR
 // and an exit code: 2 for usage errors, 1 for run-time failures.

@@ -150,46 +150,33 @@ bool startsWithSpace(std::string_view text)
   return !text.empty() && (text.front() == ' ' || text.front() == '\t' || text.front() == '\n');
 }
 
-double parseReal(std::string_view text, const std::string& subject)
+// The whole of TEXT as an integer (decimal digits, optional sign) or as a finite real.
+double parseNumber(std::string_view text, bool integer, const std::string& subject)
 {
   const std::string s(text);
+  const std::string notA = quoted(text) + (integer ? " is not an integer" : " is not a number");
   if (s.empty() || startsWithSpace(s))
   {
-    throw errorAbout(subject, quoted(text) + " is not a number");
+    throw errorAbout(subject, notA);
   }
   char* end = nullptr;
   errno = 0;
-  const double v = std::strtod(s.c_str(), &end);
+  const double v = integer ? static_cast<double>(std::strtoll(s.c_str(), &end, 10))
+                           : std::strtod(s.c_str(), &end);
   if (end != s.c_str() + s.size())
   {
-    throw errorAbout(subject, quoted(text) + " is not a number");
+    throw errorAbout(subject, notA);
   }
-  if (!std::isfinite(v) || errno == ERANGE)
+  if (integer && errno == ERANGE)
+  {
+    throw errorAbout(subject, quoted(text) + " is too large");
+  }
+  // ERANGE also flags underflow to a tiny or zero value, which is a fine number.
+  if (!std::isfinite(v) || (errno == ERANGE && std::abs(v) > 1.0))
   {
     throw errorAbout(subject, quoted(text) + " is not a finite number");
   }
   return v;
-}
-
-double parseInteger(std::string_view text, const std::string& subject)
-{
-  const std::string s(text);
-  if (s.empty() || startsWithSpace(s))
-  {
-    throw errorAbout(subject, quoted(text) + " is not an integer");
-  }
-  char* end = nullptr;
-  errno = 0;
-  const long long v = std::strtoll(s.c_str(), &end, 10);
-  if (end != s.c_str() + s.size())
-  {
-    throw errorAbout(subject, quoted(text) + " is not an integer");
-  }
-  if (errno == ERANGE)
-  {
-    throw errorAbout(subject, quoted(text) + " is too large");
-  }
-  return static_cast<double>(v);
 }
 } // namespace
 
@@ -306,10 +293,10 @@ ParameterValue parseParameterValue(const ParameterSpec& spec, std::string_view t
     v.text = std::string(text);
     break;
   case ParameterType::Integer:
-    v.number.fill(parseInteger(text, subject));
+    v.number.fill(parseNumber(text, true, subject));
     break;
   case ParameterType::Real:
-    v.number.fill(parseReal(text, subject));
+    v.number.fill(parseNumber(text, false, subject));
     break;
   case ParameterType::Color:
   {
@@ -331,7 +318,7 @@ ParameterValue parseParameterValue(const ParameterSpec& spec, std::string_view t
     }
     for (std::size_t i = 0; i < 3; ++i)
     {
-      v.number[i] = parseReal(parts[parts.size() == 1 ? 0 : i], subject);
+      v.number[i] = parseNumber(parts[parts.size() == 1 ? 0 : i], false, subject);
     }
     break;
   }

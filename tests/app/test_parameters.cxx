@@ -152,6 +152,9 @@ TEST(Parameters, ParseAcceptsValidSpellings)
   EXPECT_EQ(aniso::parseParameterValue(aniso::parameterSpec("env-rotation"), "-30", "x").number[0],
             -30.0);
   EXPECT_EQ(aniso::parseParameterValue(aniso::parameterSpec("nu"), "2e4", "x").number[0], 2e4);
+  // Underflow to a subnormal is still a finite number in range.
+  EXPECT_EQ(aniso::parseParameterValue(aniso::parameterSpec("nu"), "1e-310", "x").number[0],
+            1e-310);
   const ParameterValue grey =
       aniso::parseParameterValue(aniso::parameterSpec("albedo"), "0.5", "x");
   EXPECT_EQ(grey.number, (std::array<double, 3>{0.5, 0.5, 0.5}));
