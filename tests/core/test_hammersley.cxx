@@ -1,0 +1,212 @@
+// Hammersley points, Cranley-Patterson rotation and the R2 frame shifts, checked against
+// digit-by-digit definitions, exact binary values and stratification properties.
+#include "error.h"
+#include "sampling/hammersley.h"
+
+#include <cmath>
+#include <cstdint>
+#include <gtest/gtest.h>
+#include <limits>
+#include <set>
+#include <utility>
+#include <vector>
+
+namespace
+{
+// Reference radical inverse: the binary digits of i, least significant first, written after the
+// binary point (the definition, one digit at a time).
+double referenceRadicalInverse(uint32_t i)
+{
+  double value = 0.0;
+  double digitWeight = 0.5;
+  for (uint32_t rest = i; rest != 0; rest >>= 1)
+  {
+    if (rest & 1u)
+    {
+      value += digitWeight;
+    }
+    digitWeight *= 0.5;
+  }
+  return value;
+}
+
+// Distance on the unit circle (coordinates live on the torus after the rotation).
+double circleDistance(double a, double b)
+{
+  const double d = std::abs(a - b);
+  return std::min(d, 1.0 - d);
+}
+} // namespace
+
+// Exact binary values of the van der Corput sequence, and the definition for many indices.
+TEST(Hammersley, RadicalInverseExactValues)
+{
+  EXPECT_EQ(aniso::radicalInverse2(0), 0.0);
+  EXPECT_EQ(aniso::radicalInverse2(1), 0.5);
+  EXPECT_EQ(aniso::radicalInverse2(2), 0.25);
+  EXPECT_EQ(aniso::radicalInverse2(3), 0.75);
+  EXPECT_EQ(aniso::radicalInverse2(4), 0.125);
+  EXPECT_EQ(aniso::radicalInverse2(5), 0.625);
+  EXPECT_EQ(aniso::radicalInverse2(6), 0.375);
+  EXPECT_EQ(aniso::radicalInverse2(0x80000000u), std::ldexp(1.0, -32));
+  EXPECT_EQ(aniso::radicalInverse2(0xFFFFFFFFu), 1.0 - std::ldexp(1.0, -32));
+  for (uint32_t i = 0; i < 100000; i += 7)
+  {
+    ASSERT_EQ(aniso::radicalInverse2(i), referenceRadicalInverse(i)) << "i = " << i;
+  }
+  for (uint32_t i = 0xFFFFFFFFu; i > 0xFFFFFFFFu - 1000u; --i)
+  {
+    const double r = aniso::radicalInverse2(i);
+    ASSERT_EQ(r, referenceRadicalInverse(i)) << "i = " << i;
+    ASSERT_LT(r, 1.0);
+  }
+}
+
+// Points lie in [0, 1)^2 and equal (i/n, radical inverse); with n divisible by 4 the first
+// coordinate hits 1/4, 1/2, 3/4 exactly (the sampler's quadrant boundaries).
+TEST(Hammersley, PointsAndQuarterValues)
+{
+  for (uint32_t n : {1u, 3u, 4u, 64u, 200u, 1024u, 1000u})
+  {
+    for (uint32_t i = 0; i < n; ++i)
+    {
+      const glm::dvec2 p = aniso::hammersley(i, n);
+      ASSERT_GE(p.x, 0.0);
+      ASSERT_LT(p.x, 1.0);
+      ASSERT_GE(p.y, 0.0);
+      ASSERT_LT(p.y, 1.0);
+      ASSERT_EQ(p.x, static_cast<double>(i) / static_cast<double>(n));
+      ASSERT_EQ(p.y, referenceRadicalInverse(i));
+    }
+    if (n % 4 == 0)
+    {
+      EXPECT_EQ(aniso::hammersley(n / 4, n).x, 0.25);
+      EXPECT_EQ(aniso::hammersley(n / 2, n).x, 0.5);
+      EXPECT_EQ(aniso::hammersley(3 * n / 4, n).x, 0.75);
+    }
+  }
+}
+
+// Invalid arguments are reported as aniso::Error naming the function.
+TEST(Hammersley, RejectsInvalidArguments)
+{
+  EXPECT_THROW(aniso::hammersley(0, 0), aniso::Error);
+  EXPECT_THROW(aniso::hammersley(4, 4), aniso::Error);
+  try
+  {
+    aniso::hammersley(5, 4);
+    FAIL() << "no error for i >= n";
+  }
+  catch (const aniso::Error& e)
+  {
+    EXPECT_EQ(std::string(e.what()).rfind("hammersley: ", 0), 0u) << e.what();
+  }
+}
+
+// For n = 2^m the set is a (0, m, 2)-net: every elementary box of area 1/n (2^j columns by
+// 2^(m-j) rows) holds exactly one point. This is the defining property of the construction.
+TEST(Hammersley, IsZeroMTwoNet)
+{
+  const int m = 8;
+  const uint32_t n = 1u << m;
+  for (int j = 0; j <= m; ++j)
+  {
+    const double columns = std::ldexp(1.0, j);
+    const double rows = std::ldexp(1.0, m - j);
+    std::set<std::pair<int, int>> boxes;
+    for (uint32_t i = 0; i < n; ++i)
+    {
+      const glm::dvec2 p = aniso::hammersley(i, n);
+      boxes.emplace(static_cast<int>(std::floor(p.x * columns)),
+                    static_cast<int>(std::floor(p.y * rows)));
+    }
+    EXPECT_EQ(boxes.size(), n) << "j = " << j;
+  }
+}
+
+// The rotation is fract(p + shift) on the torus and never returns 1, including shifts that put
+// the sum a hair below an integer (where x - floor(x) rounds to 1) and large or negative shifts.
+TEST(Hammersley, CranleyPattersonStaysBelowOne)
+{
+  const double belowOne = std::nextafter(1.0, 0.0);
+  const double tiny = std::numeric_limits<double>::denorm_min();
+  const std::vector<std::pair<glm::dvec2, glm::dvec2>> cases = {
+      {{0.5, 0.5}, {0.5 - 0x1.0p-60, 0.5 - 0x1.0p-54}},
+      {{belowOne, belowOne}, {0x1.0p-54, 0x1.0p-53}},
+      {{0.0, 0.0}, {-1e-20, -tiny}},
+      {{0.0, 0.25}, {-1.0, -3.0 - 1e-17}},
+      {{0.75, 0.3}, {1e9 + 0.3, -1e9 + 0.25}},
+      {{0.2, 0.9}, {0.3, 0.2}},
+  };
+  for (const auto& [p, shift] : cases)
+  {
+    const glm::dvec2 r = aniso::cranleyPatterson(p, shift);
+    for (int c = 0; c < 2; ++c)
+    {
+      ASSERT_GE(r[c], 0.0);
+      ASSERT_LT(r[c], 1.0);
+      // Reference: the fractional part computed in long double, compared on the circle.
+      const long double sum = static_cast<long double>(p[c]) + static_cast<long double>(shift[c]);
+      const double expected = static_cast<double>(sum - std::floor(sum));
+      EXPECT_LT(circleDistance(r[c], expected), 1e-6) << "component " << c;
+    }
+  }
+}
+
+// Frame 0 is the unrotated set; frame k is (fract(k/g), fract(k/g^2)) for the plastic constant g,
+// the real root of g^3 = g + 1 (solved here by Newton's method in long double).
+TEST(Hammersley, FrameShiftFollowsR2)
+{
+  EXPECT_EQ(aniso::frameShift(0), glm::dvec2(0.0, 0.0));
+  long double g = 1.3L;
+  for (int it = 0; it < 60; ++it)
+  {
+    g -= (g * g * g - g - 1.0L) / (3.0L * g * g - 1.0L);
+  }
+  const long double a1 = 1.0L / g;
+  const long double a2 = 1.0L / (g * g);
+  std::set<std::pair<double, double>> seen;
+  for (uint32_t k = 0; k < 5000; ++k)
+  {
+    const glm::dvec2 s = aniso::frameShift(k);
+    ASSERT_GE(s.x, 0.0);
+    ASSERT_LT(s.x, 1.0);
+    ASSERT_GE(s.y, 0.0);
+    ASSERT_LT(s.y, 1.0);
+    const long double x = k * a1;
+    const long double y = k * a2;
+    ASSERT_LT(circleDistance(s.x, static_cast<double>(x - std::floor(x))), 1e-12) << k;
+    ASSERT_LT(circleDistance(s.y, static_cast<double>(y - std::floor(y))), 1e-12) << k;
+    seen.emplace(s.x, s.y);
+  }
+  EXPECT_EQ(seen.size(), 5000u); // no frame repeats another
+  // Large frame numbers stay in range (exact modular arithmetic, no growth of rounding).
+  const glm::dvec2 last = aniso::frameShift(0xFFFFFFFFu);
+  EXPECT_LT(last.x, 1.0);
+  EXPECT_LT(last.y, 1.0);
+}
+
+// Every rotated frame is still stratified: a shift modulo 1 moves the n columns i/n and the n
+// rows (radical inverses of 0..n-1, a permutation of j/n for n = 2^m) by the same amount, so each
+// column [i/n, (i+1)/n) and each row holds exactly one point.
+TEST(Hammersley, RotatedFramesStayStratified)
+{
+  const uint32_t n = 256;
+  for (uint32_t frame = 0; frame < 64; ++frame)
+  {
+    const glm::dvec2 shift = aniso::frameShift(frame);
+    std::vector<int> columns(n, 0);
+    std::vector<int> rows(n, 0);
+    for (uint32_t i = 0; i < n; ++i)
+    {
+      const glm::dvec2 p = aniso::cranleyPatterson(aniso::hammersley(i, n), shift);
+      ++columns[static_cast<size_t>(std::floor(p.x * n))];
+      ++rows[static_cast<size_t>(std::floor(p.y * n))];
+    }
+    for (uint32_t c = 0; c < n; ++c)
+    {
+      ASSERT_EQ(columns[c], 1) << "frame " << frame << ", column " << c;
+      ASSERT_EQ(rows[c], 1) << "frame " << frame << ", row " << c;
+    }
+  }
+}
