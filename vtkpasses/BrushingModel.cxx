@@ -98,7 +98,17 @@ glm::dvec3 pointAt(vtkPolyData* surface, vtkIdType id)
 constexpr double kVanishingProjection = 1e-6; // relative to the direction's length
 constexpr double kOnAxisFraction = 1e-9;      // of the bounding-box diagonal
 
-// Per-point dP/du, accumulated from the triangles around each point (area-weighted directions).
+// The angle of a triangle's corner at `at`, between the edges to `b` and `c`.
+double cornerAngle(const glm::dvec3& at, const glm::dvec3& b, const glm::dvec3& c)
+{
+  const glm::dvec3 u = b - at;
+  const glm::dvec3 v = c - at;
+  return std::atan2(glm::length(glm::cross(u, v)), glm::dot(u, v));
+}
+
+// Per-point dP/du: the unit directions of the triangles around each point, weighted by their
+// corner angle there. Angle weights do not depend on how a grid's quads were split, so on a
+// regular grid the left and right neighbours balance and the average lands on the true dP/du.
 std::vector<glm::dvec3> accumulateUvTangents(vtkPolyData* surface, vtkDataArray* tcoords)
 {
   std::vector<glm::dvec3> sum(static_cast<size_t>(surface->GetNumberOfPoints()), glm::dvec3(0.0));
@@ -112,9 +122,10 @@ std::vector<glm::dvec3> accumulateUvTangents(vtkPolyData* surface, vtkDataArray*
     {
       continue;
     }
-    const glm::dvec3 p0 = pointAt(surface, ids[0]);
-    const glm::dvec3 e1 = pointAt(surface, ids[1]) - p0;
-    const glm::dvec3 e2 = pointAt(surface, ids[2]) - p0;
+    const glm::dvec3 p[3] = {pointAt(surface, ids[0]), pointAt(surface, ids[1]),
+                             pointAt(surface, ids[2])};
+    const glm::dvec3 e1 = p[1] - p[0];
+    const glm::dvec3 e2 = p[2] - p[0];
     double uv0[2], uv1[2], uv2[2];
     tcoords->GetTuple(ids[0], uv0);
     tcoords->GetTuple(ids[1], uv1);
@@ -134,11 +145,11 @@ std::vector<glm::dvec3> accumulateUvTangents(vtkPolyData* surface, vtkDataArray*
     {
       continue;
     }
-    const double area = 0.5 * glm::length(glm::cross(e1, e2));
-    const glm::dvec3 weighted = dPdu * (area / length);
+    const glm::dvec3 direction = dPdu / length;
     for (int k = 0; k < 3; ++k)
     {
-      sum[static_cast<size_t>(ids[k])] += weighted;
+      sum[static_cast<size_t>(ids[k])] +=
+          direction * cornerAngle(p[k], p[(k + 1) % 3], p[(k + 2) % 3]);
     }
   }
   return sum;

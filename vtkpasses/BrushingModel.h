@@ -4,7 +4,7 @@
 //
 //   uv                   t = dP/du from the texture coordinates: per triangle
 //                        dP/du = (e1 dv2 - e2 dv1) / (du1 dv2 - du2 dv1), accumulated at its
-//                        corners weighted by the triangle's area, then made orthogonal to n.
+//                        corners weighted by the corner angle, then made orthogonal to n.
 //   axis:X,Y,Z           linear brushing: t = the axis projected into the tangent plane.
 //   around:X,Y,Z         turned/lathed parts: t = axis x (p - c) projected into the tangent plane,
 //   around:X,Y,Z@CX,CY,CZ  c = the given point on the axis, else the bounding-box centre.

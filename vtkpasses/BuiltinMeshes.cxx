@@ -76,6 +76,13 @@ void requireAtLeast(int value, int minimum, const char* what)
   }
 }
 
+// 2 pi i / n, with the last seam copy (i = n) at exactly 0: the two copies of a seam vertex
+// differ only in their UVs, so a merge that ignores UVs finds them bit-for-bit equal.
+double seamAngle(int i, int n)
+{
+  return i == n ? 0.0 : 2.0 * kPi * i / n;
+}
+
 // Two counter-clockwise triangles for the grid quad a(i, k) b(i+1, k) c(i+1, k+1) d(i, k+1),
 // where a->b runs along +t and a->d along +b = n x t.
 void addQuad(MeshBuilder& builder, vtkIdType a, vtkIdType b, vtkIdType c, vtkIdType d)
@@ -132,7 +139,7 @@ vtkSmartPointer<vtkPolyData> makeSphere(int segmentsAround, int segmentsPoleToPo
     const double theta = kPi * j / nv;
     for (int i = 0; i <= nu; ++i)
     {
-      const double phi = 2.0 * kPi * i / nu;
+      const double phi = seamAngle(i, nu);
       const double p[3] = {std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi),
                            std::cos(theta)};
       const double t[3] = {-std::sin(phi), std::cos(phi), 0.0};
@@ -185,10 +192,10 @@ vtkSmartPointer<vtkPolyData> makeTorus(int segmentsAround, int segmentsAroundTub
   std::vector<vtkIdType> ids;
   for (int i = 0; i <= nu; ++i)
   {
-    const double phi = 2.0 * kPi * i / nu;
+    const double phi = seamAngle(i, nu);
     for (int k = 0; k <= nv; ++k)
     {
-      const double psi = 2.0 * kPi * k / nv;
+      const double psi = seamAngle(k, nv);
       const double ring = majorRadius + minorRadius * std::cos(psi);
       const double p[3] = {ring * std::cos(phi), ring * std::sin(phi), minorRadius * std::sin(psi)};
       const double n[3] = {std::cos(psi) * std::cos(phi), std::cos(psi) * std::sin(phi),
