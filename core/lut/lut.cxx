@@ -1,1 +1,193 @@
 #include "lut/lut.h"
+
+#include "error.h"
+#include "sampling/hammersley.h"
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <cstddef>
+#include <glm/geometric.hpp>
+#include <string>
+#include <system_error>
+#include <thread>
+
+namespace aniso
+{
+namespace
+{
+constexpr double kPi = 3.14159265358979323846;
+
+void checkRange(const char* name, int value, int low, int high)
+{
+  if (value < low || value > high)
+  {
+    throw errorAbout(name, "must be in [" + std::to_string(low) + ", " + std::to_string(high) +
+                               "], got " + std::to_string(value));
+  }
+}
+
+void checkThreads(int threads)
+{
+  if (threads < 0)
+  {
+    throw errorAbout("threads",
+                     "must be >= 0 (0: all hardware threads), got " + std::to_string(threads));
+  }
+}
+
+// Runs rowFn(row) for every row in [0, rows), spread over `threads` threads (0: all hardware
+// threads) that take rows one at a time. Each row is computed by one call, so the result does
+// not depend on the schedule. Small jobs stay on the calling thread: starting a thread costs
+// more than they do. If the system refuses a thread, the calling thread does its share.
+template <class RowFn>
+void forEachRow(int rows, int threads, double workPerRow, const RowFn& rowFn)
+{
+  int count = threads > 0 ? threads : static_cast<int>(std::thread::hardware_concurrency());
+  constexpr double kWorkPerThread = 32768.0; // inner-loop iterations that justify a thread
+  const double total = workPerRow * rows;
+  count = std::max(1, std::min({count, rows, static_cast<int>(total / kWorkPerThread) + 1}));
+
+  std::atomic<int> next{0};
+  auto work = [&]()
+  {
+    for (int row = next.fetch_add(1); row < rows; row = next.fetch_add(1))
+    {
+      rowFn(row);
+    }
+  };
+  std::vector<std::thread> pool;
+  pool.reserve(static_cast<std::size_t>(count - 1));
+  for (int k = 1; k < count; ++k)
+  {
+    try
+    {
+      pool.emplace_back(work);
+    }
+    catch (const std::system_error&)
+    {
+      break;
+    }
+  }
+  work();
+  for (std::thread& t : pool)
+  {
+    t.join();
+  }
+}
+
+// The N half vectors of a bake: they depend on the lobe only, not on the view.
+std::vector<glm::dvec3> halfVectorSamples(const AsLobe& lobe, int samples)
+{
+  std::vector<glm::dvec3> h(static_cast<std::size_t>(samples));
+  const auto n = static_cast<uint32_t>(samples);
+  for (uint32_t k = 0; k < n; ++k)
+  {
+    h[k] = sampleHalfVector(lobe, hammersley(k, n));
+  }
+  return h;
+}
+
+// sizeBiasAt over precomputed half vectors. Branch-free body so that the loop vectorises.
+glm::dvec2 sizeBiasOver(const std::vector<glm::dvec3>& halfVectors, const glm::dvec3& v)
+{
+  double s = 0.0;
+  double b = 0.0;
+  for (const glm::dvec3& h : halfVectors)
+  {
+    const double vh = v.x * h.x + v.y * h.y + v.z * h.z;
+    const double nl = 2.0 * vh * h.z - v.z;
+    const bool valid = vh > 0.0 && nl > 0.0;
+    const double weight = valid ? nl / std::max(v.z, nl) : 0.0;
+    const double m = 1.0 - std::min(std::max(vh, 0.0), 1.0);
+    const double m2 = m * m;
+    const double chi = m2 * m2 * m;
+    s += weight * (1.0 - chi);
+    b += weight * chi;
+  }
+  const double inv = 1.0 / static_cast<double>(halfVectors.size());
+  return {s * inv, b * inv};
+}
+} // namespace
+
+void checkLutInputs(const AsLobe& lobe, int size, int samples)
+{
+  validateLobe(lobe);
+  checkRange("size", size, kMinLutSize, kMaxLutSize);
+  checkRange("samples", samples, 1, kMaxLutSamples);
+}
+
+glm::dvec2 brdfLutCoords(const glm::dvec3& view)
+{
+  const double u = (2.0 / kPi) * std::atan2(std::abs(view.y), std::abs(view.x));
+  const double v = std::sqrt(std::max(view.z, 0.0));
+  return {u, std::min(v, 1.0)};
+}
+
+glm::dvec3 brdfLutView(const glm::dvec2& uv)
+{
+  const double v = std::min(std::max(uv.y, 0.0), 1.0);
+  const double nv = v * v;
+  const double tangential = std::sqrt(std::max(0.0, 1.0 - nv * nv));
+  const double phi = 0.5 * kPi * uv.x;
+  return {std::cos(phi) * tangential, std::sin(phi) * tangential, nv};
+}
+
+glm::dvec2 sizeBiasAt(const AsLobe& lobe, const glm::dvec3& view, int samples)
+{
+  validateLobe(lobe);
+  checkRange("samples", samples, 1, kMaxLutSamples);
+  return sizeBiasOver(halfVectorSamples(lobe, samples), view);
+}
+
+HalfVectorLut bakeHalfVectorLut(const AsLobe& lobe, int size, int threads)
+{
+  checkLutInputs(lobe, size);
+  checkThreads(threads);
+  HalfVectorLut lut;
+  lut.size = size;
+  lut.lobe = lobe;
+  lut.rgba.resize(std::size_t(size) * size * 4);
+  const double inv = 1.0 / size;
+  forEachRow(size, threads, 64.0 * size,
+             [&](int j)
+             {
+               float* row = lut.rgba.data() + std::size_t(j) * size * 4;
+               for (int i = 0; i < size; ++i)
+               {
+                 const glm::dvec3 h = sampleHalfVector(lobe, {(i + 0.5) * inv, (j + 0.5) * inv});
+                 row[4 * i + 0] = static_cast<float>(h.x);
+                 row[4 * i + 1] = static_cast<float>(h.y);
+                 row[4 * i + 2] = static_cast<float>(h.z);
+                 row[4 * i + 3] = static_cast<float>(log2PdfHalfVector(lobe, h));
+               }
+             });
+  return lut;
+}
+
+BrdfLut bakeBrdfLut(const AsLobe& lobe, int size, int samples, int threads)
+{
+  checkLutInputs(lobe, size, samples);
+  checkThreads(threads);
+  BrdfLut lut;
+  lut.size = size;
+  lut.samples = samples;
+  lut.lobe = lobe;
+  lut.rg.resize(std::size_t(size) * size * 2);
+  const std::vector<glm::dvec3> halfVectors = halfVectorSamples(lobe, samples);
+  const double inv = 1.0 / size;
+  forEachRow(size, threads, double(size) * samples,
+             [&](int j)
+             {
+               float* row = lut.rg.data() + std::size_t(j) * size * 2;
+               for (int i = 0; i < size; ++i)
+               {
+                 const glm::dvec3 view = brdfLutView({(i + 0.5) * inv, (j + 0.5) * inv});
+                 const glm::dvec2 sb = sizeBiasOver(halfVectors, view);
+                 row[2 * i + 0] = static_cast<float>(sb.x);
+                 row[2 * i + 1] = static_cast<float>(sb.y);
+               }
+             });
+  return lut;
+}
+} // namespace aniso

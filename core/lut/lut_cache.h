@@ -2,36 +2,57 @@
 // Memory + disk cache of baked LUTs keyed by their inputs. Disk: $XDG_CACHE_HOME/aniso
 // (or ~/.cache/aniso), EXR files written atomically; a corrupt or foreign file is ignored and
 // re-baked. Thread-safe. Asking twice for the same inputs costs a map lookup.
+#include "lut/lut.h"
+
+#include <cstddef>
 #include <cstdint>
 #include <memory>
 #include <string>
 
-#include "lut/lut.h"
-
 namespace aniso
 {
+// Part of every cache key and file: a change of what a LUT holds (encoding, definition,
+// layout) bumps it, so files written by older builds are never mistaken for current ones.
+constexpr int kLutFormatVersion = 1;
+
 struct LutCacheStats
 {
-  uint64_t memoryHits = 0;
-  uint64_t diskHits = 0;
-  uint64_t bakes = 0;
+  uint64_t memoryHits = 0;        // served from memory (or from a bake another caller started)
+  uint64_t diskHits = 0;          // read from a valid cache file
+  uint64_t bakes = 0;             // computed
+  uint64_t diskRejected = 0;      // cache files ignored: unreadable, truncated, foreign, corrupt
+  uint64_t diskWriteFailures = 0; // bakes that could not be stored (the cache keeps working)
 };
 
+// Key: kind, kLutFormatVersion, the exact bits of n_u and n_v, size and (BRDF) samples.
+// File names carry the key (e.g. brdf_v1_nu<16 hex digits>_nv<...>_s64_n1024.exr) and the EXR
+// header repeats it with a checksum of the pixels, so a renamed, foreign or damaged file is
+// detected. Disk problems never fail a request: the cache falls back to memory.
 class LutCache
 {
 public:
-  // directory empty: the XDG default; "none": memory only.
+  // directory empty: the XDG default ($XDG_CACHE_HOME/aniso if XDG_CACHE_HOME is an absolute
+  // path, else $HOME/.cache/aniso, else memory only); "none": memory only; else that directory
+  // (created on first write).
   explicit LutCache(std::string directory = {});
   ~LutCache();
   LutCache(const LutCache&) = delete;
   LutCache& operator=(const LutCache&) = delete;
 
+  // Invalid inputs throw aniso::Error as the bakers do (checkLutInputs).
   std::shared_ptr<const HalfVectorLut> halfVector(const AsLobe& lobe, int size);
   std::shared_ptr<const BrdfLut> brdf(const AsLobe& lobe, int size, int samples);
 
   LutCacheStats stats() const;
+  // The directory in use; empty when the cache is memory only.
   const std::string& directory() const;
   void clearMemory();
+
+  // LUTs kept in memory beyond this many bytes are dropped, least recently used first (callers
+  // holding one keep it alive). A LUT just made is kept even if it alone exceeds the budget.
+  static constexpr std::size_t kDefaultMemoryBudget = std::size_t(256) << 20;
+  void setMemoryBudget(std::size_t bytes);
+  std::size_t memoryBytes() const;
 
   static LutCache& shared(); // process-wide instance on the default directory
 
