@@ -204,38 +204,77 @@ std::vector<Triangle> collectTriangles(vtkPolyData* input, const std::vector<cha
   return triangles;
 }
 
-void appendBytes(std::string& key, double value)
+// Merge keys of all points, flat: position then every numeric point attribute, with -0 turned
+// into +0 (they compare equal, so they must hash equal). Points are then compared bit for bit.
+class MergeKeys
 {
-  value += 0.0; // -0 and +0 compare equal, so they must hash equal
-  char bytes[sizeof(double)];
-  std::memcpy(bytes, &value, sizeof(double));
-  key.append(bytes, sizeof(double));
-}
+public:
+  MergeKeys(vtkPoints* points, vtkPointData* pointData, const std::vector<char>& used)
+  {
+    std::vector<vtkDataArray*> arrays;
+    this->Width = 3;
+    for (int a = 0; a < pointData->GetNumberOfArrays(); ++a)
+    {
+      if (vtkDataArray* array = pointData->GetArray(a))
+      {
+        arrays.push_back(array);
+        this->Width += static_cast<size_t>(array->GetNumberOfComponents());
+      }
+    }
+    this->Values.assign(used.size() * this->Width, 0.0);
+    std::vector<double> tuple;
+    for (size_t i = 0; i < used.size(); ++i)
+    {
+      if (!used[i])
+      {
+        continue;
+      }
+      double* key = &this->Values[i * this->Width];
+      points->GetPoint(static_cast<vtkIdType>(i), key);
+      size_t offset = 3;
+      for (vtkDataArray* array : arrays)
+      {
+        tuple.resize(static_cast<size_t>(array->GetNumberOfComponents()));
+        array->GetTuple(static_cast<vtkIdType>(i), tuple.data());
+        std::copy(tuple.begin(), tuple.end(), key + offset);
+        offset += tuple.size();
+      }
+      for (size_t k = 0; k < this->Width; ++k)
+      {
+        key[k] += 0.0;
+      }
+    }
+  }
 
-// The merge key of a point: its position and every numeric point attribute, bit for bit.
-std::string mergeKey(vtkPoints* points, vtkPointData* pointData, vtkIdType id)
-{
-  std::string key;
-  double p[3];
-  points->GetPoint(id, p);
-  for (double c : p)
+  size_t hash(vtkIdType id) const
   {
-    appendBytes(key, c);
+    // splitmix64's finaliser per 64-bit word: float-derived doubles differ only in their high
+    // bits, which a plain multiplicative hash would not spread over the buckets.
+    uint64_t h = 0x9e3779b97f4a7c15ull;
+    const double* key = &this->Values[static_cast<size_t>(id) * this->Width];
+    for (size_t k = 0; k < this->Width; ++k)
+    {
+      uint64_t bits = 0;
+      std::memcpy(&bits, key + k, sizeof(bits));
+      h ^= bits + 0x9e3779b97f4a7c15ull + (h << 6) + (h >> 2);
+      h = (h ^ (h >> 30)) * 0xbf58476d1ce4e5b9ull;
+      h = (h ^ (h >> 27)) * 0x94d049bb133111ebull;
+      h ^= h >> 31;
+    }
+    return static_cast<size_t>(h);
   }
-  for (int a = 0; a < pointData->GetNumberOfArrays(); ++a)
+
+  bool equal(vtkIdType a, vtkIdType b) const
   {
-    vtkDataArray* array = pointData->GetArray(a);
-    if (!array)
-    {
-      continue;
-    }
-    for (int c = 0; c < array->GetNumberOfComponents(); ++c)
-    {
-      appendBytes(key, array->GetComponent(id, c));
-    }
+    return std::memcmp(&this->Values[static_cast<size_t>(a) * this->Width],
+                       &this->Values[static_cast<size_t>(b) * this->Width],
+                       this->Width * sizeof(double)) == 0;
   }
-  return key;
-}
+
+private:
+  size_t Width = 3;
+  std::vector<double> Values;
+};
 
 // Float copy of `source` with `components` components (extra ones are dropped: a glTF tangent's
 // handedness sign, a third texture coordinate). Counts non-finite tuples, and zero-length ones
@@ -522,8 +561,13 @@ vtkSmartPointer<vtkPolyData> sanitizeSurface(vtkPolyData* input, const std::stri
   numericPd->SetTCoords(inPd->GetTCoords());
   numericPd->SetTangents(inPd->GetTangents());
 
+  const MergeKeys keys(points, numericPd, used);
+  auto hash = [&keys](vtkIdType id) { return keys.hash(id); };
+  auto equal = [&keys](vtkIdType a, vtkIdType b) { return keys.equal(a, b); };
+  // Maps the first point with a given key to its output id.
+  std::unordered_map<vtkIdType, vtkIdType, decltype(hash), decltype(equal)> firstWithKey(
+      static_cast<size_t>(pointCount), hash, equal);
   std::vector<vtkIdType> newId(static_cast<size_t>(pointCount), -1);
-  std::unordered_map<std::string, vtkIdType> byKey;
   vtkIdType usedCount = 0;
   vtkIdType outCount = 0;
   std::vector<vtkIdType> representative;
@@ -534,7 +578,7 @@ vtkSmartPointer<vtkPolyData> sanitizeSurface(vtkPolyData* input, const std::stri
       continue;
     }
     ++usedCount;
-    auto inserted = byKey.emplace(mergeKey(points, numericPd, i), outCount);
+    auto inserted = firstWithKey.emplace(i, outCount);
     if (inserted.second)
     {
       representative.push_back(i);
