@@ -266,6 +266,23 @@ void rotateYUpToZUp(vtkPolyData* polyData)
   polyData->Modified();
 }
 
+// glTF puts the texture origin at the image's top left, VTK and OpenGL at the bottom left:
+// v -> 1 - v, as Blender's importer does, so an image lines up the same way in both.
+void flipTextureV(vtkPolyData* polyData)
+{
+  vtkPointData* pd = polyData->GetPointData();
+  vtkDataArray* tcoords = pd->GetTCoords() ? pd->GetTCoords() : pd->GetArray("TEXCOORD_0");
+  if (!tcoords || tcoords->GetNumberOfComponents() < 2)
+  {
+    return;
+  }
+  for (vtkIdType i = 0; i < tcoords->GetNumberOfTuples(); ++i)
+  {
+    tcoords->SetComponent(i, 1, 1.0 - tcoords->GetComponent(i, 1));
+  }
+  tcoords->Modified();
+}
+
 vtkSmartPointer<vtkPolyData> readGltf(const std::string& path, ScopedVtkMessageCapture& capture)
 {
   vtkNew<vtkGLTFReader> reader;
@@ -300,6 +317,7 @@ vtkSmartPointer<vtkPolyData> readGltf(const std::string& path, ScopedVtkMessageC
   auto merged = vtkSmartPointer<vtkPolyData>::New();
   merged->DeepCopy(append->GetOutput());
   rotateYUpToZUp(merged);
+  flipTextureV(merged);
   return merged;
 }
 

@@ -8,7 +8,8 @@
 //   applied, merged into one polydata). PLY, STL and OFF have their own readers: VTK has none
 //   for OFF, and its PLY and STL readers are not safe on hostile files.
 // glTF is Y-up by specification; the loader turns it into the Z-up world the way Blender's
-// importer does, (x, y, z) -> (x, -z, y), normals and tangents included.
+// importer does, (x, y, z) -> (x, -z, y), normals and tangents included; its texture origin is
+// the image's top left, so v becomes 1 - v (VTK's origin is the bottom left), as in Blender.
 //
 // The result then goes through sanitizeSurface() (MeshValidation.h): triangles only, no NaN, no
 // zero-area faces, exact duplicates merged, and float "Normals"/"TCoords"/"Tangents" arrays when
@@ -21,7 +22,8 @@
 // never a crash: VTK's readers (OBJ, VTK, VTP, glTF) run in a forked child process with a
 // memory limit and a time limit, which hands the surface back as VTK XML; a crash there
 // becomes "PATH: the reader crashed on this file ...". loadMesh serialises itself, since
-// VTK's message output is process-wide.
+// VTK's message output is process-wide; while it runs, VTK messages from other threads are
+// captured too, so call it where no rendering runs concurrently (the GUI thread does).
 #include "MeshValidation.h"
 
 #include <string>

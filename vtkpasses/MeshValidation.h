@@ -5,7 +5,8 @@
 //   1. cells whose point ids are out of range are dropped (hostile or broken files);
 //   2. vertices and lines are dropped (the renderer draws surfaces only);
 //   3. faces touching a vertex with NaN/Inf coordinates are dropped;
-//   4. polygons and strips are triangulated;
+//   4. polygons and strips are triangulated (quads along the diagonal inside them, larger
+//      polygons by ear cutting with a fan as the fallback);
 //   5. zero-area triangles are dropped: twice the area below 1e-10 of the longest edge squared,
 //      i.e. the triangle has no usable normal even in double precision;
 //   6. duplicate vertices are merged when their position AND every point attribute (normals,

@@ -14,7 +14,9 @@
 // SurfaceOptions::recomputeNormals is set. Otherwise vtkPolyDataNormals makes them with
 // splitting at the feature angle (vertices on sharper edges are duplicated, so a CAD part keeps
 // its hard edges), consistent winding, and outward orientation when the surface is closed and
-// manifold (VTK's auto-orientation assumes that).
+// manifold (VTK's auto-orientation assumes that). A vertex normal is the unweighted mean of its
+// faces' normals; where they cancel (a sheet folded onto itself) the vertex takes the normal of
+// one of its faces, so every normal is unit.
 //
 // Tangents, by SurfaceOptions::brushing (BrushingModel.h):
 //   unset   the mesh's own tangents when all are valid (built-in meshes carry the analytic

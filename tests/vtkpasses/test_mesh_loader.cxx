@@ -390,8 +390,9 @@ TEST_F(MeshLoaderTest, GltfNodesAreMergedWithTransformsAndTurnedZUp)
 
 TEST_F(MeshLoaderTest, GltfNormalsTangentsAndUvsBecomeTheContractArrays)
 {
-  // One quad in glTF's XZ plane facing +Y (glTF up), normal (0,1,0), tangent (1,0,0,1).
-  // In the Z-up world it lies in XY facing +Z: normal (0,0,1), tangent (1,0,0).
+  // One quad in glTF's XZ plane facing +Y (glTF up), normal (0,1,0), tangent (1,0,0,1), UVs
+  // with glTF's top-left origin. In the Z-up world it lies in XY facing +Z: normal (0,0,1),
+  // tangent (1,0,0).
   std::string buffer;
   const float positions[4][3] = {{0, 0, 0}, {0, 0, -1}, {1, 0, -1}, {1, 0, 0}};
   for (const auto& p : positions)
@@ -455,6 +456,11 @@ TEST_F(MeshLoaderTest, GltfNormalsTangentsAndUvsBecomeTheContractArrays)
     EXPECT_NEAR(test::point(mesh.polyData, i).z, 0.0, 1e-7);
     EXPECT_NEAR(glm::length(test::vec3(pd->GetNormals(), i) - glm::dvec3(0, 0, 1)), 0.0, 1e-6);
     EXPECT_NEAR(glm::length(test::vec3(pd->GetTangents(), i) - glm::dvec3(1, 0, 0)), 0.0, 1e-6);
+    // The file's v runs down the image (v = 1 - y here); flipped, (u, v) = (x, y) as on the
+    // built-in plate, and the tangent +X is dP/du.
+    const glm::dvec3 p = test::point(mesh.polyData, i);
+    EXPECT_NEAR(test::vec2(pd->GetTCoords(), i).x, p.x, 1e-6);
+    EXPECT_NEAR(test::vec2(pd->GetTCoords(), i).y, p.y, 1e-6);
   }
   // Counter-clockwise seen from +Z after the turn.
   test::forEachTriangle(mesh.polyData,
