@@ -1,6 +1,7 @@
 // The aniso executable: dispatches to its subcommands.
 #include "bake_command.h"
 #include "cli.h"
+#include "gui/run_gui.h"
 #include "render_command.h"
 
 #include <iostream>
@@ -11,7 +12,8 @@ namespace
 {
 std::string mainHelp()
 {
-  return "Usage: aniso [--help | --version] COMMAND [ARGS...]\n\n"
+  return "Usage: aniso [--help | --version] COMMAND [ARGS...]\n"
+         "       " + aniso::gui::guiUsage() + "  (opens the window)\n\n"
          "aniso renders meshes with anisotropic Ashikhmin-Shirley materials under image-based\n"
          "lighting.\n\n"
          "Commands:\n"
@@ -26,9 +28,9 @@ std::string mainHelp()
 int run(const std::vector<std::string>& args)
 {
   using aniso::cli::usageError;
-  if (args.empty())
+  if (aniso::gui::isGuiCommandLine(args))
   {
-    throw aniso::cli::UsageError("missing COMMAND (see aniso --help)");
+    return aniso::gui::runGui(args);
   }
   const std::string& command = args[0];
   if (command == "-h" || command == "--help")

@@ -129,7 +129,7 @@ RenderResult renderOffscreen(const RenderSettings& s)
   glm::dvec3 centre;
   double radius = 0.0;
   boundingSphere(s.surface, centre, radius);
-  const CameraPlacement placement = placeCamera(s.view, centre, radius);
+  const CameraPlacement placement = s.camera ? *s.camera : placeCamera(s.view, centre, radius);
   vtkCamera* camera = renderer->GetActiveCamera();
   camera->SetFocalPoint(placement.focalPoint.x, placement.focalPoint.y, placement.focalPoint.z);
   camera->SetPosition(placement.position.x, placement.position.y, placement.position.z);

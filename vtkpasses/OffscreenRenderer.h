@@ -12,6 +12,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 #include <vtkSmartPointer.h>
@@ -31,6 +32,9 @@ struct RenderSettings
   MaterialSettings material;
   DisplaySettings display;
   ViewSettings view;
+  // When set, this camera is used as it is instead of one placed by `view` (the application's
+  // screenshots keep the camera of its window).
+  std::optional<CameraPlacement> camera;
   int width = 512;
   int height = 512;
   int frames = 1;     // progressive frames accumulated (each with its own sample shift)

@@ -19,7 +19,7 @@ namespace aniso
 {
 namespace
 {
-constexpr int kThumbnailWidth = 128;
+constexpr int kThumbnailWidth = 112;
 constexpr int kSpecRole = Qt::UserRole;
 } // namespace
 
@@ -42,10 +42,14 @@ EnvironmentDock::EnvironmentDock(SceneEditor* editor, const QString& hdriDirecto
   list_->setObjectName("environments");
   list_->setViewMode(QListView::IconMode);
   list_->setIconSize(QSize(kThumbnailWidth, kThumbnailWidth / 2));
+  list_->setFlow(QListView::LeftToRight);
+  list_->setWrapping(true);
   list_->setResizeMode(QListView::Adjust);
   list_->setMovement(QListView::Static);
-  list_->setWordWrap(true);
-  list_->setMinimumHeight(kThumbnailWidth + 24);
+  list_->setUniformItemSizes(true);
+  list_->setGridSize(QSize(kThumbnailWidth + 12, kThumbnailWidth / 2 + 28));
+  list_->setTextElideMode(Qt::ElideRight);
+  list_->setMinimumHeight(2 * (kThumbnailWidth / 2 + 28) + 8);
 
   addItem(tr("Studio (built-in)"), "builtin:studio");
   addItem(tr("White (built-in)"), "builtin:white");

@@ -13,7 +13,7 @@ namespace aniso
 {
 namespace
 {
-constexpr int kPreviewSide = 160;
+constexpr int kPreviewSide = 112;
 
 QLabel* imageLabel(const QString& name, QWidget* parent)
 {

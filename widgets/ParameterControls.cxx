@@ -91,6 +91,7 @@ NumberControl::NumberControl(const ParameterSpec& spec, QWidget* parent)
       spin_(makeSpinBox(spec, this))
 {
   slider_->setRange(0, kSliderSteps);
+  slider_->setMinimumWidth(48);
   slider_->setPageStep(kSliderSteps / 20);
   slider_->setSingleStep(std::max(1, kSliderSteps / 200));
   auto* layout = new QHBoxLayout(this);

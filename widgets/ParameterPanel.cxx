@@ -111,6 +111,8 @@ QWidget* scrollableColumn(const QList<QWidget*>& panels, QWidget* parent)
   auto* scroll = new QScrollArea(parent);
   scroll->setWidgetResizable(true);
   scroll->setFrameShape(QFrame::NoFrame);
+  // Rows shrink to the dock's width rather than scrolling sideways.
+  scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
   auto* inner = new QWidget(scroll);
   auto* column = new QVBoxLayout(inner);
   for (QWidget* panel : panels)

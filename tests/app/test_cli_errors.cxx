@@ -204,7 +204,7 @@ TEST_F(CliErrors, ExecutableReportsOneLineAndTheExitCode)
   makeInputs();
   const std::string out = path("out.exr").string();
   const std::vector<Case> cases = {
-      {{}, 2, "COMMAND"},
+      {{"--session"}, 2, "--session"}, // the window's options are checked before it opens
       {{"frobnicate"}, 2, "frobnicate"},
       {{"--frobnicate"}, 2, "--frobnicate"},
       {{"bake"}, 2, "KIND"},

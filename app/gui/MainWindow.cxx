@@ -1,0 +1,545 @@
+#include "MainWindow.h"
+
+#include "EnvironmentDock.h"
+#include "LutScheduler.h"
+#include "LutView.h"
+#include "MapsDock.h"
+#include "MaterialDock.h"
+#include "MeshLoader.h"
+#include "OffscreenRenderer.h"
+#include "SceneView.h"
+#include "error.h"
+#include "image/image.h"
+
+#include <QAction>
+#include <QApplication>
+#include <QCheckBox>
+#include <QCloseEvent>
+#include <QDateTime>
+#include <QDialog>
+#include <QDialogButtonBox>
+#include <QDir>
+#include <QDockWidget>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QFormLayout>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QLineEdit>
+#include <QMenuBar>
+#include <QMessageBox>
+#include <QMimeData>
+#include <QSettings>
+#include <QSpinBox>
+#include <QStandardPaths>
+#include <QStatusBar>
+#include <QToolButton>
+#include <QUndoStack>
+#include <QUrl>
+#include <QVTKOpenGLNativeWidget.h>
+#include <algorithm>
+#include <vtkGenericOpenGLRenderWindow.h>
+#include <vtkInteractorStyleTrackballCamera.h>
+#include <vtkRenderWindowInteractor.h>
+
+namespace aniso
+{
+namespace
+{
+constexpr int kMaxRecent = 8;
+
+QString lowerSuffix(const QString& path)
+{
+  return QFileInfo(path).suffix().toLower();
+}
+
+bool isMeshFile(const QString& path)
+{
+  const QString patterns = QString::fromStdString(meshFilePatterns());
+  return patterns.split(' ', Qt::SkipEmptyParts).contains("*." + lowerSuffix(path));
+}
+
+Image rgbOf(const Image& rgba)
+{
+  Image rgb(rgba.width, rgba.height, 3);
+  for (std::size_t i = 0, n = std::size_t(rgb.width) * rgb.height; i < n; ++i)
+  {
+    std::copy_n(&rgba.data[i * 4], 3, &rgb.data[i * 3]);
+  }
+  return rgb;
+}
+} // namespace
+
+MainWindow::MainWindow(QWidget* parent)
+    : QMainWindow(parent), editor_(&model_), assets_(&model_),
+      luts_(new LutScheduler(&model_, nullptr, this)), vtkWidget_(new QVTKOpenGLNativeWidget(this)),
+      samplesLabel_(new QLabel(this)), lutLabel_(new QLabel(this))
+{
+  setWindowTitle(tr("aniso"));
+  setObjectName("MainWindow");
+  setAcceptDrops(true);
+  setDockOptions(AnimatedDocks | AllowTabbedDocks);
+
+  vtkWidget_->setRenderWindow(renderWindow_);
+  vtkWidget_->setMinimumSize(320, 240);
+  vtkNew<vtkInteractorStyleTrackballCamera> style;
+  renderWindow_->GetInteractor()->SetInteractorStyle(style);
+  setCentralWidget(vtkWidget_);
+  view_ = new SceneView(&model_, &assets_, luts_, renderWindow_, this);
+
+  materialDock_ = new MaterialDock(&editor_, this);
+  mapsDock_ = new MapsDock(&editor_, this);
+  environmentDock_ = new EnvironmentDock(&editor_, blenderHdriDirectory(), this);
+  lutDock_ = new QDockWidget(tr("Lookup tables"), this);
+  lutDock_->setObjectName("LutDock");
+  lutDock_->setWidget(new LutView(luts_, lutDock_));
+  addDockWidget(Qt::LeftDockWidgetArea, materialDock_);
+  addDockWidget(Qt::LeftDockWidgetArea, mapsDock_);
+  addDockWidget(Qt::RightDockWidgetArea, environmentDock_);
+  addDockWidget(Qt::RightDockWidgetArea, lutDock_);
+
+  const auto toStatus = [this](const QString& message) { reportError(message, false); };
+  connect(materialDock_, &MaterialDock::errorOccurred, this, toStatus);
+  connect(mapsDock_, &MapsDock::errorOccurred, this, toStatus);
+  connect(environmentDock_, &EnvironmentDock::errorOccurred, this, toStatus);
+  connect(&editor_, &SceneEditor::errorOccurred, this, toStatus);
+  connect(view_, &SceneView::errorOccurred, this, toStatus);
+  connect(luts_, &LutScheduler::bakeFailed, this, toStatus);
+  connect(view_, &SceneView::noteAdded, this,
+          [this](const QString& note) { statusBar()->showMessage(note, 8000); });
+  connect(view_, &SceneView::frameRendered, this, &MainWindow::showSamples);
+  connect(luts_, &LutScheduler::busyChanged, this,
+          [this](bool busy)
+          { lutLabel_->setText(busy ? tr("Baking lookup tables…") : tr("Lookup tables ready")); });
+
+  samplesLabel_->setObjectName("samples");
+  statusBar()->addPermanentWidget(lutLabel_);
+  statusBar()->addPermanentWidget(samplesLabel_);
+  createMenus();
+
+  resize(1280, 900);
+  resizeDocks({materialDock_, environmentDock_}, {350, 370}, Qt::Horizontal);
+  resizeDocks({materialDock_, mapsDock_}, {520, 380}, Qt::Vertical);
+  QSettings settings;
+  restoreGeometry(settings.value("window/geometry").toByteArray());
+  restoreState(settings.value("window/state").toByteArray());
+}
+
+MainWindow::~MainWindow()
+{
+  // The view draws into the widget's window: it goes first.
+  delete view_;
+  view_ = nullptr;
+}
+
+void MainWindow::createMenus()
+{
+  QMenu* file = menuBar()->addMenu(tr("&File"));
+  file->addAction(
+      tr("Open &Mesh…"), this,
+      [this]
+      {
+        const QString path = QFileDialog::getOpenFileName(
+            this, tr("Open a mesh"), QString(),
+            tr("Meshes (%1);;All files (*)").arg(QString::fromStdString(meshFilePatterns())));
+        if (!path.isEmpty())
+        {
+          openMesh(path);
+        }
+      },
+      QKeySequence::Open);
+  file->addAction(tr("Open &Environment…"), environmentDock_, &EnvironmentDock::openFile);
+  file->addAction(tr("Open &Session…"), this,
+                  [this]
+                  {
+                    const QString path =
+                        QFileDialog::getOpenFileName(this, tr("Open a session"), QString(),
+                                                     tr("Sessions (*.json);;All files (*)"));
+                    if (!path.isEmpty())
+                    {
+                      openSession(path);
+                    }
+                  });
+  recentMenu_ = file->addMenu(tr("Open &Recent"));
+  rebuildRecentMenu();
+  file->addSeparator();
+  file->addAction(
+      tr("Save Session"), this,
+      [this]
+      {
+        QString path = sessionPath_;
+        if (path.isEmpty())
+        {
+          path = QFileDialog::getSaveFileName(this, tr("Save the session"), "session.json",
+                                              tr("Sessions (*.json)"));
+        }
+        if (!path.isEmpty())
+        {
+          saveSession(path);
+        }
+      },
+      QKeySequence::Save);
+  file->addAction(
+      tr("Save Session &As…"), this,
+      [this]
+      {
+        const QString path = QFileDialog::getSaveFileName(this, tr("Save the session"),
+                                                          "session.json", tr("Sessions (*.json)"));
+        if (!path.isEmpty())
+        {
+          saveSession(path);
+        }
+      },
+      QKeySequence::SaveAs);
+  file->addAction(tr("E&xport Screenshot…"), this, &MainWindow::chooseAndExportScreenshot,
+                  QKeySequence(tr("Ctrl+E")));
+  file->addSeparator();
+  file->addAction(tr("&Quit"), this, &QWidget::close, QKeySequence::Quit);
+
+  QMenu* edit = menuBar()->addMenu(tr("&Edit"));
+  QAction* undo = editor_.undoStack()->createUndoAction(this, tr("&Undo"));
+  undo->setShortcut(QKeySequence::Undo);
+  QAction* redo = editor_.undoStack()->createRedoAction(this, tr("&Redo"));
+  redo->setShortcut(QKeySequence::Redo);
+  edit->addAction(undo);
+  edit->addAction(redo);
+
+  QMenu* viewMenu = menuBar()->addMenu(tr("&View"));
+  for (QDockWidget* dock :
+       {static_cast<QDockWidget*>(materialDock_), static_cast<QDockWidget*>(mapsDock_),
+        static_cast<QDockWidget*>(environmentDock_), lutDock_})
+  {
+    viewMenu->addAction(dock->toggleViewAction());
+  }
+  viewMenu->addSeparator();
+  viewMenu->addAction(
+      tr("Reset &Camera"), this, [this] { view_->resetCamera(); }, QKeySequence(tr("Ctrl+R")));
+}
+
+void MainWindow::reportError(const QString& message, bool dialog)
+{
+  statusBar()->showMessage(message, 15000);
+  emit errorReported(message);
+  if (dialog && errorDialogs_)
+  {
+    QMessageBox::warning(this, tr("aniso"), message);
+  }
+}
+
+bool MainWindow::openMesh(const QString& path)
+{
+  try
+  {
+    editor_.edit("mesh", textValue(path.toStdString()));
+    view_->resetCamera();
+    addRecent(path);
+    return true;
+  }
+  catch (const Error& e)
+  {
+    reportError(QString::fromStdString(e.what()), true);
+    return false;
+  }
+}
+
+bool MainWindow::openEnvironment(const QString& path)
+{
+  try
+  {
+    editor_.edit("env", textValue(path.toStdString()));
+    addRecent(path);
+    return true;
+  }
+  catch (const Error& e)
+  {
+    reportError(QString::fromStdString(e.what()), true);
+    return false;
+  }
+}
+
+bool MainWindow::openSession(const QString& path)
+{
+  try
+  {
+    const QStringList unknown = session_.open(editor_, path);
+    sessionPath_ = path;
+    addRecent(path);
+    if (!unknown.isEmpty())
+    {
+      // Reported once, here; the keys are kept and written back on save.
+      statusBar()->showMessage(
+          tr("%1: kept keys this version does not know: %2").arg(path, unknown.join(", ")), 15000);
+    }
+    return true;
+  }
+  catch (const Error& e)
+  {
+    reportError(QString::fromStdString(e.what()), true);
+    return false;
+  }
+}
+
+bool MainWindow::saveSession(const QString& path)
+{
+  try
+  {
+    session_.save(model_, path);
+    sessionPath_ = path;
+    addRecent(path);
+    statusBar()->showMessage(tr("Saved %1").arg(path), 5000);
+    return true;
+  }
+  catch (const Error& e)
+  {
+    reportError(QString::fromStdString(e.what()), true);
+    return false;
+  }
+}
+
+bool MainWindow::openAny(const QString& path)
+{
+  const QString suffix = lowerSuffix(path);
+  if (suffix == "json")
+  {
+    return openSession(path);
+  }
+  if (isMeshFile(path))
+  {
+    return openMesh(path);
+  }
+  if (suffix == "hdr")
+  {
+    return openEnvironment(path);
+  }
+  if (suffix == "exr")
+  {
+    try
+    {
+      const Image image = readImage(path.toStdString());
+      // Equirectangular environments are twice as wide as high; maps usually are not.
+      if (std::abs(image.width - 2 * image.height) <= image.height / 50 + 1)
+      {
+        return openEnvironment(path);
+      }
+    }
+    catch (const Error& e)
+    {
+      reportError(QString::fromStdString(e.what()), true);
+      return false;
+    }
+  }
+  try
+  {
+    editor_.edit("normal-map", textValue(path.toStdString()));
+    if (model_.text("bump") == "none")
+    {
+      editor_.edit("bump", textValue("quaternion"));
+    }
+    return true;
+  }
+  catch (const Error& e)
+  {
+    reportError(QString::fromStdString(e.what()), true);
+    return false;
+  }
+}
+
+QString MainWindow::defaultScreenshotName(const QString& extension) const
+{
+  QSettings settings;
+  QString folder = settings.value("screenshot/folder").toString();
+  if (folder.isEmpty())
+  {
+    folder = QStandardPaths::writableLocation(QStandardPaths::PicturesLocation);
+  }
+  QString mesh = QString::fromStdString(model_.text("mesh"));
+  mesh = mesh.startsWith("builtin:") ? mesh.mid(8) : QFileInfo(mesh).completeBaseName();
+  const QString stamp = QDateTime::currentDateTime().toString("yyyyMMdd-HHmmss");
+  return QDir(folder).filePath(QString("%1-%2.%3").arg(mesh, stamp, extension));
+}
+
+void MainWindow::exportScreenshot(const QString& path, const ScreenshotOptions& options)
+{
+  const std::string subject = path.toStdString();
+  const QString suffix = lowerSuffix(path);
+  if (suffix != "png" && suffix != "exr" && suffix != "tif" && suffix != "tiff")
+  {
+    throw errorAbout(subject, "a screenshot is .png, .exr, .tif or .tiff");
+  }
+  if (options.scale < 1 || options.scale > 4)
+  {
+    throw errorAbout(subject, "the scale must be 1 to 4");
+  }
+  const qreal ratio = vtkWidget_->devicePixelRatioF();
+  const int width = std::max(1, static_cast<int>(vtkWidget_->width() * ratio)) * options.scale;
+  const int height = std::max(1, static_cast<int>(vtkWidget_->height() * ratio)) * options.scale;
+  RenderSettings settings = view_->renderSettings(width, height);
+  if (options.transparent)
+  {
+    settings.display.background = BackgroundMode::Transparent;
+  }
+  const bool alpha = settings.display.background == BackgroundMode::Transparent;
+  QApplication::setOverrideCursor(Qt::WaitCursor);
+  try
+  {
+    const RenderResult result = renderOffscreen(settings);
+    if (suffix == "exr")
+    {
+      writeImage(subject, result.linear);
+    }
+    else
+    {
+      writeImage(subject, alpha ? result.display : rgbOf(result.display));
+    }
+  }
+  catch (...)
+  {
+    QApplication::restoreOverrideCursor();
+    throw;
+  }
+  QApplication::restoreOverrideCursor();
+  QSettings().setValue("screenshot/folder", QFileInfo(path).absolutePath());
+}
+
+void MainWindow::chooseAndExportScreenshot()
+{
+  QDialog dialog(this);
+  dialog.setWindowTitle(tr("Export screenshot"));
+  auto* pathEdit = new QLineEdit(defaultScreenshotName("png"), &dialog);
+  auto* browse = new QToolButton(&dialog);
+  browse->setText(tr("…"));
+  auto* pathRow = new QWidget(&dialog);
+  auto* pathLayout = new QHBoxLayout(pathRow);
+  pathLayout->setContentsMargins(0, 0, 0, 0);
+  pathLayout->addWidget(pathEdit, 1);
+  pathLayout->addWidget(browse);
+  auto* scale = new QSpinBox(&dialog);
+  scale->setRange(1, 4);
+  scale->setSuffix(tr(" ×"));
+  auto* size = new QLabel(&dialog);
+  const auto updateSize = [this, scale, size]
+  {
+    const qreal ratio = vtkWidget_->devicePixelRatioF();
+    size->setText(tr("%1 × %2 pixels")
+                      .arg(static_cast<int>(vtkWidget_->width() * ratio) * scale->value())
+                      .arg(static_cast<int>(vtkWidget_->height() * ratio) * scale->value()));
+  };
+  updateSize();
+  connect(scale, qOverload<int>(&QSpinBox::valueChanged), &dialog, updateSize);
+  auto* transparent = new QCheckBox(tr("Transparent background (PNG, TIFF alpha)"), &dialog);
+  connect(browse, &QToolButton::clicked, &dialog,
+          [&dialog, pathEdit]
+          {
+            const QString chosen = QFileDialog::getSaveFileName(
+                &dialog, tr("Export screenshot"), pathEdit->text(),
+                tr("PNG, as displayed (*.png);;EXR, linear radiance (*.exr);;TIFF, 16-bit (*.tif "
+                   "*.tiff)"));
+            if (!chosen.isEmpty())
+            {
+              pathEdit->setText(chosen);
+            }
+          });
+  auto* buttons = new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel, &dialog);
+  connect(buttons, &QDialogButtonBox::accepted, &dialog, &QDialog::accept);
+  connect(buttons, &QDialogButtonBox::rejected, &dialog, &QDialog::reject);
+  auto* form = new QFormLayout(&dialog);
+  form->addRow(tr("File"), pathRow);
+  form->addRow(tr("Scale"), scale);
+  form->addRow(tr("Size"), size);
+  form->addRow(QString(), transparent);
+  form->addRow(buttons);
+  if (dialog.exec() != QDialog::Accepted)
+  {
+    return;
+  }
+  ScreenshotOptions options;
+  options.scale = scale->value();
+  options.transparent = transparent->isChecked();
+  try
+  {
+    exportScreenshot(pathEdit->text(), options);
+    statusBar()->showMessage(tr("Wrote %1").arg(pathEdit->text()), 8000);
+  }
+  catch (const Error& e)
+  {
+    reportError(QString::fromStdString(e.what()), true);
+  }
+}
+
+QStringList MainWindow::recentFiles() const
+{
+  return QSettings().value("recentFiles").toStringList();
+}
+
+void MainWindow::addRecent(const QString& path)
+{
+  QStringList files = recentFiles();
+  const QString absolute = QFileInfo(path).absoluteFilePath();
+  files.removeAll(absolute);
+  files.prepend(absolute);
+  while (files.size() > kMaxRecent)
+  {
+    files.removeLast();
+  }
+  QSettings().setValue("recentFiles", files);
+  rebuildRecentMenu();
+}
+
+void MainWindow::rebuildRecentMenu()
+{
+  if (!recentMenu_)
+  {
+    return;
+  }
+  recentMenu_->clear();
+  const QStringList files = recentFiles();
+  for (const QString& path : files)
+  {
+    recentMenu_->addAction(QFileInfo(path).fileName(), this, [this, path] { openAny(path); })
+        ->setToolTip(path);
+  }
+  recentMenu_->setEnabled(!files.isEmpty());
+}
+
+void MainWindow::showSamples(int samples, int target)
+{
+  samplesLabel_->setText(view_->interacting()
+                             ? tr("Preview")
+                             : tr("Samples %1 / %2").arg(std::min(samples, target)).arg(target));
+}
+
+void MainWindow::closeEvent(QCloseEvent* event)
+{
+  QSettings settings;
+  settings.setValue("window/geometry", saveGeometry());
+  settings.setValue("window/state", saveState());
+  event->accept();
+}
+
+void MainWindow::dragEnterEvent(QDragEnterEvent* event)
+{
+  if (event->mimeData()->hasUrls())
+  {
+    for (const QUrl& url : event->mimeData()->urls())
+    {
+      if (url.isLocalFile())
+      {
+        event->acceptProposedAction();
+        return;
+      }
+    }
+  }
+}
+
+void MainWindow::dropEvent(QDropEvent* event)
+{
+  for (const QUrl& url : event->mimeData()->urls())
+  {
+    if (url.isLocalFile())
+    {
+      openAny(url.toLocalFile());
+    }
+  }
+  event->acceptProposedAction();
+}
+} // namespace aniso

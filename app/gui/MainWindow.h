@@ -1,0 +1,105 @@
+#pragma once
+// The application window: the VTK view in the centre, the material, maps, environment and
+// lookup-table docks around it, menus (File, Edit, View), a status bar with the progressive
+// sample count, recent files, drag and drop, sessions and screenshot export. Every failure is
+// reported once, in words, and leaves the scene as it was.
+#include "SceneAssets.h"
+#include "SceneEditor.h"
+#include "SceneModel.h"
+#include "Session.h"
+
+#include <QMainWindow>
+#include <QString>
+#include <QStringList>
+#include <memory>
+#include <vtkNew.h>
+
+class QLabel;
+class QMenu;
+class QVTKOpenGLNativeWidget;
+class vtkGenericOpenGLRenderWindow;
+
+namespace aniso
+{
+class EnvironmentDock;
+class LutScheduler;
+class MapsDock;
+class MaterialDock;
+class SceneView;
+
+struct ScreenshotOptions
+{
+  int scale = 1;            // 1 to 4 times the view's size
+  bool transparent = false; // no background: PNG/TIFF alpha is the coverage
+};
+
+class MainWindow : public QMainWindow
+{
+  Q_OBJECT
+
+public:
+  explicit MainWindow(QWidget* parent = nullptr);
+  ~MainWindow() override;
+
+  SceneModel* model() { return &model_; }
+  SceneEditor* editor() { return &editor_; }
+  SceneView* view() const { return view_; }
+  LutScheduler* lutScheduler() const { return luts_; }
+  QVTKOpenGLNativeWidget* vtkWidget() const { return vtkWidget_; }
+
+  // Errors go to the status bar and errorReported; with dialogs on (the default) file
+  // operations also show a message box.
+  void setErrorDialogs(bool on) { errorDialogs_ = on; }
+
+  // Each returns false after reporting a failure (the scene is unchanged then).
+  bool openMesh(const QString& path);
+  bool openEnvironment(const QString& path);
+  bool openSession(const QString& path);
+  bool saveSession(const QString& path);
+  // By the file's kind: a session (.json), a mesh, an environment (.hdr, or an .exr twice as
+  // wide as high), else an image taken as the normal map.
+  bool openAny(const QString& path);
+  // Renders the current view at scale x its size with the full quality and writes PATH by its
+  // extension: .png (display-transformed 8-bit sRGB), .tif/.tiff (the same in 16 bits), .exr
+  // (linear radiance, float, alpha = coverage). Throws aniso::Error "PATH: reason".
+  void exportScreenshot(const QString& path, const ScreenshotOptions& options);
+  // A file name for a screenshot: the mesh's name and the time, in the last used folder.
+  QString defaultScreenshotName(const QString& extension) const;
+
+  QStringList recentFiles() const;
+
+signals:
+  void errorReported(const QString& message);
+
+protected:
+  void closeEvent(QCloseEvent* event) override;
+  void dragEnterEvent(QDragEnterEvent* event) override;
+  void dropEvent(QDropEvent* event) override;
+
+private:
+  void createMenus();
+  void reportError(const QString& message, bool dialog);
+  void addRecent(const QString& path);
+  void rebuildRecentMenu();
+  void showSamples(int samples, int target);
+  void chooseAndExportScreenshot();
+
+  SceneModel model_;
+  SceneEditor editor_;
+  SceneAssets assets_;
+  SessionFile session_;
+  QString sessionPath_;
+  LutScheduler* luts_;
+  QVTKOpenGLNativeWidget* vtkWidget_;
+  vtkNew<vtkGenericOpenGLRenderWindow> renderWindow_;
+  SceneView* view_ = nullptr;
+  MaterialDock* materialDock_;
+  MapsDock* mapsDock_;
+  EnvironmentDock* environmentDock_;
+  QDockWidget* lutDock_;
+  QMenu* recentMenu_ = nullptr;
+  QLabel* samplesLabel_;
+  QLabel* lutLabel_;
+  bool errorDialogs_ = true;
+};
+} // namespace aniso

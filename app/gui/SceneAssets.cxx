@@ -1,0 +1,189 @@
+#include "SceneAssets.h"
+
+#include "BrushingModel.h"
+#include "BuiltinMeshes.h"
+#include "MeshLoader.h"
+#include "error.h"
+#include "maps/quaternion_map.h"
+#include "maps/tpr_map.h"
+
+#include <filesystem>
+#include <vtkPolyData.h>
+
+namespace aniso
+{
+namespace
+{
+constexpr int kTprBakeSide = 1024; // texels of a TPR pattern map: finer than any view needs
+const char* const kBuiltinPrefix = "builtin:";
+
+// Integer-encoded files hold signed vectors as 2c - 1, as normal maps do.
+Image decodedSigned(const Image& image, bool integerFormat)
+{
+  Image out = image;
+  if (integerFormat)
+  {
+    for (float& v : out.data)
+    {
+      v = 2.0f * v - 1.0f;
+    }
+  }
+  return out;
+}
+
+SurfaceOptions surfaceOptions(const std::string& tangents)
+{
+  SurfaceOptions options;
+  if (tangents != "auto")
+  {
+    options.brushing = parseBrushingModel(tangents, "tangents");
+  }
+  return options;
+}
+} // namespace
+
+SceneAssets::SceneAssets(SceneModel* model) : model_(model)
+{
+  model->setValidator("mesh", [this](const std::string& text, const std::string&)
+                      { surface(text, model_->text("tangents")); });
+  model->setValidator("tangents", [this](const std::string& text, const std::string&)
+                      { surface(model_->text("mesh"), text); });
+  model->setValidator("env",
+                      [this](const std::string& text, const std::string&) { environment(text); });
+  for (const char* key : {"normal-map", "quaternion-map", "tpr", "height-map", "albedo-map",
+                          "ao-map", "metallic-map"})
+  {
+    model->setValidator(key, [this, key](const std::string& text, const std::string&)
+                        { map(key, text); });
+  }
+}
+
+std::shared_ptr<const SceneAssets::Surface> SceneAssets::surfaceEntry(const std::string& mesh,
+                                                                      const std::string& tangents)
+{
+  return surfaces_.get(mesh + "\n" + tangents,
+                       [&]
+                       {
+                         const std::shared_ptr<LoadedMesh> loaded =
+                             meshes_.get(mesh,
+                                         [&]
+                                         {
+                                           if (mesh.rfind(kBuiltinPrefix, 0) == 0)
+                                           {
+                                             return std::make_shared<LoadedMesh>(makeBuiltinMesh(
+                                                 parseBuiltinMesh(mesh.substr(8), "mesh")));
+                                           }
+                                           return std::make_shared<LoadedMesh>(loadMesh(mesh));
+                                         });
+                         auto entry = std::make_shared<Surface>();
+                         entry->prepared =
+                             prepareSurface(loaded->polyData, surfaceOptions(tangents), mesh);
+                         entry->notes = loaded->report.notes();
+                         for (const std::string& note : entry->prepared.report.notes())
+                         {
+                           entry->notes.push_back(note);
+                         }
+                         return std::shared_ptr<const Surface>(std::move(entry));
+                       });
+}
+
+std::shared_ptr<const PreparedSurface> SceneAssets::surface(const std::string& mesh,
+                                                            const std::string& tangents)
+{
+  std::shared_ptr<const Surface> entry = surfaceEntry(mesh, tangents);
+  return std::shared_ptr<const PreparedSurface>(entry, &entry->prepared);
+}
+
+std::vector<std::string> SceneAssets::surfaceNotes(const std::string& mesh,
+                                                   const std::string& tangents)
+{
+  return surfaceEntry(mesh, tangents)->notes;
+}
+
+std::shared_ptr<const Environment> SceneAssets::environment(const std::string& spec)
+{
+  return environments_.get(spec, [&]
+                           { return std::shared_ptr<const Environment>(openEnvironment(spec)); });
+}
+
+const SceneAssets::LoadedImage& SceneAssets::rawImage(const std::string& path)
+{
+  return images_.get(path,
+                     [&]
+                     {
+                       LoadedImage loaded;
+                       loaded.image = std::make_shared<const Image>(readImage(path, &loaded.info));
+                       return loaded;
+                     });
+}
+
+std::shared_ptr<const Image> SceneAssets::map(const std::string& key, const std::string& text)
+{
+  if (text.empty())
+  {
+    return nullptr;
+  }
+  if (key == "tpr")
+  {
+    return maps_.get("tpr\n" + text,
+                     [&]
+                     {
+                       std::error_code ec;
+                       if (!std::filesystem::exists(text, ec))
+                       {
+                         // Not a file: a pattern (its error names the text when it is neither).
+                         return std::make_shared<const Image>(
+                             bakeTprMap(parseTprPattern(text), kTprBakeSide, kTprBakeSide));
+                       }
+                       const LoadedImage& raw = rawImage(text);
+                       return std::make_shared<const Image>(
+                           raw.image->channels == 1
+                               ? tprFromAngleImage(*raw.image)
+                               : decodedSigned(*raw.image, raw.info.integerFormat));
+                     });
+  }
+  if (key == "normal-map" || key == "quaternion-map")
+  {
+    return maps_.get(key + "\n" + text,
+                     [&]
+                     {
+                       const LoadedImage& raw = rawImage(text);
+                       return std::make_shared<const Image>(
+                           decodedSigned(*raw.image, raw.info.integerFormat));
+                     });
+  }
+  return rawImage(text).image;
+}
+
+void SceneAssets::addMaps(const SceneModel& model, MaterialSettings& settings)
+{
+  const std::string& bump = model.text("bump");
+  const std::string& normals = model.text("normal-map");
+  const std::string& quaternions = model.text("quaternion-map");
+  settings.normalMap = nullptr;
+  settings.quaternionMap = nullptr;
+  if (bump == "normal")
+  {
+    settings.normalMap = map("normal-map", normals);
+  }
+  else if (bump == "quaternion" && !quaternions.empty())
+  {
+    settings.quaternionMap = map("quaternion-map", quaternions);
+  }
+  else if (bump == "quaternion" && !normals.empty())
+  {
+    settings.quaternionMap = maps_.get("baked-quaternion\n" + normals,
+                                       [&]
+                                       {
+                                         const LoadedImage& raw = rawImage(normals);
+                                         return std::make_shared<const Image>(bakeQuaternionMap(
+                                             *raw.image, raw.info.integerFormat, nullptr));
+                                       });
+  }
+  settings.tprMap = map("tpr", model.text("tpr"));
+  settings.heightMap = map("height-map", model.text("height-map"));
+  settings.albedoMap = map("albedo-map", model.text("albedo-map"));
+  settings.occlusionMap = map("ao-map", model.text("ao-map"));
+  settings.metallicMap = map("metallic-map", model.text("metallic-map"));
+}
+} // namespace aniso

@@ -1,0 +1,94 @@
+#pragma once
+// Loads what the scene's texts name (meshes, environments, maps), keeps the last few of each,
+// and checks them for the model: installed as the model's validators, so a mesh, image or
+// environment that does not load is refused before the scene changes, with its file's name.
+#include "MaterialSettings.h"
+#include "MeshLoader.h"
+#include "SceneModel.h"
+#include "SurfacePreparation.h"
+#include "env/environment.h"
+#include "image/image.h"
+
+#include <list>
+#include <memory>
+#include <string>
+#include <utility>
+
+namespace aniso
+{
+// A few recently used values by key; the oldest goes first.
+template <class T>
+class RecentCache
+{
+public:
+  explicit RecentCache(std::size_t capacity) : capacity_(capacity) {}
+
+  template <class Make>
+  const T& get(const std::string& key, Make make)
+  {
+    for (auto it = items_.begin(); it != items_.end(); ++it)
+    {
+      if (it->first == key)
+      {
+        items_.splice(items_.begin(), items_, it);
+        return items_.front().second;
+      }
+    }
+    T value = make(); // may throw: nothing is stored then
+    items_.emplace_front(key, std::move(value));
+    if (items_.size() > capacity_)
+    {
+      items_.pop_back();
+    }
+    return items_.front().second;
+  }
+
+private:
+  std::size_t capacity_;
+  std::list<std::pair<std::string, T>> items_;
+};
+
+class SceneAssets
+{
+public:
+  // Installs the validators of mesh, tangents, env and the map keys on MODEL.
+  explicit SceneAssets(SceneModel* model);
+
+  // The prepared surface of a mesh text (a path or builtin:NAME) with a tangent model text
+  // ("auto" or BrushingModel.h's syntax). Throws aniso::Error "SUBJECT: reason".
+  std::shared_ptr<const PreparedSurface> surface(const std::string& mesh,
+                                                 const std::string& tangents);
+  // What loading and preparing that surface had to say (dropped faces, computed normals...).
+  std::vector<std::string> surfaceNotes(const std::string& mesh, const std::string& tangents);
+  std::shared_ptr<const Environment> environment(const std::string& spec);
+  // The maps the model's values ask for, as the material takes them (bump none: no normal or
+  // quaternion map; quaternion: the quaternion map, else baked from the normal map).
+  // Throws aniso::Error "PATH: reason".
+  void addMaps(const SceneModel& model, MaterialSettings& settings);
+
+  // Map loading by key, as addMaps does it (normal-map and quaternion-map decoded to signed
+  // vectors, tpr from a pattern or a file).
+  std::shared_ptr<const Image> map(const std::string& key, const std::string& text);
+
+private:
+  struct Surface
+  {
+    PreparedSurface prepared;
+    std::vector<std::string> notes; // the mesh report's, then the preparation's
+  };
+  std::shared_ptr<const Surface> surfaceEntry(const std::string& mesh, const std::string& tangents);
+  struct LoadedImage
+  {
+    std::shared_ptr<const Image> image;
+    ImageInfo info;
+  };
+  const LoadedImage& rawImage(const std::string& path);
+
+  SceneModel* model_;
+  RecentCache<std::shared_ptr<LoadedMesh>> meshes_{3};
+  RecentCache<std::shared_ptr<const Surface>> surfaces_{3};
+  RecentCache<std::shared_ptr<const Environment>> environments_{3};
+  RecentCache<LoadedImage> images_{8};
+  RecentCache<std::shared_ptr<const Image>> maps_{8};
+};
+} // namespace aniso

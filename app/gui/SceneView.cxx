@@ -1,0 +1,451 @@
+#include "SceneView.h"
+
+#include "AnisoMaterial.h"
+#include "EnvironmentLighting.h"
+#include "LutScheduler.h"
+#include "SceneAssets.h"
+#include "ViewSettings.h"
+#include "error.h"
+#include "vtkAnisoAccumulationPass.h"
+
+#include <QTimer>
+#include <algorithm>
+#include <cmath>
+#include <glm/geometric.hpp>
+#include <vtkActor.h>
+#include <vtkCallbackCommand.h>
+#include <vtkCamera.h>
+#include <vtkCommand.h>
+#include <vtkInteractorObserver.h>
+#include <vtkOpenGLPolyDataMapper.h>
+#include <vtkOpenGLRenderer.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+#include <vtkRenderStepsPass.h>
+#include <vtkRenderWindow.h>
+#include <vtkRenderWindowInteractor.h>
+
+namespace aniso
+{
+namespace
+{
+bool isMaterialKey(const std::string& key)
+{
+  static const char* const keys[] = {
+      "nu",         "nv",           "f0",         "albedo",         "samples",
+      "lut-size",   "lut-samples",  "method",     "filtered",       "half-vectors",
+      "bump",       "height-scale", "normal-map", "quaternion-map", "tpr",
+      "height-map", "albedo-map",   "ao-map",     "metallic-map"};
+  return std::find(std::begin(keys), std::end(keys), key) != std::end(keys);
+}
+
+bool isDisplayKey(const std::string& key)
+{
+  return key == "exposure" || key == "tone-mapping" || key == "background" ||
+         key == "background-color";
+}
+
+bool needsLuts(const MaterialSettings& s)
+{
+  return s.method == SpecularMethod::SplitSum || s.halfVectors == HalfVectorSource::Lut;
+}
+
+// Default view: a three-quarter view from the front, slightly above (Z up).
+glm::dvec3 defaultViewDirection()
+{
+  return viewDirectionFromAngles(-35.0, 25.0);
+}
+} // namespace
+
+SceneView::SceneView(SceneModel* model, SceneAssets* assets, LutScheduler* luts,
+                     vtkRenderWindow* window, QObject* parent)
+    : QObject(parent), model_(model), assets_(assets), luts_(luts), window_(window),
+      settle_(new QTimer(this)), frame_(new QTimer(this))
+{
+  mapper_->ScalarVisibilityOff();
+  actor_->SetMapper(mapper_);
+  renderer_->AddActor(actor_);
+  pass_->SetDelegatePass(steps_);
+  renderer_->SetPass(pass_);
+  window_->AddRenderer(renderer_);
+
+  settle_->setSingleShot(true);
+  settle_->setInterval(kDefaultSettleMs);
+  connect(settle_, &QTimer::timeout, this, &SceneView::settle);
+  frame_->setSingleShot(true);
+  frame_->setInterval(0);
+  connect(frame_, &QTimer::timeout, this, &SceneView::renderNow);
+
+  // Camera interaction (rotate, zoom, pan): cheap frames while it lasts.
+  interactionObserver_->SetClientData(this);
+  interactionObserver_->SetCallback(
+      [](vtkObject*, unsigned long event, void* self, void*)
+      {
+        auto* view = static_cast<SceneView*>(self);
+        if (event == vtkCommand::StartInteractionEvent)
+        {
+          view->beginInteraction();
+        }
+        else if (event == vtkCommand::InteractionEvent)
+        {
+          view->cameraMoved_ = true;
+          view->settle_->start();
+        }
+        else if (event == vtkCommand::EndInteractionEvent)
+        {
+          view->settle_->start();
+        }
+      });
+  if (vtkRenderWindowInteractor* interactor = window_->GetInteractor())
+  {
+    if (vtkInteractorObserver* style = interactor->GetInteractorStyle())
+    {
+      for (unsigned long event : {vtkCommand::StartInteractionEvent, vtkCommand::InteractionEvent,
+                                  vtkCommand::EndInteractionEvent})
+      {
+        style->AddObserver(event, interactionObserver_);
+      }
+    }
+  }
+
+  connect(model_, &SceneModel::valueChanged, this, &SceneView::modelChanged);
+  connect(model_, &SceneModel::cameraChanged, this, &SceneView::applyCameraFromModel);
+  connect(luts_, &LutScheduler::lutsReady, this, [this] { applyMaterial(); });
+
+  applyLighting();
+  applySurface();
+  applyDisplay();
+  material_ = std::make_unique<AnisoMaterial>(lighting_);
+  applyMaterial();
+  material_->apply(actor_, renderer_);
+  luts_->requestNow();
+  requestRender();
+}
+
+SceneView::~SceneView()
+{
+  if (vtkRenderWindowInteractor* interactor = window_->GetInteractor())
+  {
+    if (vtkInteractorObserver* style = interactor->GetInteractorStyle())
+    {
+      style->RemoveObserver(interactionObserver_);
+    }
+  }
+  material_.reset();
+  window_->RemoveRenderer(renderer_);
+}
+
+vtkOpenGLRenderer* SceneView::renderer() const
+{
+  return renderer_;
+}
+
+void SceneView::setSettleMs(int ms)
+{
+  settle_->setInterval(ms);
+}
+
+void SceneView::modelChanged(const QString& qkey)
+{
+  const std::string key = qkey.toStdString();
+  try
+  {
+    if (key == "mesh" || key == "tangents")
+    {
+      applySurface();
+    }
+    else if (key == "env" || key == "cube-size")
+    {
+      applyLighting();
+      material_->setLighting(lighting_);
+    }
+    else if (key == "env-rotation")
+    {
+      lighting_->setRotationDegrees(model_->real("env-rotation"));
+    }
+    else if (isDisplayKey(key))
+    {
+      // Exposure and tone mapping apply to the accumulated image: no new frames needed.
+      applyDisplay();
+    }
+    if (!isDisplayKey(key) && key != "target-samples")
+    {
+      beginInteraction();
+    }
+    if (isMaterialKey(key) || key == "target-samples")
+    {
+      applyMaterial();
+    }
+  }
+  catch (const Error& e)
+  {
+    emit errorOccurred(QString::fromStdString(e.what()));
+  }
+  requestRender();
+}
+
+void SceneView::applySurface()
+{
+  const std::string& mesh = model_->text("mesh");
+  const std::string& tangents = model_->text("tangents");
+  const std::shared_ptr<const PreparedSurface> surface = assets_->surface(mesh, tangents);
+  vtkPolyData* polyData = surface->polyData;
+  mapper_->SetInputData(polyData);
+  double bounds[6];
+  polyData->GetBounds(bounds);
+  double r2 = 0.0;
+  for (int i = 0; i < 3; ++i)
+  {
+    surfaceCentre_[i] = 0.5 * (bounds[2 * i] + bounds[2 * i + 1]);
+  }
+  vtkPoints* points = polyData->GetPoints();
+  for (vtkIdType i = 0; i < points->GetNumberOfPoints(); ++i)
+  {
+    double p[3];
+    points->GetPoint(i, p);
+    const double d[3] = {p[0] - surfaceCentre_[0], p[1] - surfaceCentre_[1],
+                         p[2] - surfaceCentre_[2]};
+    r2 = std::max(r2, d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+  }
+  surfaceRadius_ = std::max(std::sqrt(r2), 1e-12);
+  for (const std::string& note : assets_->surfaceNotes(mesh, tangents))
+  {
+    emit noteAdded(QString::fromStdString(note));
+  }
+  if (model_->camera().set)
+  {
+    applyCameraFromModel();
+  }
+  else
+  {
+    resetCamera();
+  }
+}
+
+void SceneView::applyLighting()
+{
+  lighting_ = std::make_shared<EnvironmentLighting>(assets_->environment(model_->text("env")),
+                                                    model_->integer("cube-size"));
+  lighting_->setRotationDegrees(model_->real("env-rotation"));
+  pass_->SetLighting(lighting_);
+}
+
+void SceneView::applyMaterial()
+{
+  if (!material_)
+  {
+    return;
+  }
+  MaterialSettings wanted = materialFromParameters(model_->parameters(), full_);
+  assets_->addMaps(*model_, wanted);
+  // Tables the variant reads must be baked already (by the scheduler, off the UI thread).
+  // Until they are, a variant that needs none stays as it was, or a variant that needs them
+  // keeps the exponents whose tables it has.
+  const LutResult& ready = luts_->current();
+  const bool baked = ready.halfVector && ready.request.lobe.nu == wanted.lobe.nu &&
+                     ready.request.lobe.nv == wanted.lobe.nv &&
+                     ready.request.size == wanted.lutSize &&
+                     ready.request.samples == wanted.brdfLutSamples;
+  if (needsLuts(wanted) && !baked)
+  {
+    if (needsLuts(full_))
+    {
+      wanted.lobe = full_.lobe;
+      wanted.lutSize = full_.lutSize;
+      wanted.brdfLutSamples = full_.brdfLutSamples;
+    }
+    else
+    {
+      wanted.method = full_.method;
+      wanted.halfVectors = full_.halfVectors;
+    }
+  }
+  full_ = wanted;
+  MaterialSettings shown = full_;
+  if (interacting_)
+  {
+    shown.samples = std::min(shown.samples, kInteractiveSamples);
+  }
+  material_->setSettings(shown);
+  const int frames =
+      interacting_ ? 1 : (model_->integer("target-samples") + shown.samples - 1) / shown.samples;
+  pass_->SetTargetFrames(std::max(frames, 1));
+  if (material_->mapsDropped())
+  {
+    emit noteAdded(tr("The mesh has no texture coordinates: its maps are not used."));
+  }
+}
+
+void SceneView::applyDisplay()
+{
+  pass_->SetDisplaySettings(displayFromParameters(model_->parameters()));
+}
+
+void SceneView::applyCameraFromModel()
+{
+  const CameraState& c = model_->camera();
+  if (!c.set || applyingCamera_)
+  {
+    if (!c.set && !applyingCamera_)
+    {
+      resetCamera();
+    }
+    return;
+  }
+  vtkCamera* camera = renderer_->GetActiveCamera();
+  camera->SetPosition(c.position.data());
+  camera->SetFocalPoint(c.focalPoint.data());
+  camera->SetViewUp(c.viewUp.data());
+  camera->SetViewAngle(c.viewAngle);
+  camera->SetParallelProjection(c.parallel);
+  camera->SetParallelScale(c.parallelScale);
+  renderer_->ResetCameraClippingRange();
+  requestRender();
+}
+
+void SceneView::resetCamera()
+{
+  ViewSettings view;
+  view.direction = defaultViewDirection();
+  // placeCamera fits the object's height; a window narrower than high needs more room.
+  const int* size = window_->GetSize();
+  if (size[0] > 0 && size[1] > 0 && size[0] < size[1])
+  {
+    view.margin *= static_cast<double>(size[1]) / size[0];
+  }
+  const CameraPlacement p =
+      placeCamera(view, {surfaceCentre_[0], surfaceCentre_[1], surfaceCentre_[2]}, surfaceRadius_);
+  vtkCamera* camera = renderer_->GetActiveCamera();
+  camera->SetFocalPoint(p.focalPoint.x, p.focalPoint.y, p.focalPoint.z);
+  camera->SetPosition(p.position.x, p.position.y, p.position.z);
+  camera->SetViewUp(p.viewUp.x, p.viewUp.y, p.viewUp.z);
+  camera->SetViewAngle(p.viewAngleDegrees);
+  camera->SetParallelScale(p.parallelScale);
+  camera->SetParallelProjection(p.parallel);
+  renderer_->ResetCameraClippingRange();
+  applyingCamera_ = true;
+  model_->setCamera(CameraState{});
+  applyingCamera_ = false;
+  requestRender();
+}
+
+CameraState SceneView::currentCamera() const
+{
+  vtkCamera* camera = renderer_->GetActiveCamera();
+  CameraState c;
+  c.set = true;
+  camera->GetPosition(c.position.data());
+  camera->GetFocalPoint(c.focalPoint.data());
+  camera->GetViewUp(c.viewUp.data());
+  c.viewAngle = camera->GetViewAngle();
+  c.parallel = camera->GetParallelProjection() != 0;
+  c.parallelScale = camera->GetParallelScale();
+  return c;
+}
+
+RenderSettings SceneView::renderSettings(int width, int height) const
+{
+  RenderSettings s;
+  s.surface = mapper_->GetInput();
+  s.environment = assets_->environment(model_->text("env"));
+  s.cubeSize = model_->integer("cube-size");
+  s.environmentRotationDegrees = model_->real("env-rotation");
+  s.material = full_;
+  s.display = displayFromParameters(model_->parameters());
+  const CameraState c = currentCamera();
+  CameraPlacement p;
+  p.position = {c.position[0], c.position[1], c.position[2]};
+  p.focalPoint = {c.focalPoint[0], c.focalPoint[1], c.focalPoint[2]};
+  p.viewUp = {c.viewUp[0], c.viewUp[1], c.viewUp[2]};
+  p.viewAngleDegrees = c.viewAngle;
+  p.parallel = c.parallel;
+  p.parallelScale = c.parallelScale;
+  s.camera = p;
+  s.width = width;
+  s.height = height;
+  s.frames = std::max(1, (model_->integer("target-samples") + full_.samples - 1) / full_.samples);
+  return s;
+}
+
+int SceneView::accumulatedSamples() const
+{
+  const int samples = interacting_ ? std::min(full_.samples, kInteractiveSamples) : full_.samples;
+  return pass_->GetAccumulatedFrames() * samples;
+}
+
+int SceneView::targetSamples() const
+{
+  return model_->integer("target-samples");
+}
+
+bool SceneView::converged() const
+{
+  return !interacting_ && pass_->IsConverged();
+}
+
+void SceneView::requestRender()
+{
+  if (!frame_->isActive())
+  {
+    frame_->start();
+  }
+}
+
+void SceneView::renderNow()
+{
+  window_->Render();
+  emit frameRendered(accumulatedSamples(), targetSamples());
+  // Progressive refinement: one more frame once pending events are handled, so the window
+  // stays responsive between frames.
+  if (!interacting_ && !pass_->IsConverged())
+  {
+    requestRender();
+  }
+}
+
+void SceneView::beginInteraction()
+{
+  settle_->start();
+  if (!interacting_)
+  {
+    interacting_ = true;
+    try
+    {
+      applyMaterial();
+    }
+    catch (const Error& e)
+    {
+      emit errorOccurred(QString::fromStdString(e.what()));
+    }
+  }
+}
+
+void SceneView::settle()
+{
+  interacting_ = false;
+  if (cameraMoved_)
+  {
+    // The camera the user left is part of the scene (sessions save it).
+    cameraMoved_ = false;
+    applyingCamera_ = true;
+    try
+    {
+      model_->setCamera(currentCamera());
+    }
+    catch (const Error&)
+    {
+      // A degenerate camera (zoomed onto its focal point) is simply not recorded.
+    }
+    applyingCamera_ = false;
+  }
+  try
+  {
+    applyMaterial();
+  }
+  catch (const Error& e)
+  {
+    emit errorOccurred(QString::fromStdString(e.what()));
+  }
+  requestRender();
+}
+} // namespace aniso

@@ -1,0 +1,217 @@
+#include "run_gui.h"
+
+#include "LutScheduler.h"
+#include "MainWindow.h"
+#include "SceneView.h"
+#include "cli.h"
+#include "error.h"
+
+#include <QApplication>
+#include <QSurfaceFormat>
+#include <QTimer>
+#include <QVTKOpenGLNativeWidget.h>
+#include <cstdlib>
+#include <filesystem>
+#include <iostream>
+#include <memory>
+
+namespace aniso::gui
+{
+namespace
+{
+struct GuiArguments
+{
+  std::string mesh;
+  std::string session;
+  std::string screenshot;
+  std::string windowScreenshot;
+  bool quit = false;
+};
+
+bool isWindowOption(const std::string& arg)
+{
+  return arg == "--session" || arg == "--screenshot" || arg == "--window-screenshot" ||
+         arg == "--quit";
+}
+
+GuiArguments parse(const std::vector<std::string>& args)
+{
+  GuiArguments a;
+  for (std::size_t i = 0; i < args.size(); ++i)
+  {
+    const std::string& arg = args[i];
+    const auto value = [&]() -> std::string
+    {
+      if (i + 1 >= args.size())
+      {
+        throw cli::usageError(arg, "missing value");
+      }
+      return args[++i];
+    };
+    if (arg == "--session")
+    {
+      a.session = value();
+    }
+    else if (arg == "--screenshot")
+    {
+      a.screenshot = value();
+    }
+    else if (arg == "--window-screenshot")
+    {
+      a.windowScreenshot = value();
+    }
+    else if (arg == "--quit")
+    {
+      a.quit = true;
+    }
+    else if (!arg.empty() && arg[0] == '-')
+    {
+      throw cli::usageError(arg, "unknown option (see aniso --help)");
+    }
+    else if (a.mesh.empty())
+    {
+      a.mesh = arg;
+    }
+    else
+    {
+      throw cli::usageError(arg, "only one MESH can be opened");
+    }
+  }
+  if (a.quit && a.screenshot.empty() && a.windowScreenshot.empty())
+  {
+    throw cli::usageError("--quit", "only applies with --screenshot or --window-screenshot");
+  }
+  return a;
+}
+
+// Qt aborts the process when it cannot reach a display: say it in words instead.
+void requireDisplay()
+{
+  const char* platform = std::getenv("QT_QPA_PLATFORM");
+  const char* display = std::getenv("DISPLAY");
+  const char* wayland = std::getenv("WAYLAND_DISPLAY");
+  if ((!platform || !*platform) && (!display || !*display) && (!wayland || !*wayland))
+  {
+    throw errorAbout("aniso", "no display to open the window on (DISPLAY is not set); use "
+                              "'aniso render' for images without one, or run under xvfb-run");
+  }
+}
+} // namespace
+
+bool isGuiCommandLine(const std::vector<std::string>& args)
+{
+  if (args.empty() || isWindowOption(args[0]))
+  {
+    return true;
+  }
+  const std::string& first = args[0];
+  if (first.rfind("builtin:", 0) == 0)
+  {
+    return true;
+  }
+  std::error_code ec;
+  return first[0] != '-' && std::filesystem::is_regular_file(first, ec);
+}
+
+std::string guiUsage()
+{
+  return "aniso [MESH] [--session FILE] [--screenshot FILE [--quit]]";
+}
+
+int runGui(const std::vector<std::string>& args)
+{
+  const GuiArguments a = parse(args);
+  requireDisplay();
+  // The VTK widget needs its OpenGL format before the application exists.
+  QSurfaceFormat::setDefaultFormat(QVTKOpenGLNativeWidget::defaultFormat());
+  static int argc = 1;
+  static char name[] = "aniso";
+  static char* argv[] = {name, nullptr};
+  QApplication app(argc, argv);
+  QApplication::setOrganizationName("aniso");
+  QApplication::setApplicationName("aniso");
+
+  MainWindow window;
+  const bool scripted = !a.screenshot.empty() || !a.windowScreenshot.empty();
+  window.setErrorDialogs(!scripted);
+  std::string failure;
+  QObject::connect(&window, &MainWindow::errorReported,
+                   [&](const QString& message)
+                   {
+                     if (scripted && failure.empty())
+                     {
+                       failure = message.toStdString();
+                     }
+                   });
+  window.show();
+  if (!a.mesh.empty() && !window.openMesh(QString::fromStdString(a.mesh)) && scripted)
+  {
+    throw Error(failure);
+  }
+  if (!a.session.empty() && !window.openSession(QString::fromStdString(a.session)) && scripted)
+  {
+    throw Error(failure);
+  }
+
+  int code = 0;
+  if (!a.screenshot.empty())
+  {
+    QTimer::singleShot(0, &window,
+                       [&]
+                       {
+                         try
+                         {
+                           window.exportScreenshot(QString::fromStdString(a.screenshot),
+                                                   ScreenshotOptions{});
+                           std::cout << "aniso: wrote " << a.screenshot << "\n";
+                         }
+                         catch (const Error& e)
+                         {
+                           std::cerr << "aniso: " << e.what() << "\n";
+                           code = 1;
+                         }
+                         if (a.quit && a.windowScreenshot.empty())
+                         {
+                           QApplication::exit(code);
+                         }
+                       });
+  }
+  if (!a.windowScreenshot.empty())
+  {
+    // The whole window, once the view has refined to its quality.
+    auto grabbed = std::make_shared<bool>(false);
+    QObject::connect(window.view(), &SceneView::frameRendered, &window,
+                     [&, grabbed]
+                     {
+                       if (*grabbed || !window.view()->converged() || window.lutScheduler()->busy())
+                       {
+                         return;
+                       }
+                       *grabbed = true;
+                       // Let the status bar and docks lay themselves out with the final texts
+                       // first.
+                       QTimer::singleShot(
+                           300, &window,
+                           [&]
+                           {
+                             const QString path = QString::fromStdString(a.windowScreenshot);
+                             if (window.grab().save(path))
+                             {
+                               std::cout << "aniso: wrote " << a.windowScreenshot << "\n";
+                             }
+                             else
+                             {
+                               std::cerr << "aniso: " << a.windowScreenshot << ": cannot write\n";
+                               code = 1;
+                             }
+                             if (a.quit)
+                             {
+                               QApplication::exit(code);
+                             }
+                           });
+                     });
+  }
+  const int result = QApplication::exec();
+  return code ? code : result;
+}
+} // namespace aniso::gui
