@@ -17,6 +17,7 @@ namespace aniso
 namespace
 {
 constexpr double kPi = 3.14159265358979323846;
+constexpr std::size_t kLanes = 4;
 
 void checkRange(const char* name, int value, int low, int high)
 {
@@ -76,37 +77,67 @@ void forEachRow(int rows, int threads, double workPerRow, const RowFn& rowFn)
   }
 }
 
-// The N half vectors of a bake: they depend on the lobe only, not on the view.
-std::vector<glm::dvec3> halfVectorSamples(const AsLobe& lobe, int samples)
+// The N half vectors of a bake, by component: they depend on the lobe only, not on the view.
+struct HalfVectorSet
 {
-  std::vector<glm::dvec3> h(static_cast<std::size_t>(samples));
+  std::vector<double> x, y, z;
+};
+
+HalfVectorSet halfVectorSamples(const AsLobe& lobe, int samples)
+{
+  HalfVectorSet set;
   const auto n = static_cast<uint32_t>(samples);
+  // Padded to whole lanes with h = 0, which has v.h = 0 for every view and adds 0.
+  const std::size_t padded = (std::size_t(n) + kLanes - 1) / kLanes * kLanes;
+  set.x.assign(padded, 0.0);
+  set.y.assign(padded, 0.0);
+  set.z.assign(padded, 0.0);
   for (uint32_t k = 0; k < n; ++k)
   {
-    h[k] = sampleHalfVector(lobe, hammersley(k, n));
+    const glm::dvec3 h = sampleHalfVector(lobe, hammersley(k, n));
+    set.x[k] = h.x;
+    set.y[k] = h.y;
+    set.z[k] = h.z;
   }
-  return h;
+  return set;
 }
 
-// sizeBiasAt over precomputed half vectors. Branch-free body so that the loop vectorises.
-glm::dvec2 sizeBiasOver(const std::vector<glm::dvec3>& halfVectors, const glm::dvec3& v)
+// sizeBiasAt over precomputed half vectors: kLanes partial sums in a fixed order (so the
+// compiler can use SIMD without reassociating, and the result never depends on the machine
+// schedule), branch-free body.
+glm::dvec2 sizeBiasOver(const HalfVectorSet& h, int samples, const glm::dvec3& v)
 {
-  double s = 0.0;
-  double b = 0.0;
-  for (const glm::dvec3& h : halfVectors)
+  double s[kLanes] = {};
+  double b[kLanes] = {};
+  const std::size_t count = h.x.size();
+  for (std::size_t k = 0; k < count; k += kLanes)
   {
-    const double vh = v.x * h.x + v.y * h.y + v.z * h.z;
-    const double nl = 2.0 * vh * h.z - v.z;
-    const bool valid = vh > 0.0 && nl > 0.0;
-    const double weight = valid ? nl / std::max(v.z, nl) : 0.0;
-    const double m = 1.0 - std::min(std::max(vh, 0.0), 1.0);
-    const double m2 = m * m;
-    const double chi = m2 * m2 * m;
-    s += weight * (1.0 - chi);
-    b += weight * chi;
+    for (std::size_t lane = 0; lane < kLanes; ++lane)
+    {
+      const double hx = h.x[k + lane];
+      const double hy = h.y[k + lane];
+      const double hz = h.z[k + lane];
+      const double vh = v.x * hx + v.y * hy + v.z * hz;
+      const double nl = 2.0 * vh * hz - v.z;
+      // n.l / max(n.v, n.l) where n.l > 0 and v.h > 0, else 0 (the floor only avoids 0/0).
+      const double lit = vh > 0.0 ? std::max(nl, 0.0) : 0.0;
+      const double weight = lit / std::max(std::max(v.z, lit), 1e-300);
+      const double m = 1.0 - std::min(std::max(vh, 0.0), 1.0);
+      const double m2 = m * m;
+      const double chi = m2 * m2 * m;
+      s[lane] += weight * (1.0 - chi);
+      b[lane] += weight * chi;
+    }
   }
-  const double inv = 1.0 / static_cast<double>(halfVectors.size());
-  return {s * inv, b * inv};
+  double sumS = 0.0;
+  double sumB = 0.0;
+  for (std::size_t lane = 0; lane < kLanes; ++lane)
+  {
+    sumS += s[lane];
+    sumB += b[lane];
+  }
+  const double inv = 1.0 / static_cast<double>(samples);
+  return {sumS * inv, sumB * inv};
 }
 } // namespace
 
@@ -137,7 +168,11 @@ glm::dvec2 sizeBiasAt(const AsLobe& lobe, const glm::dvec3& view, int samples)
 {
   validateLobe(lobe);
   checkRange("samples", samples, 1, kMaxLutSamples);
-  return sizeBiasOver(halfVectorSamples(lobe, samples), view);
+  if (!(view.z >= 0.0))
+  {
+    return {0.0, 0.0}; // no reflection towards a view below the horizon
+  }
+  return sizeBiasOver(halfVectorSamples(lobe, samples), samples, view);
 }
 
 HalfVectorLut bakeHalfVectorLut(const AsLobe& lobe, int size, int threads)
@@ -174,7 +209,7 @@ BrdfLut bakeBrdfLut(const AsLobe& lobe, int size, int samples, int threads)
   lut.samples = samples;
   lut.lobe = lobe;
   lut.rg.resize(std::size_t(size) * size * 2);
-  const std::vector<glm::dvec3> halfVectors = halfVectorSamples(lobe, samples);
+  const HalfVectorSet halfVectors = halfVectorSamples(lobe, samples);
   const double inv = 1.0 / size;
   forEachRow(size, threads, double(size) * samples,
              [&](int j)
@@ -183,7 +218,7 @@ BrdfLut bakeBrdfLut(const AsLobe& lobe, int size, int samples, int threads)
                for (int i = 0; i < size; ++i)
                {
                  const glm::dvec3 view = brdfLutView({(i + 0.5) * inv, (j + 0.5) * inv});
-                 const glm::dvec2 sb = sizeBiasOver(halfVectors, view);
+                 const glm::dvec2 sb = sizeBiasOver(halfVectors, samples, view);
                  row[2 * i + 0] = static_cast<float>(sb.x);
                  row[2 * i + 1] = static_cast<float>(sb.y);
                }

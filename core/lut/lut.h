@@ -44,6 +44,7 @@ glm::dvec3 brdfLutView(const glm::dvec2& uv);
 // s and b for one view by N importance samples (Hammersley): the definition the LUT bakes.
 // s = sum (n.l)(1 - chi) / max(n.v, n.l) / N, b = sum (n.l) chi / max(n.v, n.l) / N with
 // chi = (1 - v.h)^5, l = 2 (v.h) h - v; samples with n.l <= 0 or v.h <= 0 contribute 0.
+// A view below the horizon (n.v < 0) gives (0, 0).
 glm::dvec2 sizeBiasAt(const AsLobe& lobe, const glm::dvec3& view, int samples);
 
 // threads: 0 uses every hardware thread; the result does not depend on it (every texel is
