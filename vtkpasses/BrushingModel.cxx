@@ -1,5 +1,6 @@
 #include "BrushingModel.h"
 
+#include "GeometryAccess.h"
 #include "error.h"
 #include "frame.h"
 
@@ -9,7 +10,6 @@
 #include <sstream>
 #include <vector>
 #include <vtkCellArray.h>
-#include <vtkCellArrayIterator.h>
 #include <vtkDataArray.h>
 #include <vtkFloatArray.h>
 #include <vtkNew.h>
@@ -81,18 +81,11 @@ std::string formatTriple(const glm::dvec3& v)
   return out.str();
 }
 
-glm::dvec3 tupleAt(vtkDataArray* array, vtkIdType id)
-{
-  double v[3] = {0.0, 0.0, 0.0};
-  array->GetTuple(id, v);
-  return {v[0], v[1], v[2]};
-}
+using geometry::tupleAt;
 
 glm::dvec3 pointAt(vtkPolyData* surface, vtkIdType id)
 {
-  double p[3];
-  surface->GetPoint(id, p);
-  return {p[0], p[1], p[2]};
+  return geometry::pointAt(surface->GetPoints(), id);
 }
 
 constexpr double kVanishingProjection = 1e-6; // relative to the direction's length
@@ -112,46 +105,44 @@ double cornerAngle(const glm::dvec3& at, const glm::dvec3& b, const glm::dvec3& 
 std::vector<glm::dvec3> accumulateUvTangents(vtkPolyData* surface, vtkDataArray* tcoords)
 {
   std::vector<glm::dvec3> sum(static_cast<size_t>(surface->GetNumberOfPoints()), glm::dvec3(0.0));
-  auto it = vtk::TakeSmartPointer(surface->GetPolys()->NewIterator());
-  for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell())
-  {
-    vtkIdType count = 0;
-    const vtkIdType* ids = nullptr;
-    it->GetCurrentCell(count, ids);
-    if (count != 3)
-    {
-      continue;
-    }
-    const glm::dvec3 p[3] = {pointAt(surface, ids[0]), pointAt(surface, ids[1]),
-                             pointAt(surface, ids[2])};
-    const glm::dvec3 e1 = p[1] - p[0];
-    const glm::dvec3 e2 = p[2] - p[0];
-    double uv0[2], uv1[2], uv2[2];
-    tcoords->GetTuple(ids[0], uv0);
-    tcoords->GetTuple(ids[1], uv1);
-    tcoords->GetTuple(ids[2], uv2);
-    const double du1 = uv1[0] - uv0[0];
-    const double dv1 = uv1[1] - uv0[1];
-    const double du2 = uv2[0] - uv0[0];
-    const double dv2 = uv2[1] - uv0[1];
-    const double det = du1 * dv2 - du2 * dv1;
-    if (det == 0.0)
-    {
-      continue; // the UV map collapses this triangle: it says nothing about dP/du
-    }
-    const glm::dvec3 dPdu = (e1 * dv2 - e2 * dv1) / det;
-    const double length = glm::length(dPdu);
-    if (!(length > 0.0) || !std::isfinite(length))
-    {
-      continue;
-    }
-    const glm::dvec3 direction = dPdu / length;
-    for (int k = 0; k < 3; ++k)
-    {
-      sum[static_cast<size_t>(ids[k])] +=
-          direction * cornerAngle(p[k], p[(k + 1) % 3], p[(k + 2) % 3]);
-    }
-  }
+  geometry::forEachCell(
+      surface->GetPolys(),
+      [&](vtkIdType count, const vtkIdType* ids)
+      {
+        if (count != 3)
+        {
+          return;
+        }
+        const glm::dvec3 p[3] = {pointAt(surface, ids[0]), pointAt(surface, ids[1]),
+                                 pointAt(surface, ids[2])};
+        const glm::dvec3 e1 = p[1] - p[0];
+        const glm::dvec3 e2 = p[2] - p[0];
+        double uv0[2], uv1[2], uv2[2];
+        tcoords->GetTuple(ids[0], uv0);
+        tcoords->GetTuple(ids[1], uv1);
+        tcoords->GetTuple(ids[2], uv2);
+        const double du1 = uv1[0] - uv0[0];
+        const double dv1 = uv1[1] - uv0[1];
+        const double du2 = uv2[0] - uv0[0];
+        const double dv2 = uv2[1] - uv0[1];
+        const double det = du1 * dv2 - du2 * dv1;
+        if (det == 0.0)
+        {
+          return; // the UV map collapses this triangle: it says nothing about dP/du
+        }
+        const glm::dvec3 dPdu = (e1 * dv2 - e2 * dv1) / det;
+        const double length = glm::length(dPdu);
+        if (!(length > 0.0) || !std::isfinite(length))
+        {
+          return;
+        }
+        const glm::dvec3 direction = dPdu / length;
+        for (int k = 0; k < 3; ++k)
+        {
+          sum[static_cast<size_t>(ids[k])] +=
+              direction * cornerAngle(p[k], p[(k + 1) % 3], p[(k + 2) % 3]);
+        }
+      });
   return sum;
 }
 } // namespace

@@ -1,15 +1,16 @@
 #include "MeshValidation.h"
 
+#include "GeometryAccess.h"
 #include "error.h"
 
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstring>
+#include <glm/geometric.hpp>
 #include <unordered_map>
 #include <utility>
 #include <vtkCellArray.h>
-#include <vtkCellArrayIterator.h>
 #include <vtkDataArray.h>
 #include <vtkFloatArray.h>
 #include <vtkIdList.h>
@@ -24,57 +25,36 @@ namespace aniso
 namespace
 {
 using Triangle = std::array<vtkIdType, 3>;
-using Vec3 = std::array<double, 3>;
-
-Vec3 sub(const Vec3& a, const Vec3& b)
-{
-  return {a[0] - b[0], a[1] - b[1], a[2] - b[2]};
-}
-Vec3 cross(const Vec3& a, const Vec3& b)
-{
-  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
-double dot(const Vec3& a, const Vec3& b)
-{
-  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
-
-Vec3 pointAt(vtkPoints* points, vtkIdType id)
-{
-  Vec3 p;
-  points->GetPoint(id, p.data());
-  return p;
-}
+using geometry::pointAt;
 
 // Twice the area below this fraction of the longest edge squared counts as zero: the triangle's
 // height is under 1e-10 of its length, so its normal is rounding noise.
 constexpr double kZeroAreaRatio = 1e-10;
 
-bool isZeroArea(const Vec3& a, const Vec3& b, const Vec3& c)
+bool isZeroArea(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c)
 {
-  const Vec3 e1 = sub(b, a);
-  const Vec3 e2 = sub(c, a);
-  const Vec3 e3 = sub(c, b);
-  const double longest2 = std::max({dot(e1, e1), dot(e2, e2), dot(e3, e3)});
-  const Vec3 n = cross(e1, e2);
-  return std::sqrt(dot(n, n)) <= kZeroAreaRatio * longest2;
+  const glm::dvec3 e1 = b - a;
+  const glm::dvec3 e2 = c - a;
+  const glm::dvec3 e3 = c - b;
+  const double longest2 = std::max({glm::dot(e1, e1), glm::dot(e2, e2), glm::dot(e3, e3)});
+  return glm::length(glm::cross(e1, e2)) <= kZeroAreaRatio * longest2;
 }
 
 // Splits a quad along the diagonal that keeps both halves facing the same way (the one inside a
 // concave quad), preferring the shorter diagonal when both do.
 void triangulateQuad(vtkPoints* points, const vtkIdType* ids, std::vector<Triangle>& out)
 {
-  const Vec3 p0 = pointAt(points, ids[0]);
-  const Vec3 p1 = pointAt(points, ids[1]);
-  const Vec3 p2 = pointAt(points, ids[2]);
-  const Vec3 p3 = pointAt(points, ids[3]);
+  const glm::dvec3 p0 = pointAt(points, ids[0]);
+  const glm::dvec3 p1 = pointAt(points, ids[1]);
+  const glm::dvec3 p2 = pointAt(points, ids[2]);
+  const glm::dvec3 p3 = pointAt(points, ids[3]);
   const bool diagonal02Valid =
-      dot(cross(sub(p1, p0), sub(p2, p0)), cross(sub(p2, p0), sub(p3, p0))) >= 0.0;
+      glm::dot(glm::cross(p1 - p0, p2 - p0), glm::cross(p2 - p0, p3 - p0)) >= 0.0;
   const bool diagonal13Valid =
-      dot(cross(sub(p2, p1), sub(p3, p1)), cross(sub(p3, p1), sub(p0, p1))) >= 0.0;
-  const Vec3 d02 = sub(p2, p0);
-  const Vec3 d13 = sub(p3, p1);
-  bool use02 = dot(d02, d02) <= dot(d13, d13);
+      glm::dot(glm::cross(p2 - p1, p3 - p1), glm::cross(p3 - p1, p0 - p1)) >= 0.0;
+  const glm::dvec3 d02 = p2 - p0;
+  const glm::dvec3 d13 = p3 - p1;
+  bool use02 = glm::dot(d02, d02) <= glm::dot(d13, d13);
   if (use02 && !diagonal02Valid && diagonal13Valid)
   {
     use02 = false;
@@ -161,43 +141,36 @@ std::vector<Triangle> collectTriangles(vtkPolyData* input, const std::vector<cha
 
   auto visit = [&](vtkCellArray* cells, bool strip)
   {
-    if (!cells)
-    {
-      return;
-    }
-    auto it = vtk::TakeSmartPointer(cells->NewIterator());
-    for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell())
-    {
-      vtkIdType count = 0;
-      const vtkIdType* ids = nullptr;
-      it->GetCurrentCell(count, ids);
-      if (count < 3 || !idsValid(count, ids, pointCount))
-      {
-        ++report.invalidCellsDropped;
-        continue;
-      }
-      if (touchesNonFinite(count, ids, nonFinite))
-      {
-        ++report.nonFiniteFacesDropped;
-        continue;
-      }
-      if (strip)
-      {
-        appendStrip(count, ids, triangles);
-      }
-      else if (count == 3)
-      {
-        triangles.push_back({ids[0], ids[1], ids[2]});
-      }
-      else if (count == 4)
-      {
-        triangulateQuad(points, ids, triangles);
-      }
-      else
-      {
-        triangulatePolygon(points, count, ids, triangles);
-      }
-    }
+    geometry::forEachCell(cells,
+                          [&](vtkIdType count, const vtkIdType* ids)
+                          {
+                            if (count < 3 || !idsValid(count, ids, pointCount))
+                            {
+                              ++report.invalidCellsDropped;
+                              return;
+                            }
+                            if (touchesNonFinite(count, ids, nonFinite))
+                            {
+                              ++report.nonFiniteFacesDropped;
+                              return;
+                            }
+                            if (strip)
+                            {
+                              appendStrip(count, ids, triangles);
+                            }
+                            else if (count == 3)
+                            {
+                              triangles.push_back({ids[0], ids[1], ids[2]});
+                            }
+                            else if (count == 4)
+                            {
+                              triangulateQuad(points, ids, triangles);
+                            }
+                            else
+                            {
+                              triangulatePolygon(points, count, ids, triangles);
+                            }
+                          });
   };
   visit(input->GetPolys(), false);
   visit(input->GetStrips(), true);
@@ -449,19 +422,16 @@ EdgeCounts countEdges(vtkPolyData* triangles)
   std::vector<std::pair<vtkIdType, vtkIdType>> edges;
   vtkCellArray* polys = triangles->GetPolys();
   edges.reserve(static_cast<size_t>(3 * polys->GetNumberOfCells()));
-  auto it = vtk::TakeSmartPointer(polys->NewIterator());
-  for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell())
-  {
-    vtkIdType count = 0;
-    const vtkIdType* ids = nullptr;
-    it->GetCurrentCell(count, ids);
-    for (vtkIdType i = 0; i < count; ++i)
-    {
-      const vtkIdType a = ids[i];
-      const vtkIdType b = ids[(i + 1) % count];
-      edges.emplace_back(std::min(a, b), std::max(a, b));
-    }
-  }
+  geometry::forEachCell(polys,
+                        [&edges](vtkIdType count, const vtkIdType* ids)
+                        {
+                          for (vtkIdType i = 0; i < count; ++i)
+                          {
+                            const vtkIdType a = ids[i];
+                            const vtkIdType b = ids[(i + 1) % count];
+                            edges.emplace_back(std::min(a, b), std::max(a, b));
+                          }
+                        });
   std::sort(edges.begin(), edges.end());
   EdgeCounts counts;
   for (size_t i = 0; i < edges.size();)
@@ -505,7 +475,7 @@ vtkSmartPointer<vtkPolyData> sanitizeSurface(vtkPolyData* input, const std::stri
   std::vector<char> nonFinite(static_cast<size_t>(pointCount), 0);
   for (vtkIdType i = 0; i < pointCount; ++i)
   {
-    const Vec3 p = pointAt(points, i);
+    const glm::dvec3 p = pointAt(points, i);
     if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2]))
     {
       nonFinite[i] = 1;

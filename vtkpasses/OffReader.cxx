@@ -1,11 +1,10 @@
 #include "OffReader.h"
 
+#include "GeometryAccess.h"
 #include "error.h"
 
 #include <cerrno>
 #include <cstdlib>
-#include <fstream>
-#include <iterator>
 #include <limits>
 #include <sstream>
 #include <vector>
@@ -306,12 +305,7 @@ private:
 
 vtkSmartPointer<vtkPolyData> readOff(const std::string& path)
 {
-  std::ifstream file(path, std::ios::binary);
-  if (!file)
-  {
-    throw errorAbout(path, "cannot be opened");
-  }
-  const std::string text((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
+  const std::string text = geometry::readFileBytes(path);
   if (text.find('\0') != std::string::npos)
   {
     throw errorAbout(path, "not a text OFF file (contains NUL bytes)");

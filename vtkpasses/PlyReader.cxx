@@ -1,5 +1,6 @@
 #include "PlyReader.h"
 
+#include "GeometryAccess.h"
 #include "error.h"
 
 #include <cctype>
@@ -8,8 +9,6 @@
 #include <cstdint>
 #include <cstdlib>
 #include <cstring>
-#include <fstream>
-#include <iterator>
 #include <sstream>
 #include <vector>
 #include <vtkCellArray.h>
@@ -574,12 +573,7 @@ private:
 
 vtkSmartPointer<vtkPolyData> readPly(const std::string& path)
 {
-  std::ifstream file(path, std::ios::binary);
-  if (!file)
-  {
-    throw errorAbout(path, "cannot be opened");
-  }
-  const std::string text((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
+  const std::string text = geometry::readFileBytes(path);
   return PlyParser(path, text).parse();
 }
 } // namespace aniso

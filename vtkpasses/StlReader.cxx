@@ -1,5 +1,6 @@
 #include "StlReader.h"
 
+#include "GeometryAccess.h"
 #include "error.h"
 
 #include <array>
@@ -7,9 +8,7 @@
 #include <cstdint>
 #include <cstdlib>
 #include <cstring>
-#include <fstream>
 #include <functional>
-#include <iterator>
 #include <unordered_map>
 #include <vtkCellArray.h>
 #include <vtkNew.h>
@@ -209,12 +208,7 @@ bool looksAscii(const std::string& bytes)
 
 vtkSmartPointer<vtkPolyData> readStl(const std::string& path, std::vector<std::string>& warnings)
 {
-  std::ifstream file(path, std::ios::binary);
-  if (!file)
-  {
-    throw errorAbout(path, "cannot be opened");
-  }
-  const std::string bytes((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
+  const std::string bytes = geometry::readFileBytes(path);
   if (bytes.size() >= kHeaderBytes)
   {
     const uint64_t announced =

@@ -1,5 +1,6 @@
 #include "SurfacePreparation.h"
 
+#include "GeometryAccess.h"
 #include "MeshValidation.h"
 #include "error.h"
 
@@ -7,7 +8,6 @@
 #include <glm/geometric.hpp>
 #include <sstream>
 #include <vtkCellArray.h>
-#include <vtkCellArrayIterator.h>
 #include <vtkDataArray.h>
 #include <vtkFloatArray.h>
 #include <vtkNew.h>
@@ -23,18 +23,11 @@ namespace
 // 0.06 degrees of the normal: it gives no usable direction in the tangent plane.
 constexpr double kParallelTangent = 1e-3;
 
-glm::dvec3 tupleAt(vtkDataArray* array, vtkIdType id)
-{
-  double v[3] = {0.0, 0.0, 0.0};
-  array->GetTuple(id, v);
-  return {v[0], v[1], v[2]};
-}
+using geometry::tupleAt;
 
 glm::dvec3 pointAt(vtkPolyData* surface, vtkIdType id)
 {
-  double p[3];
-  surface->GetPoint(id, p);
-  return {p[0], p[1], p[2]};
+  return geometry::pointAt(surface->GetPoints(), id);
 }
 
 bool isUnitFinite(const glm::dvec3& v)
@@ -67,33 +60,30 @@ int64_t repairZeroNormals(vtkPolyData* surface)
   normals->DeepCopy(shared);
   normals->SetName("Normals");
   surface->GetPointData()->SetNormals(normals);
-  auto it = vtk::TakeSmartPointer(surface->GetPolys()->NewIterator());
-  for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell())
-  {
-    vtkIdType count = 0;
-    const vtkIdType* ids = nullptr;
-    it->GetCurrentCell(count, ids);
-    if (count != 3)
-    {
-      continue;
-    }
-    const glm::dvec3 p0 = pointAt(surface, ids[0]);
-    const glm::dvec3 face =
-        glm::cross(pointAt(surface, ids[1]) - p0, pointAt(surface, ids[2]) - p0);
-    if (!isUnitFinite(face))
-    {
-      continue;
-    }
-    const glm::dvec3 n = glm::normalize(face);
-    for (int k = 0; k < 3; ++k)
-    {
-      if (bad[static_cast<size_t>(ids[k])])
-      {
-        normals->SetTuple3(ids[k], n.x, n.y, n.z);
-        bad[static_cast<size_t>(ids[k])] = 0;
-      }
-    }
-  }
+  geometry::forEachCell(surface->GetPolys(),
+                        [&](vtkIdType count, const vtkIdType* ids)
+                        {
+                          if (count != 3)
+                          {
+                            return;
+                          }
+                          const glm::dvec3 p0 = pointAt(surface, ids[0]);
+                          const glm::dvec3 face = glm::cross(pointAt(surface, ids[1]) - p0,
+                                                             pointAt(surface, ids[2]) - p0);
+                          if (!isUnitFinite(face))
+                          {
+                            return;
+                          }
+                          const glm::dvec3 n = glm::normalize(face);
+                          for (int k = 0; k < 3; ++k)
+                          {
+                            if (bad[static_cast<size_t>(ids[k])])
+                            {
+                              normals->SetTuple3(ids[k], n.x, n.y, n.z);
+                              bad[static_cast<size_t>(ids[k])] = 0;
+                            }
+                          }
+                        });
   return badCount;
 }
 
