@@ -5,6 +5,7 @@
 #include "error.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
@@ -271,5 +272,276 @@ ReferenceResult integrateIrradiance(const glm::dvec3& normalWorld, const Environ
     throw errorAbout("normal", "must be a finite non-zero vector");
   const Frame frame = Frame::fromNormalTangent(normalWorld, {1.0, 0.0, 0.0});
   return refine([&](int level) { return irradianceAtLevel(frame, env, level); }, options);
+}
+
+namespace
+{
+// Smith Lambda of the anisotropic GGX model, written out here so that the reference does not
+// share code with brdf/ggx.cxx: (sqrt(1 + (ax^2 w.x^2 + ay^2 w.y^2) / w.z^2) - 1) / 2, w.z > 0.
+double ggxLambdaOf(double ax, double ay, const glm::dvec3& w)
+{
+  const double x = ax * w.x;
+  const double y = ay * w.y;
+  const double a2 = (x * x + y * y) / (w.z * w.z);
+  if (a2 > 1.0)
+    return 0.5 * (std::sqrt(1.0 + a2) - 1.0); // +infinity when a2 overflows: G2 = 0
+  return a2 / (2.0 * (1.0 + std::sqrt(1.0 + a2)));
+}
+
+glm::dvec3 schlick(const glm::dvec3& f0, double vDotH)
+{
+  const double m = 1.0 - vDotH;
+  return f0 + (glm::dvec3(1.0) - f0) * (m * m * m * m * m);
+}
+
+void validateSpecularInputs(const glm::dvec3& f0, const glm::dvec3& viewWorld)
+{
+  for (int c = 0; c < 3; ++c)
+    if (!(f0[c] >= 0.0 && f0[c] <= 1.0))
+      throw errorAbout("F0", "must be in [0, 1] per channel");
+  if (!finiteVector(viewWorld) || !(glm::length(viewWorld) > 0.0))
+    throw errorAbout("view", "must be a finite non-zero vector");
+}
+
+// s = ln r below this holds less than exp(2 s) = 4e-18 of the slope measure.
+constexpr double kLogRadiusMin = -20.0;
+
+struct GgxSetup
+{
+  double ax;
+  double ay;
+  double lambdaV;
+  glm::dvec3 v; // tangent space, v.z > 0
+  glm::dvec3 f0;
+  Frame frame;
+  const Environment* env;
+};
+
+// Integral over s = ln r of G2 F L (v.h) / ((n.v)(n.h)) sech^2(s) / 2 along one azimuth psi of
+// the stretched slope plane. The slope (ax r cos psi, ay r sin psi) gives h on the meridian of
+// azimuth phi, (cos phi, sin phi) = (ax cos psi, ay sin psi) / R, at tan(theta) = r R. As for
+// Ashikhmin-Shirley, l reaches the horizon at theta = (alpha + pi/2) / 2; the integrand falls to
+// zero there (G2 vanishes with n.l), so the rule ends at that point and is smooth up to it.
+glm::dvec3 ggxRow(const GgxSetup& s, double cosPsi, double sinPsi, const QuadratureRule& unit)
+{
+  const double mx = s.ax * cosPsi;
+  const double my = s.ay * sinPsi;
+  const double stretch = std::sqrt(mx * mx + my * my);
+  const double cosPhi = mx / stretch;
+  const double sinPhi = my / stretch;
+  const double alpha = std::atan2(s.v.x * cosPhi + s.v.y * sinPhi, s.v.z);
+  const double logRadiusEnd = std::log(std::tan(0.5 * (alpha + 0.5 * kPi)) / stretch);
+  const double width = logRadiusEnd - kLogRadiusMin;
+  glm::dvec3 sum(0.0);
+  if (!(width > 0.0))
+    return sum; // the whole visible part of this azimuth holds less than 4e-18 of the measure
+  for (std::size_t k = 0; k < unit.nodes.size(); ++k)
+  {
+    const double r = std::exp(kLogRadiusMin + width * unit.nodes[k]);
+    const double r2 = r * r;
+    const double tanTheta = r * stretch;
+    const double cosTheta = 1.0 / std::sqrt(1.0 + tanTheta * tanTheta);
+    const double sinTheta = tanTheta * cosTheta;
+    const glm::dvec3 h(sinTheta * cosPhi, sinTheta * sinPhi, cosTheta);
+    const double vDotH = glm::dot(s.v, h);
+    const glm::dvec3 l = 2.0 * vDotH * h - s.v;
+    if (l.z <= 0.0 || vDotH <= 0.0)
+      continue; // only by rounding at the horizon end
+    const double g2 = 1.0 / (1.0 + s.lambdaV + ggxLambdaOf(s.ax, s.ay, l));
+    const double measure = width * unit.weights[k] * 2.0 * r2 / ((1.0 + r2) * (1.0 + r2));
+    const glm::dvec3 radiance = s.env->radiance(s.frame.toWorld(l));
+    sum += (measure * g2 * vDotH / (s.v.z * cosTheta)) * schlick(s.f0, vDotH) * radiance;
+  }
+  return sum;
+}
+
+glm::dvec3 ggxAtLevel(const GgxSetup& s, int level)
+{
+  // The circle of psi is cut at four azimuths, and each arc mapped by
+  // psi = start + length (t - sin(2 pi t) / (2 pi)), which crowds the nodes towards the cuts
+  // (see specularAtLevel): where h's meridian is perpendicular to the view (steep at grazing
+  // views), and on the axis of the smaller alpha. There, in a strongly anisotropic lobe, l's
+  // azimuth and with it Lambda(l) swing over a psi-range of about (alpha_min / alpha_max)^2.
+  const double phiCut = std::atan2(s.v.y, s.v.x) + 0.5 * kPi;
+  const double viewCut = std::atan2(std::sin(phiCut) / s.ay, std::cos(phiCut) / s.ax);
+  const double axisCut = s.ax <= s.ay ? 0.0 : 0.5 * kPi;
+  std::array<double, 5> cuts = {std::remainder(viewCut, kPi) + kPi, axisCut, axisCut + kPi,
+                                std::remainder(viewCut, kPi) + 2.0 * kPi, 0.0};
+  for (int i = 0; i < 4; ++i)
+    cuts[std::size_t(i)] -= kTwoPi * std::floor(cuts[std::size_t(i)] / kTwoPi);
+  std::sort(cuts.begin(), cuts.begin() + 4);
+  cuts[4] = cuts[0] + kTwoPi;
+  const int perArc = azimuthsAt(level) / 4;
+  const QuadratureRule unit = compositeGaussLegendre(panelsAt(level), 4, 0.0, 1.0);
+  const glm::dvec3 total =
+      sumRows(4 * perArc, unit.nodes.size(),
+              [&](int i)
+              {
+                const std::size_t arc = std::size_t(i / perArc);
+                const double start = cuts[arc];
+                const double length = cuts[arc + 1] - start;
+                const double t = (i % perArc + 0.5) / perArc;
+                const double psi = start + length * (t - std::sin(kTwoPi * t) / kTwoPi);
+                const double dPsi = length * (1.0 - std::cos(kTwoPi * t)) / perArc;
+                return dPsi * ggxRow(s, std::cos(psi), std::sin(psi), unit);
+              });
+  return total / kTwoPi;
+}
+
+// Integral of brdfCos(l) = f(v, l)(n.l) (l in tangent space) over the cone of the disc, times
+// its radiance: Gauss-Legendre panels in the angle beta from the centre (dw = sin(beta) dbeta
+// dgamma), equally spaced angles gamma around it (periodic, so the midpoint rule is spectrally
+// accurate). The disc's edge is the domain's edge, so the hard edge costs nothing.
+template <class BrdfCos>
+glm::dvec3 discAtLevel(const DiscSource& disc, const Frame& frame, const BrdfCos& brdfCos,
+                       int level)
+{
+  const Frame around = Frame::fromNormalTangent(disc.direction, {1.0, 0.0, 0.0});
+  const int azimuths = azimuthsAt(level);
+  const QuadratureRule beta = compositeGaussLegendre(panelsAt(level), 4, 0.0, disc.angularRadius);
+  const glm::dvec3 total =
+      sumRows(azimuths, beta.nodes.size(),
+              [&](int i)
+              {
+                const double gamma = (i + 0.5) * kTwoPi / azimuths;
+                const glm::dvec3 across = std::cos(gamma) * around.t + std::sin(gamma) * around.b;
+                glm::dvec3 sum(0.0);
+                for (std::size_t k = 0; k < beta.nodes.size(); ++k)
+                {
+                  const double b = beta.nodes[k];
+                  const glm::dvec3 l = std::cos(b) * around.n + std::sin(b) * across;
+                  sum += (beta.weights[k] * std::sin(b)) * brdfCos(frame.toLocal(l));
+                }
+                return sum;
+              });
+  return total * (kTwoPi / azimuths) * disc.radiance;
+}
+
+// Sky part plus disc part, each refined on its own.
+template <class SkyFn, class BrdfCos>
+ReferenceResult sunSkySum(const SunSkyEnvironment& env, const Frame& frame, const SkyFn& sky,
+                          const BrdfCos& brdfCos, const ReferenceOptions& options)
+{
+  ReferenceResult result;
+  result.converged = true; // a black sky adds nothing and needs no integration
+  if (env.sky() != glm::dvec3(0.0))
+    result = sky(UniformEnvironment(env.sky()));
+  const ReferenceResult disc =
+      refine([&](int level) { return discAtLevel(env.sun(), frame, brdfCos, level); }, options);
+  result.value += disc.value;
+  result.errorEstimate += disc.errorEstimate;
+  result.evaluations += disc.evaluations;
+  result.converged = result.converged && disc.converged;
+  return result;
+}
+
+// The unit view in tangent space.
+glm::dvec3 localView(const Frame& frame, const glm::dvec3& viewWorld)
+{
+  return glm::normalize(frame.toLocal(glm::normalize(viewWorld)));
+}
+} // namespace
+
+ReferenceResult integrateSpecularGgx(const GgxLobe& lobe, const glm::dvec3& f0, const Frame& frame,
+                                     const glm::dvec3& viewWorld, const Environment& env,
+                                     const ReferenceOptions& options)
+{
+  validate(options);
+  validateGgxLobe(lobe);
+  validateSpecularInputs(f0, viewWorld);
+  GgxSetup setup;
+  setup.ax = lobe.alphaX;
+  setup.ay = lobe.alphaY;
+  setup.v = localView(frame, viewWorld);
+  setup.f0 = f0;
+  setup.frame = frame;
+  setup.env = &env;
+  if (setup.v.z <= 0.0)
+  {
+    ReferenceResult below;
+    below.converged = true; // no reflection towards a view below the surface
+    return below;
+  }
+  setup.lambdaV = ggxLambdaOf(setup.ax, setup.ay, setup.v);
+  return refine([&](int level) { return ggxAtLevel(setup, level); }, options);
+}
+
+ReferenceResult integrateSpecularSunSky(const AsLobe& lobe, const glm::dvec3& f0,
+                                        const Frame& frame, const glm::dvec3& viewWorld,
+                                        const SunSkyEnvironment& env,
+                                        const ReferenceOptions& options)
+{
+  validate(options);
+  validateLobe(lobe);
+  validateSpecularInputs(f0, viewWorld);
+  const glm::dvec3 v = localView(frame, viewWorld);
+  if (v.z <= 0.0)
+  {
+    ReferenceResult below;
+    below.converged = true;
+    return below;
+  }
+  const double scale = std::sqrt((lobe.nu + 1.0) * (lobe.nv + 1.0)) / kTwoPi;
+  // f_s (n.l) with the Ashikhmin-Shirley formula written out (see the file's header comment).
+  auto brdfCos = [&](const glm::dvec3& l) -> glm::dvec3
+  {
+    if (l.z <= 0.0)
+      return glm::dvec3(0.0);
+    const glm::dvec3 h = glm::normalize(v + l);
+    const double vDotH = glm::dot(v, h);
+    if (vDotH <= 0.0)
+      return glm::dvec3(0.0);
+    const double tangential = h.x * h.x + h.y * h.y;
+    const double exponent = tangential > 0.0
+                                ? (lobe.nu * h.x * h.x + lobe.nv * h.y * h.y) / tangential
+                                : 0.5 * (lobe.nu + lobe.nv);
+    const double logCos = tangential < 0.5 ? 0.5 * std::log1p(-tangential) : std::log(h.z);
+    const double ph = scale * std::exp(exponent * logCos);
+    return (ph * l.z / (4.0 * vDotH * std::max(v.z, l.z))) * schlick(f0, vDotH);
+  };
+  return sunSkySum(
+      env, frame,
+      [&](const Environment& sky)
+      { return integrateSpecular(lobe, f0, frame, viewWorld, sky, options); },
+      brdfCos, options);
+}
+
+ReferenceResult integrateSpecularGgxSunSky(const GgxLobe& lobe, const glm::dvec3& f0,
+                                           const Frame& frame, const glm::dvec3& viewWorld,
+                                           const SunSkyEnvironment& env,
+                                           const ReferenceOptions& options)
+{
+  validate(options);
+  validateGgxLobe(lobe);
+  validateSpecularInputs(f0, viewWorld);
+  const glm::dvec3 v = localView(frame, viewWorld);
+  if (v.z <= 0.0)
+  {
+    ReferenceResult below;
+    below.converged = true;
+    return below;
+  }
+  const double lambdaV = ggxLambdaOf(lobe.alphaX, lobe.alphaY, v);
+  // D G2 F / (4 (n.v)(n.l)) times n.l, written out.
+  auto brdfCos = [&](const glm::dvec3& l) -> glm::dvec3
+  {
+    if (l.z <= 0.0)
+      return glm::dvec3(0.0);
+    const glm::dvec3 h = glm::normalize(v + l);
+    const double vDotH = glm::dot(v, h);
+    if (vDotH <= 0.0)
+      return glm::dvec3(0.0);
+    const double x = h.x / lobe.alphaX;
+    const double y = h.y / lobe.alphaY;
+    const double q = x * x + y * y + h.z * h.z;
+    const double d = 1.0 / (kPi * lobe.alphaX * lobe.alphaY * q * q);
+    const double g2 = 1.0 / (1.0 + lambdaV + ggxLambdaOf(lobe.alphaX, lobe.alphaY, l));
+    return (d * g2 / (4.0 * v.z)) * schlick(f0, vDotH);
+  };
+  return sunSkySum(
+      env, frame,
+      [&](const Environment& sky)
+      { return integrateSpecularGgx(lobe, f0, frame, viewWorld, sky, options); },
+      brdfCos, options);
 }
 } // namespace aniso

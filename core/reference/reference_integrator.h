@@ -6,7 +6,9 @@
 // lobe width, and doubles the resolution until three successive resolutions agree to the
 // requested precision.
 #include "brdf/ashikhmin_shirley.h"
+#include "brdf/ggx.h"
 #include "env/environment.h"
+#include "env/sun_sky.h"
 #include "frame.h"
 
 #include <cstdint>
@@ -42,6 +44,31 @@ struct ReferenceResult
 ReferenceResult integrateSpecular(const AsLobe& lobe, const glm::dvec3& f0, const Frame& frame,
                                   const glm::dvec3& viewWorld, const Environment& env,
                                   const ReferenceOptions& options = {});
+
+// The same integral for the anisotropic GGX model (brdf/ggx.h: D, height-correlated Smith G2,
+// Schlick F), without calling its evaluation or sampling code. Over half vectors in slope space:
+// D(h)(n.h) dw_h is the uniform measure dq dpsi / (2 pi) in the stretched polar coordinates
+// (r, psi) of the slope, q = r^2 / (1 + r^2); the rule runs over s = ln r (where that measure is
+// sech^2(s) / 2 ds), so environment features far out in GGX's heavy tail stay resolved in angle.
+// Azimuths crowd towards the meridians perpendicular to the view, as for Ashikhmin-Shirley.
+// Throws as integrateSpecular, with validateGgxLobe for the lobe.
+ReferenceResult integrateSpecularGgx(const GgxLobe& lobe, const glm::dvec3& f0, const Frame& frame,
+                                     const glm::dvec3& viewWorld, const Environment& env,
+                                     const ReferenceOptions& options = {});
+
+// Both models under a SunSkyEnvironment. The sun's hard edge would need a grid fine enough to
+// resolve the disc everywhere, so the sky (uniform) goes through the rules above and the sun is
+// integrated over its own cone (Gauss-Legendre in the angle from its centre, equally spaced
+// around it), each part refined to the tolerance; errorEstimate and evaluations are the sums,
+// converged needs both. maxEvaluations applies to each part.
+ReferenceResult integrateSpecularSunSky(const AsLobe& lobe, const glm::dvec3& f0,
+                                        const Frame& frame, const glm::dvec3& viewWorld,
+                                        const SunSkyEnvironment& env,
+                                        const ReferenceOptions& options = {});
+ReferenceResult integrateSpecularGgxSunSky(const GgxLobe& lobe, const glm::dvec3& f0,
+                                           const Frame& frame, const glm::dvec3& viewWorld,
+                                           const SunSkyEnvironment& env,
+                                           const ReferenceOptions& options = {});
 
 // Irradiance E(n) = integral of L (n.l)+ dw by brute-force quadrature (checks the SH9 path).
 ReferenceResult integrateIrradiance(const glm::dvec3& normalWorld, const Environment& env,

@@ -1,0 +1,218 @@
+#include "env/env_sampling.h"
+
+#include "error.h"
+
+#include <algorithm>
+#include <cmath>
+#include <glm/geometric.hpp>
+#include <map>
+#include <mutex>
+#include <sstream>
+#include <utility>
+
+namespace aniso
+{
+namespace
+{
+constexpr double kPi = 3.14159265358979323846;
+constexpr double kTwoPi = 2.0 * kPi;
+constexpr double kFourPi = 4.0 * kPi;
+constexpr double kBelowOne = 1.0 - 1.1102230246251565e-16;
+
+// cos(pi y / H), the upper boundary of grid row y (row H: the nadir).
+double rowCos(int y, int height)
+{
+  return std::cos(kPi * y / height);
+}
+
+// Index i with cdf[i] <= x < cdf[i + 1] for x in [0, 1): never an interval of zero width.
+int findInterval(const double* cdf, int count, double x)
+{
+  const double* upper = std::upper_bound(cdf, cdf + count + 1, x);
+  const int index = int(upper - cdf) - 1;
+  return std::clamp(index, 0, count - 1);
+}
+
+void validateOptions(const EnvSamplingOptions& options)
+{
+  if (options.width < 2 || options.width > 8192 || options.width % 2 != 0)
+    throw errorAbout("width",
+                     "must be even and in [2, 8192], got " + std::to_string(options.width));
+  if (options.supersample < 1 || options.supersample > 16)
+    throw errorAbout("supersample",
+                     "must be in [1, 16], got " + std::to_string(options.supersample));
+  if (!(options.uniformFraction >= 0.0 && options.uniformFraction <= 1.0))
+    throw errorAbout("uniformFraction", "must be in [0, 1]");
+}
+} // namespace
+
+EnvironmentDistribution::EnvironmentDistribution(const Image& equirect, double uniformFraction,
+                                                 std::string key)
+    : width_(equirect.width), height_(equirect.height), key_(std::move(key))
+{
+  if (equirect.width < 1 || equirect.height < 1 || equirect.channels < 1 ||
+      equirect.data.size() != std::size_t(equirect.width) * std::size_t(equirect.height) *
+                                  std::size_t(equirect.channels))
+    throw errorAbout("environment image", "empty or inconsistent image");
+  if (!(uniformFraction >= 0.0 && uniformFraction <= 1.0))
+    throw errorAbout("uniformFraction", "must be in [0, 1]");
+  const int w = width_;
+  const int h = height_;
+  const std::size_t texels = std::size_t(w) * std::size_t(h);
+
+  // Texel probabilities: luminance times the texel's exact solid angle.
+  std::vector<double> luminance(texels, 0.0);
+  std::vector<double> rowSolidAngle(std::size_t(h), 0.0);
+  double power = 0.0;
+  for (int y = 0; y < h; ++y)
+  {
+    rowSolidAngle[std::size_t(y)] = kTwoPi / w * (rowCos(y, h) - rowCos(y + 1, h));
+    for (int x = 0; x < w; ++x)
+    {
+      double value = 0.0;
+      if (equirect.channels >= 3)
+        value = 0.2126 * equirect.at(x, y, 0) + 0.7152 * equirect.at(x, y, 1) +
+                0.0722 * equirect.at(x, y, 2);
+      else
+        value = equirect.at(x, y, 0);
+      if (!std::isfinite(value))
+        throw errorAbout("environment image", "texel (" + std::to_string(x) + ", " +
+                                                  std::to_string(y) + ") is not finite");
+      value = std::max(value, 0.0);
+      luminance[std::size_t(y) * std::size_t(w) + std::size_t(x)] = value;
+      power += value * rowSolidAngle[std::size_t(y)];
+    }
+  }
+  const double share = power > 0.0 ? 1.0 - uniformFraction : 0.0;
+  density_.assign(texels, 0.0);
+  for (std::size_t i = 0; i < texels; ++i)
+    density_[i] = (share > 0.0 ? share * luminance[i] / power : 0.0) + (1.0 - share) / kFourPi;
+
+  // CDFs of probability = density x solid angle. Each is normalised by its own total, so the
+  // last entry is exactly 1 whatever the rounding.
+  conditional_.assign(std::size_t(h) * std::size_t(w + 1), 0.0);
+  marginal_.assign(std::size_t(h) + 1, 0.0);
+  std::vector<double> rowProbability(std::size_t(h), 0.0);
+  for (int y = 0; y < h; ++y)
+  {
+    double* cdf = conditional_.data() + std::size_t(y) * std::size_t(w + 1);
+    double sum = 0.0;
+    for (int x = 0; x < w; ++x)
+    {
+      sum += density_[std::size_t(y) * std::size_t(w) + std::size_t(x)];
+      cdf[x + 1] = sum;
+    }
+    for (int x = 1; x <= w; ++x)
+      cdf[x] = sum > 0.0 ? cdf[x] / sum : double(x) / w;
+    cdf[w] = 1.0;
+    rowProbability[std::size_t(y)] = sum * rowSolidAngle[std::size_t(y)];
+  }
+  double total = 0.0;
+  for (int y = 0; y < h; ++y)
+  {
+    total += rowProbability[std::size_t(y)];
+    marginal_[std::size_t(y) + 1] = total;
+  }
+  for (int y = 1; y <= h; ++y)
+    marginal_[std::size_t(y)] /= total;
+  marginal_[std::size_t(h)] = 1.0;
+}
+
+EnvironmentDistribution EnvironmentDistribution::bake(const Environment& env,
+                                                      const EnvSamplingOptions& options)
+{
+  validateOptions(options);
+  const Image image = renderEquirect(env, options.width, options.width / 2, options.supersample);
+  return EnvironmentDistribution(image, options.uniformFraction,
+                                 distributionKey(env.key(), options));
+}
+
+EnvSample EnvironmentDistribution::sample(const glm::dvec2& xi) const
+{
+  const double xiRow = std::clamp(xi.y, 0.0, kBelowOne);
+  const double xiColumn = std::clamp(xi.x, 0.0, kBelowOne);
+  const int y = findInterval(marginal_.data(), height_, xiRow);
+  const double rowWidth = marginal_[std::size_t(y) + 1] - marginal_[std::size_t(y)];
+  const double t = std::clamp((xiRow - marginal_[std::size_t(y)]) / rowWidth, 0.0, 1.0);
+  const double* cdf = conditional_.data() + std::size_t(y) * std::size_t(width_ + 1);
+  const int x = findInterval(cdf, width_, xiColumn);
+  const double s = std::clamp((xiColumn - cdf[x]) / (cdf[x + 1] - cdf[x]), 0.0, kBelowOne);
+
+  // Uniform in (phi, cos theta) inside the texel: constant density per solid angle.
+  const double u = (x + s) / width_;
+  const double zTop = rowCos(y, height_);
+  const double zBottom = rowCos(y + 1, height_);
+  const double z = std::clamp(zTop + t * (zBottom - zTop), -1.0, 1.0);
+  const double sinTheta = std::sqrt(std::max(0.0, 1.0 - z * z));
+  const double phi = kPi - kTwoPi * u; // atan2(d.y, d.x) of the equirect mapping
+  EnvSample result;
+  result.direction = {sinTheta * std::cos(phi), sinTheta * std::sin(phi), z};
+  result.pdf = density_[std::size_t(y) * std::size_t(width_) + std::size_t(x)];
+  return result;
+}
+
+double EnvironmentDistribution::pdf(const glm::dvec3& direction) const
+{
+  const glm::dvec2 uv = directionToEquirect(direction);
+  const double theta = kPi * (1.0 - uv.y);
+  const int x = std::clamp(int(uv.x * width_), 0, width_ - 1);
+  const int y = std::clamp(int(theta / kPi * height_), 0, height_ - 1);
+  return density_[std::size_t(y) * std::size_t(width_) + std::size_t(x)];
+}
+
+Image EnvironmentDistribution::cdfTable() const
+{
+  // Wide enough for both CDFs (an equirect grid has W = 2 H, but any image is accepted).
+  const int columns = std::max(width_, height_) + 1;
+  Image table(columns, height_ + 1, 1);
+  for (int y = 0; y < height_; ++y)
+    for (int x = 0; x < columns; ++x)
+      table.at(x, y, 0) =
+          x <= width_
+              ? float(conditional_[std::size_t(y) * std::size_t(width_ + 1) + std::size_t(x)])
+              : 1.0f;
+  for (int x = 0; x < columns; ++x)
+    table.at(x, height_, 0) = x <= height_ ? float(marginal_[std::size_t(x)]) : 1.0f;
+  return table;
+}
+
+Image EnvironmentDistribution::pdfTable() const
+{
+  Image table(width_, height_, 1);
+  for (std::size_t i = 0; i < density_.size(); ++i)
+    table.data[i] = float(density_[i]);
+  return table;
+}
+
+std::string distributionKey(const std::string& environmentKey, const EnvSamplingOptions& options)
+{
+  std::ostringstream key;
+  key.precision(17);
+  key << environmentKey << "|envdist1|" << options.width << 'x' << options.width / 2 << "|ss"
+      << options.supersample << "|u" << options.uniformFraction;
+  return key.str();
+}
+
+std::shared_ptr<const EnvironmentDistribution> sharedDistribution(const Environment& env,
+                                                                  const EnvSamplingOptions& options)
+{
+  validateOptions(options);
+  static std::mutex mutex;
+  static std::map<std::string, std::weak_ptr<const EnvironmentDistribution>> cache;
+  const std::string key = distributionKey(env.key(), options);
+  {
+    std::lock_guard<std::mutex> lock(mutex);
+    if (auto existing = cache[key].lock())
+      return existing;
+  }
+  // Baked outside the lock so other keys are not held up; two simultaneous first requests for
+  // one key both bake, and the first stored result wins.
+  auto baked =
+      std::make_shared<const EnvironmentDistribution>(EnvironmentDistribution::bake(env, options));
+  std::lock_guard<std::mutex> lock(mutex);
+  if (auto existing = cache[key].lock())
+    return existing;
+  cache[key] = baked;
+  return baked;
+}
+} // namespace aniso

@@ -1,0 +1,89 @@
+#pragma once
+// Environment importance sampling: a piecewise-constant density over the sphere proportional to
+// the environment's luminance (plus a small uniform part), on the texel grid of an
+// equirectangular image (Blender's convention, see environment.h).
+//
+// Layout and why: texel (x, y) covers u in [x/W, (x+1)/W] and the polar band
+// theta in [pi y/H, pi (y+1)/H] (row 0 at the zenith). A sample picks a row from the marginal
+// CDF, a column from that row's conditional CDF, then a point uniform in (phi, cos theta) inside
+// the texel, so the density per solid angle is constant on each texel (no 1/sin(theta) spike at
+// the poles) and pdf(d) is a single table read. The same tables suit a shader: the CDFs as one
+// R32F texture searched by bisection (about log2 W + log2 H texel fetches per sample) and the
+// pdf as a W x H R32F texture (one fetch per direction). Sizes are whatever the caller bakes;
+// 512 x 256 costs 0.5 MB per table.
+#include "env/environment.h"
+#include "image/image.h"
+
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace aniso
+{
+struct EnvSamplingOptions
+{
+  int width = 512;               // grid columns; rows = width / 2. Even, in [2, 8192]
+  int supersample = 4;           // radiance samples per texel side when baking from an environment
+  double uniformFraction = 0.02; // share of samples spread uniformly over the sphere, in [0, 1]
+};
+
+struct EnvSample
+{
+  glm::dvec3 direction{0.0, 0.0, 1.0}; // world, unit
+  double pdf = 0.0;                    // per unit solid angle
+};
+
+class EnvironmentDistribution
+{
+public:
+  // From an equirectangular RGB image (or grey: channel 0) of texel-mean radiance; luminance is
+  // 0.2126 R + 0.7152 G + 0.0722 B, negative values count as 0. density = (1 - f) L / (mean of L
+  // over the sphere) / (4 pi) + f / (4 pi) with f = uniformFraction; an image with no positive
+  // texel gives the uniform density. Throws aniso::Error naming the argument for an empty or
+  // inconsistent image, a non-finite texel or f outside [0, 1]. key identifies the content
+  // (see distributionKey).
+  EnvironmentDistribution(const Image& equirect, double uniformFraction, std::string key);
+
+  // Bakes env at options.width x options.width / 2 with renderEquirect (options.supersample^2
+  // solid-angle-weighted samples per texel). The sample spacing, pi / height / supersample
+  // radians, must be below the radius of the smallest bright source for the density to see it
+  // (the uniform part keeps the estimators unbiased either way). Throws aniso::Error naming the
+  // option that is out of range.
+  static EnvironmentDistribution bake(const Environment& env, const EnvSamplingOptions& options);
+
+  // Direction with density pdf(direction) from xi in [0, 1)^2 (clamped into it).
+  EnvSample sample(const glm::dvec2& xi) const;
+  // Density per unit solid angle of sample() at a direction (need not be unit; zero gives the
+  // zenith's texel).
+  double pdf(const glm::dvec3& direction) const;
+
+  int width() const { return width_; }
+  int height() const { return height_; }
+  const std::string& key() const { return key_; }
+
+  // Shader tables. cdfTable(): (max(W, H) + 1) x (H + 1), one channel; image row y < H holds
+  // the conditional CDF of grid row y (columns 0..W, from 0 to 1), row H the marginal CDF over
+  // rows (columns 0..H, from 0 to 1); entries past either end are 1. pdfTable(): W x H, one
+  // channel, the density per unit solid angle of each texel.
+  Image cdfTable() const;
+  Image pdfTable() const;
+
+private:
+  int width_ = 0;
+  int height_ = 0;
+  std::string key_;
+  std::vector<double> marginal_;    // height + 1
+  std::vector<double> conditional_; // height * (width + 1)
+  std::vector<double> density_;     // width * height, per solid angle
+};
+
+// Cache key of a bake: the environment's key and every option that changes the tables.
+std::string distributionKey(const std::string& environmentKey, const EnvSamplingOptions& options);
+
+// Bakes once per distributionKey and process: later calls with the same key share the result
+// while anyone holds it. Thread-safe.
+std::shared_ptr<const EnvironmentDistribution>
+sharedDistribution(const Environment& env, const EnvSamplingOptions& options);
+} // namespace aniso
