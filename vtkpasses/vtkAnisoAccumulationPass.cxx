@@ -373,11 +373,8 @@ vtkOpenGLQuadHelper* vtkAnisoAccumulationPass::Quad(vtkOpenGLRenderWindow* windo
 
 void vtkAnisoAccumulationPass::DrawBackground(vtkOpenGLRenderWindow* window, vtkRenderer* renderer)
 {
-  const bool environment =
-      this->Display.background == aniso::BackgroundMode::Environment && this->Lighting;
   vtkOpenGLQuadHelper* quad = this->Quad(
-      window, this->BackgroundQuad, aniso::shaders::kBackgroundFs,
-      environment ? "#define ANISO_BACKGROUND_ENVIRONMENT\n" : "", this->BackgroundDefines);
+      window, this->BackgroundQuad, aniso::shaders::kBackgroundFs, "", this->BackgroundDefines);
   if (!quad)
   {
     return;
@@ -394,23 +391,22 @@ void vtkAnisoAccumulationPass::DrawBackground(vtkOpenGLRenderWindow* window, vtk
   ostate->vtkglDepthMask(GL_FALSE);
   ostate->vtkglDisable(GL_BLEND);
   program->SetUniformf("quadDepth", 1.0f);
+  setMatrix(program, "clipToWorld", aniso::clipToWorld(renderer));
 
-  vtkTextureObject* cube = nullptr;
-  if (environment)
+  const bool environment =
+      this->Display.background == aniso::BackgroundMode::Environment && this->Lighting;
+  program->SetUniformi("showEnvironment", environment ? 1 : 0);
+  vtkTextureObject* cube = environment ? this->Lighting->cubeTexture(window) : nullptr;
+  if (cube)
   {
-    cube = this->Lighting->cubeTexture(window);
     cube->Activate();
     ostate->vtkglEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS);
     program->SetUniformi("environment", cube->GetTextureUnit());
-    setMatrix(program, "clipToWorld", aniso::clipToWorld(renderer));
     setMatrix(program, "worldToEnvironment", this->Lighting->worldToEnvironment());
   }
-  else
-  {
-    const bool color = this->Display.background == aniso::BackgroundMode::Color;
-    const glm::vec3 radiance = color ? glm::vec3(this->Display.backgroundColor) : glm::vec3(0.0f);
-    program->SetUniform3f("backgroundRadiance", glm::value_ptr(radiance));
-  }
+  const bool color = this->Display.background == aniso::BackgroundMode::Color;
+  const glm::vec3 radiance = color ? glm::vec3(this->Display.backgroundColor) : glm::vec3(0.0f);
+  program->SetUniform3f("backgroundRadiance", glm::value_ptr(radiance));
   quad->Render();
   if (cube)
   {

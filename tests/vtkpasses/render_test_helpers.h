@@ -1,0 +1,136 @@
+#pragma once
+// Shared by the render tests: the analytic view rays of a rendered image (from the camera
+// placement, not from VTK's matrices or the shaders), error metrics over covered pixels, checks
+// for non-finite values, and diff images kept when a comparison fails.
+#include "OffscreenRenderer.h"
+#include "ViewSettings.h"
+#include "image/image.h"
+
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <glm/geometric.hpp>
+#include <glm/vec3.hpp>
+#include <gtest/gtest.h>
+#include <iostream>
+#include <optional>
+#include <string>
+
+namespace aniso::test
+{
+// Render tests need an X server (./test runs the suite under xvfb-run).
+inline bool haveDisplay()
+{
+  const char* display = std::getenv("DISPLAY");
+  return display && *display;
+}
+
+#define ANISO_REQUIRE_DISPLAY()                                                                    \
+  if (!::aniso::test::haveDisplay())                                                               \
+  {                                                                                                \
+    GTEST_SKIP() << "no X display: run under xvfb-run (./test does)";                              \
+  }
+
+struct Ray
+{
+  glm::dvec3 origin;
+  glm::dvec3 direction; // unit
+};
+
+// The ray through the centre of pixel (x, y) (row 0 at the top) of a width x height image seen
+// by the camera placeCamera() gives: vertical field of view, square pixels.
+inline Ray pixelRay(const CameraPlacement& camera, int x, int y, int width, int height)
+{
+  const glm::dvec3 forward = glm::normalize(camera.focalPoint - camera.position);
+  const glm::dvec3 right = glm::normalize(glm::cross(forward, camera.viewUp));
+  const glm::dvec3 up = glm::cross(right, forward);
+  const double aspect = double(width) / height;
+  const double sx = (x + 0.5) / width * 2.0 - 1.0;
+  const double sy = 1.0 - (y + 0.5) / height * 2.0;
+  if (camera.parallel)
+  {
+    const glm::dvec3 origin = camera.position + sx * camera.parallelScale * aspect * right +
+                              sy * camera.parallelScale * up;
+    return {origin, forward};
+  }
+  const double t = std::tan(0.5 * camera.viewAngleDegrees * M_PI / 180.0);
+  return {camera.position, glm::normalize(forward + sx * t * aspect * right + sy * t * up)};
+}
+
+// First intersection with the unit sphere at the origin.
+inline std::optional<glm::dvec3> hitUnitSphere(const Ray& ray)
+{
+  const double b = glm::dot(ray.origin, ray.direction);
+  const double c = glm::dot(ray.origin, ray.origin) - 1.0;
+  const double discriminant = b * b - c;
+  if (discriminant < 0.0)
+  {
+    return std::nullopt;
+  }
+  const double t = -b - std::sqrt(discriminant);
+  if (t <= 0.0)
+  {
+    return std::nullopt;
+  }
+  return ray.origin + t * ray.direction;
+}
+
+// Counts NaN and infinite values in an image.
+inline int nonFiniteValues(const Image& image)
+{
+  int count = 0;
+  for (float value : image.data)
+  {
+    count += std::isfinite(value) ? 0 : 1;
+  }
+  return count;
+}
+
+// Where failing tests keep their images: $ANISO_TEST_OUTPUT, else the working directory.
+inline std::filesystem::path outputDirectory()
+{
+  const char* dir = std::getenv("ANISO_TEST_OUTPUT");
+  return dir && *dir ? std::filesystem::path(dir) : std::filesystem::current_path();
+}
+
+// |a - b| per channel (RGB, alpha 1), scaled so the largest difference is white.
+inline Image differenceImage(const Image& a, const Image& b)
+{
+  Image diff(a.width, a.height, 4);
+  float largest = 0.0f;
+  for (int y = 0; y < a.height; ++y)
+  {
+    for (int x = 0; x < a.width; ++x)
+    {
+      for (int c = 0; c < 3; ++c)
+      {
+        const float d = std::abs(a.at(x, y, c) - b.at(x, y, c));
+        diff.at(x, y, c) = std::isfinite(d) ? d : 1e30f;
+        largest = std::max(largest, diff.at(x, y, c));
+      }
+      diff.at(x, y, 3) = 1.0f;
+    }
+  }
+  for (int y = 0; y < a.height; ++y)
+  {
+    for (int x = 0; x < a.width; ++x)
+    {
+      for (int c = 0; c < 3; ++c)
+      {
+        diff.at(x, y, c) = largest > 0.0f ? diff.at(x, y, c) / largest : 0.0f;
+      }
+    }
+  }
+  return diff;
+}
+
+// Writes NAME_rendered.exr, NAME_expected.exr and NAME_diff.png for a failed comparison.
+inline void keepImages(const std::string& name, const Image& rendered, const Image& expected)
+{
+  const std::filesystem::path dir = outputDirectory();
+  writeImage((dir / (name + "_rendered.exr")).string(), rendered);
+  writeImage((dir / (name + "_expected.exr")).string(), expected);
+  writeImage((dir / (name + "_diff.png")).string(), differenceImage(rendered, expected));
+  std::cout << name << ": images kept in " << dir.string() << "\n";
+}
+} // namespace aniso::test
