@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <exception>
 #include <filesystem>
 #include <future>
 #include <limits>
@@ -222,6 +223,33 @@ bool writeLutFile(const std::string& directory, const Key& key, const AsLobe& lo
   return ok;
 }
 
+// Disk trouble of any kind, exceptions from the file system or the EXR library included, only
+// costs a bake: it never reaches the caller.
+DiskResult readLutFileSafely(const std::string& path, const Key& key, std::vector<float>& pixels)
+{
+  try
+  {
+    return readLutFile(path, key, pixels);
+  }
+  catch (const std::exception&)
+  {
+    return DiskResult::Rejected;
+  }
+}
+
+bool writeLutFileSafely(const std::string& directory, const Key& key, const AsLobe& lobe,
+                        const std::vector<float>& pixels)
+{
+  try
+  {
+    return writeLutFile(directory, key, lobe, pixels);
+  }
+  catch (const std::exception&)
+  {
+    return false;
+  }
+}
+
 std::string defaultDirectory()
 {
   // XDG: a relative XDG_CACHE_HOME is invalid and must be ignored.
@@ -302,7 +330,7 @@ struct LutCache::Impl
       if (!directory.empty())
       {
         const std::string path = (fs::path(directory) / fileName(key)).string();
-        const DiskResult result = readLutFile(path, key, pixelsOf(*made));
+        const DiskResult result = readLutFileSafely(path, key, pixelsOf(*made));
         rejected = result == DiskResult::Rejected;
         if (result == DiskResult::Loaded)
         {
@@ -314,7 +342,7 @@ struct LutCache::Impl
       {
         *made = make();
         writeFailed =
-            !directory.empty() && !writeLutFile(directory, key, made->lobe, pixelsOf(*made));
+            !directory.empty() && !writeLutFileSafely(directory, key, made->lobe, pixelsOf(*made));
       }
       lut = std::move(made);
     }
