@@ -75,11 +75,23 @@ void triangulateQuad(vtkPoints* points, const vtkIdType* ids, std::vector<Triang
   }
 }
 
+// Ear cutting costs O(n^2) and more: beyond this many vertices (no real mesh face has them, a
+// hostile file might) a fan is used directly.
+constexpr vtkIdType kMaxEarCutVertices = 1024;
+
 // Ear-cutting for larger polygons (handles concave planar ones); a fan when it fails, the
 // zero-area step then removes whatever slivers that leaves.
 void triangulatePolygon(vtkPoints* points, vtkIdType count, const vtkIdType* ids,
                         std::vector<Triangle>& out)
 {
+  if (count > kMaxEarCutVertices)
+  {
+    for (vtkIdType i = 1; i + 1 < count; ++i)
+    {
+      out.push_back({ids[0], ids[i], ids[i + 1]});
+    }
+    return;
+  }
   vtkNew<vtkPolygon> polygon;
   polygon->GetPointIds()->SetNumberOfIds(count);
   polygon->GetPoints()->SetNumberOfPoints(count);
@@ -405,6 +417,11 @@ std::vector<std::string> MeshReport::notes() const
     out.push_back("file normals discarded (" + plural(invalidNormals, "entry is", "entries are") +
                   " NaN, Inf or zero); recomputed");
   }
+  if (malformedArraysDropped > 0)
+  {
+    out.push_back(plural(malformedArraysDropped, "point attribute", "point attributes") +
+                  " without one value per vertex dropped");
+  }
   if (invalidTCoords > 0)
   {
     out.push_back("texture coordinates discarded (" +
@@ -519,17 +536,27 @@ vtkSmartPointer<vtkPolyData> sanitizeSurface(vtkPolyData* input, const std::stri
     used[t[0]] = used[t[1]] = used[t[2]] = 1;
   }
   vtkPointData* inPd = input->GetPointData();
-  vtkNew<vtkPointData> numericPd; // only numeric arrays take part in keys and output
+  // Only numeric arrays with one tuple per point take part in keys and output: a shorter array
+  // (a corrupt file) would be read past its end.
+  auto fits = [pointCount](vtkDataArray* array) {
+    return array && array->GetNumberOfTuples() == pointCount && array->GetNumberOfComponents() > 0;
+  };
+  vtkNew<vtkPointData> numericPd;
   for (int a = 0; a < inPd->GetNumberOfArrays(); ++a)
   {
-    if (vtkDataArray* array = inPd->GetArray(a))
+    vtkDataArray* array = inPd->GetArray(a);
+    if (fits(array))
     {
       numericPd->AddArray(array);
     }
+    else if (array)
+    {
+      ++report.malformedArraysDropped;
+    }
   }
-  numericPd->SetNormals(inPd->GetNormals());
-  numericPd->SetTCoords(inPd->GetTCoords());
-  numericPd->SetTangents(inPd->GetTangents());
+  numericPd->SetNormals(fits(inPd->GetNormals()) ? inPd->GetNormals() : nullptr);
+  numericPd->SetTCoords(fits(inPd->GetTCoords()) ? inPd->GetTCoords() : nullptr);
+  numericPd->SetTangents(fits(inPd->GetTangents()) ? inPd->GetTangents() : nullptr);
 
   const MergeKeys keys(points, numericPd, used);
   auto hash = [&keys](vtkIdType id) { return keys.hash(id); };

@@ -18,7 +18,8 @@
 //      "Normals" (3), "TCoords" (2) and "Tangents" (3, the xyz of a 4-component glTF tangent)
 //      and set active. A normals or texture-coordinate array with any non-finite or zero-length
 //      entry is discarded as a whole (normals are then recomputed by SurfacePreparation);
-//      tangents are validated later against the normals. Cell data is dropped.
+//      tangents are validated later against the normals. Point attributes without one value
+//      per vertex (corrupt files) and cell data are dropped.
 // Non-manifold and boundary edges are counted, not changed.
 // If no triangle survives, an aniso::Error "SUBJECT: reason" names what removed them.
 #include <cstdint>
@@ -48,6 +49,7 @@ struct MeshReport
   int64_t boundaryEdges = 0;    // edges used by one triangle (kept)
   int64_t invalidNormals = 0;   // entries that made the file's normals be discarded
   int64_t invalidTCoords = 0;   // entries that made the file's texture coordinates be discarded
+  int64_t malformedArraysDropped = 0; // point attributes without one tuple per vertex
 
   int64_t points = 0;    // in the result
   int64_t triangles = 0; // in the result

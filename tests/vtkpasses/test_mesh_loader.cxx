@@ -636,6 +636,63 @@ TEST_F(MeshLoaderTest, InvalidFileNormalsAreDiscardedForRecomputation)
   EXPECT_FALSE(mesh.report.hasNormals);
 }
 
+TEST_F(MeshLoaderTest, ConcaveAndHugePolygonsAreTriangulatedInsideThem)
+{
+  // An L-shaped hexagon listed from the corner whose fan would leave the shape: ear cutting
+  // must give the L's area, 3 + 2 = 5, with every triangle facing +Z.
+  const std::string l = "OFF\n6 1 0\n1 3 0\n0 3 0\n0 0 0\n3 0 0\n3 1 0\n1 1 0\n6 0 1 2 3 4 5\n";
+  LoadedMesh shape = this->loadQuietly(this->write("l.off", l));
+  EXPECT_EQ(shape.polyData->GetNumberOfPolys(), 4);
+  EXPECT_NEAR(test::surfaceArea(shape.polyData), 5.0, 1e-12);
+  test::forEachTriangle(shape.polyData,
+                        [&](vtkIdType a, vtkIdType b, vtkIdType c) {
+                          EXPECT_GT(test::faceNormalUnnormalised(shape.polyData, a, b, c).z, 0.0);
+                        });
+  // A convex 3000-gon (beyond the ear-cutting limit: fanned): n - 2 triangles and the regular
+  // polygon's area n/2 sin(2 pi / n).
+  const int n = 3000;
+  std::string big = "OFF\n" + std::to_string(n) + " 1 0\n";
+  for (int i = 0; i < n; ++i)
+  {
+    const double a = 2.0 * test::kPi * i / n;
+    big += std::to_string(std::cos(a)) + " " + std::to_string(std::sin(a)) + " 0\n";
+  }
+  big += std::to_string(n);
+  for (int i = 0; i < n; ++i)
+  {
+    big += " " + std::to_string(i);
+  }
+  LoadedMesh disc = this->loadQuietly(this->write("disc.off", big + "\n"));
+  EXPECT_EQ(disc.polyData->GetNumberOfPolys(), n - 2);
+  // Coordinates were written with 6 decimals: the area is good to about 1e-5.
+  EXPECT_NEAR(test::surfaceArea(disc.polyData), 0.5 * n * std::sin(2.0 * test::kPi / n), 1e-4);
+}
+
+TEST(MeshValidation, AttributesWithoutOneValuePerVertexAreDropped)
+{
+  // A corrupt file's attribute shorter than the vertex list must not be read past its end.
+  auto mesh = vtkSmartPointer<vtkPolyData>::New();
+  vtkNew<vtkPoints> points;
+  points->InsertNextPoint(0, 0, 0);
+  points->InsertNextPoint(1, 0, 0);
+  points->InsertNextPoint(0, 1, 0);
+  vtkNew<vtkCellArray> polys;
+  const vtkIdType ids[3] = {0, 1, 2};
+  polys->InsertNextCell(3, ids);
+  mesh->SetPoints(points);
+  mesh->SetPolys(polys);
+  vtkNew<vtkFloatArray> shortNormals;
+  shortNormals->SetNumberOfComponents(3);
+  shortNormals->InsertNextTuple3(0, 0, 1);
+  shortNormals->SetName("Normals");
+  mesh->GetPointData()->SetNormals(shortNormals);
+  MeshReport report;
+  vtkSmartPointer<vtkPolyData> clean = sanitizeSurface(mesh, "short.vtp", report);
+  EXPECT_EQ(report.malformedArraysDropped, 1);
+  EXPECT_EQ(clean->GetPointData()->GetNormals(), nullptr);
+  EXPECT_EQ(clean->GetNumberOfPolys(), 1);
+}
+
 TEST_F(MeshLoaderTest, OffVariantsParse)
 {
   // Counts on the header line, CRLF ends, comments, a pentagon (3 triangles) and a line.
