@@ -440,7 +440,7 @@ std::string toXml(vtkPolyData* polyData)
 // hostile size field fails as an allocation error instead of exhausting the machine.
 void limitChildMemory(uintmax_t fileSize)
 {
-  long pageSize = ::sysconf(_SC_PAGESIZE);
+  const long pageSize = ::sysconf(_SC_PAGESIZE);
   std::ifstream statm("/proc/self/statm");
   unsigned long long pages = 0;
   if (!(statm >> pages) || pageSize <= 0)
@@ -550,7 +550,8 @@ vtkSmartPointer<vtkPolyData> readIsolated(const std::string& path, const std::st
                                           uintmax_t fileSize, std::vector<std::string>& warnings)
 {
   int fds[2];
-  if (::pipe(fds) != 0)
+  // Close-on-exec: a process another thread starts meanwhile must not hold the write end open.
+  if (::pipe2(fds, O_CLOEXEC) != 0)
   {
     throw errorAbout(path, "cannot start the reader process (no pipe)");
   }
