@@ -7,6 +7,7 @@
 // finite values over the whole stress range.
 #include "brdf/ashikhmin_shirley.h"
 #include "brdf/ggx.h"
+#include "chi_square.h"
 #include "env/environment.h"
 #include "env/quadrature.h"
 #include "error.h"
@@ -75,79 +76,15 @@ int azimuthsFor(const aniso::GgxLobe& lobe)
   return std::clamp(int(20.0 / ratio), 128, 8192);
 }
 
-// Regularised upper incomplete gamma Q(a, x): series for x < a + 1, Lentz's continued fraction
-// otherwise. The chi-square p-value of statistic x with k degrees of freedom is Q(k/2, x/2).
-double gammaQ(double a, double x)
-{
-  const double logPrefix = -x + a * std::log(x) - std::lgamma(a);
-  if (x < a + 1.0)
-  {
-    double term = 1.0 / a;
-    double sum = term;
-    for (int n = 1; n < 10000; ++n)
-    {
-      term *= x / (a + n);
-      sum += term;
-      if (term < sum * 1e-15)
-        break;
-    }
-    return 1.0 - sum * std::exp(logPrefix);
-  }
-  const double tiny = 1e-300;
-  double b = x + 1.0 - a;
-  double c = 1.0 / tiny;
-  double d = 1.0 / b;
-  double h = d;
-  for (int i = 1; i < 10000; ++i)
-  {
-    const double an = -i * (i - a);
-    b += 2.0;
-    d = an * d + b;
-    if (std::abs(d) < tiny)
-      d = tiny;
-    c = b + an / c;
-    if (std::abs(c) < tiny)
-      c = tiny;
-    d = 1.0 / d;
-    const double delta = d * c;
-    h *= delta;
-    if (std::abs(delta - 1.0) < 1e-15)
-      break;
-  }
-  return std::exp(logPrefix) * h;
-}
-
-// Pearson chi-square p-value of observed counts against expected ones; bins expected below 5
-// are pooled into one.
+// Chi-square p-value; bins the density gives almost no samples must stay nearly empty.
 double chiSquarePValue(const std::vector<double>& observed, const std::vector<double>& expected)
 {
-  double statistic = 0.0;
-  int bins = 0;
-  double pooledObserved = 0.0;
-  double pooledExpected = 0.0;
-  for (std::size_t i = 0; i < observed.size(); ++i)
+  const aniso_test::ChiSquareResult r = aniso_test::chiSquare(observed, expected);
+  if (r.pooledExpected < 5.0)
   {
-    if (expected[i] < 5.0)
-    {
-      pooledObserved += observed[i];
-      pooledExpected += expected[i];
-      continue;
-    }
-    const double d = observed[i] - expected[i];
-    statistic += d * d / expected[i];
-    ++bins;
+    EXPECT_LE(r.pooledObserved, 20.0) << "samples where the density says there are almost none";
   }
-  if (pooledExpected >= 5.0)
-  {
-    const double d = pooledObserved - pooledExpected;
-    statistic += d * d / pooledExpected;
-    ++bins;
-  }
-  else
-  {
-    EXPECT_LE(pooledObserved, 20.0) << "samples where the density says there are almost none";
-  }
-  return gammaQ(0.5 * (bins - 1), 0.5 * statistic);
+  return r.pValue;
 }
 
 // Independent GGX f(v, l)(n.l), written out: D G2 F / (4 n.v), with
