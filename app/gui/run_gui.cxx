@@ -109,8 +109,11 @@ bool isGuiCommandLine(const std::vector<std::string>& args)
   {
     return true;
   }
+  // A path (it has a directory or an extension) is a mesh, even a missing one: the window
+  // then says the file does not exist, rather than calling it an unknown command.
   std::error_code ec;
-  return first[0] != '-' && std::filesystem::is_regular_file(first, ec);
+  return first[0] != '-' && (first.find_first_of("./") != std::string::npos ||
+                             std::filesystem::is_regular_file(first, ec));
 }
 
 std::string guiUsage()

@@ -6,8 +6,8 @@
 namespace aniso::gui
 {
 // Whether ARGS (the command line without the program name) asks for the window: no arguments,
-// a window option first, or a first argument that names a mesh (an existing file or
-// builtin:sphere|torus|plate) rather than a command.
+// a window option first, or a first argument that names a mesh (a path: an existing file, or
+// any text with a '.' or '/'; or builtin:sphere|torus|plate) rather than a command.
 bool isGuiCommandLine(const std::vector<std::string>& args);
 
 // The window options, for the main help text.

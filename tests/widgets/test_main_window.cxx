@@ -1,0 +1,233 @@
+// The application window with its VTK view (needs an X server: run under Xvfb, serially).
+// Checks: a corrupt or missing mesh, image or environment is reported and leaves the scene as
+// it was; an idle window stops drawing once the view reaches its sample count and starts again
+// on a change; screenshots are written in each format with the requested size and alpha
+// (sizes from the widget, alpha 0 on the background and 1 on the sphere's centre, which the
+// framed sphere covers); a session's camera reaches the view; the scripted command line writes
+// a screenshot or fails with the file's name.
+#include "MainWindow.h"
+#include "SceneView.h"
+#include "error.h"
+#include "image/image.h"
+
+#include <QApplication>
+#include <QFile>
+#include <QProcess>
+#include <QSignalSpy>
+#include <QStandardPaths>
+#include <QSurfaceFormat>
+#include <QTemporaryDir>
+#include <QUndoStack>
+#include <QVTKOpenGLNativeWidget.h>
+#include <QtTest>
+#include <cmath>
+#include <vtkCamera.h>
+#include <vtkOpenGLRenderer.h>
+
+using aniso::numberValue;
+using aniso::textValue;
+
+namespace
+{
+void writeGarbage(const QString& path)
+{
+  QFile f(path);
+  QVERIFY(f.open(QIODevice::WriteOnly));
+  f.write("solid broken\n this is not a mesh nor an image \x01\x02\x03");
+}
+
+// One sample per frame and per pixel: the cheapest scene that still exercises everything.
+void cheapScene(aniso::MainWindow& window, int target)
+{
+  window.model()->setValues({{"mesh", textValue("builtin:sphere")},
+                             {"samples", numberValue(1.0)},
+                             {"target-samples", numberValue(target)}});
+}
+} // namespace
+
+class TestMainWindow : public QObject
+{
+  Q_OBJECT
+
+private slots:
+  void initTestCase() { QStandardPaths::setTestModeEnabled(true); }
+
+  void badFilesKeepTheScene()
+  {
+    QTemporaryDir dir;
+    aniso::MainWindow window;
+    window.setErrorDialogs(false);
+    window.show();
+    QSignalSpy errors(&window, &aniso::MainWindow::errorReported);
+    const aniso::SceneModel::Values before = window.model()->values();
+    const QString mesh = dir.filePath("broken.stl");
+    const QString image = dir.filePath("broken.png");
+    const QString hdr = dir.filePath("broken.hdr");
+    for (const QString& path : {mesh, image, hdr})
+    {
+      writeGarbage(path);
+    }
+    QVERIFY(!window.openMesh(mesh));
+    QVERIFY(!window.openMesh(dir.filePath("missing.obj")));
+    QVERIFY(!window.openAny(image));
+    QVERIFY(!window.openEnvironment(hdr));
+    QCOMPARE(errors.count(), 4);
+    QVERIFY(errors.at(0).at(0).toString().startsWith(mesh));
+    QVERIFY(errors.at(1).at(0).toString().contains("missing.obj"));
+    QVERIFY(errors.at(2).at(0).toString().startsWith(image));
+    QVERIFY(errors.at(3).at(0).toString().startsWith(hdr));
+    QVERIFY(window.model()->values() == before);
+    QCOMPARE(window.editor()->undoStack()->count(), 0);
+  }
+
+  void idleWindowStopsDrawing()
+  {
+    aniso::MainWindow window;
+    window.setErrorDialogs(false);
+    window.view()->setSettleMs(50);
+    cheapScene(window, 3);
+    window.show();
+    aniso::SceneView* view = window.view();
+    QTRY_VERIFY_WITH_TIMEOUT(view->converged(), 60000);
+    QCOMPARE(view->accumulatedSamples(), 3);
+    QSignalSpy frames(view, &aniso::SceneView::frameRendered);
+    QTest::qWait(500);
+    QCOMPARE(frames.count(), 0); // still: nothing is drawn
+    window.editor()->edit("nu", numberValue(20000.0));
+    QVERIFY(frames.wait(10000));
+    QTRY_VERIFY_WITH_TIMEOUT(view->converged(), 60000);
+    const int afterChange = frames.count();
+    QVERIFY(afterChange >= 3);
+    QTest::qWait(300);
+    QCOMPARE(frames.count(), afterChange);
+  }
+
+  void screenshotsHaveTheRequestedSizeAndAlpha()
+  {
+    QTemporaryDir dir;
+    aniso::MainWindow window;
+    window.setErrorDialogs(false);
+    cheapScene(window, 1);
+    window.resize(900, 640);
+    window.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&window));
+    const int w = window.vtkWidget()->width();
+    const int h = window.vtkWidget()->height();
+
+    const QString png = dir.filePath("view.png");
+    window.exportScreenshot(png, {});
+    const aniso::Image opaque = aniso::readImage(png.toStdString());
+    QCOMPARE(opaque.width, w);
+    QCOMPARE(opaque.height, h);
+    QCOMPARE(opaque.channels, 3);
+
+    const QString clear = dir.filePath("clear.png");
+    window.exportScreenshot(clear, {2, true});
+    const aniso::Image transparent = aniso::readImage(clear.toStdString());
+    QCOMPARE(transparent.width, 2 * w);
+    QCOMPARE(transparent.height, 2 * h);
+    QCOMPARE(transparent.channels, 4);
+    QCOMPARE(transparent.at(0, 0, 3), 0.0f);
+    QCOMPARE(transparent.at(w, h, 3), 1.0f);
+
+    const QString exr = dir.filePath("view.exr");
+    window.exportScreenshot(exr, {});
+    const aniso::Image linear = aniso::readImage(exr.toStdString());
+    QCOMPARE(linear.width, w);
+    QCOMPARE(linear.channels, 4);
+    QCOMPARE(linear.at(w / 2, h / 2, 3), 1.0f);
+    for (float v : linear.data)
+    {
+      QVERIFY(std::isfinite(v));
+    }
+    QVERIFY(linear.at(w / 2, h / 2, 0) > 0.0f);
+
+    const QString tif = dir.filePath("view.tif");
+    window.exportScreenshot(tif, {3, false});
+    const aniso::Image tiff = aniso::readImage(tif.toStdString());
+    QCOMPARE(tiff.width, 3 * w);
+    QCOMPARE(tiff.height, 3 * h);
+
+    const auto refused = [&](const QString& path, int scale)
+    {
+      aniso::ScreenshotOptions options;
+      options.scale = scale;
+      try
+      {
+        window.exportScreenshot(path, options);
+      }
+      catch (const aniso::Error& e)
+      {
+        return QString(e.what()).startsWith(path + ": ");
+      }
+      return false;
+    };
+    QVERIFY(refused(dir.filePath("view.bmp"), 1));
+    QVERIFY(refused(png, 5));
+  }
+
+  // The camera a session stores is the one the view shows.
+  void sessionCameraReachesTheView()
+  {
+    QTemporaryDir dir;
+    const QString path = dir.filePath("camera.json");
+    QFile f(path);
+    QVERIFY(f.open(QIODevice::WriteOnly));
+    f.write(R"({"format": "aniso-session", "version": 1,
+      "parameters": {"samples": 1, "target-samples": 1},
+      "assets": {"mesh": "builtin:plate"},
+      "view": {"position": [0, -5, 2], "focal-point": [0, 0, 0.5], "view-up": [0, 0, 1],
+               "view-angle": 25, "parallel": false, "parallel-scale": 1}})");
+    f.close();
+    aniso::MainWindow window;
+    window.setErrorDialogs(false);
+    window.show();
+    QVERIFY(window.openSession(path));
+    vtkCamera* camera = window.view()->renderer()->GetActiveCamera();
+    QCOMPARE(camera->GetPosition()[1], -5.0);
+    QCOMPARE(camera->GetFocalPoint()[2], 0.5);
+    QCOMPARE(camera->GetViewAngle(), 25.0);
+    QCOMPARE(window.model()->text("mesh"), std::string("builtin:plate"));
+  }
+
+  // `aniso MESH --screenshot FILE --quit` writes the view and exits 0; a missing mesh exits 1
+  // with one line naming it.
+  void scriptedScreenshot()
+  {
+    QTemporaryDir dir;
+    const QString session = dir.filePath("cheap.json");
+    QFile f(session);
+    QVERIFY(f.open(QIODevice::WriteOnly));
+    f.write(R"({"format": "aniso-session", "version": 1,
+      "parameters": {"samples": 1, "target-samples": 1}, "assets": {"mesh": "builtin:sphere"}})");
+    f.close();
+    const QString out = dir.filePath("shot.png");
+    QProcess run;
+    QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+    env.insert("XDG_CONFIG_HOME", dir.path());
+    run.setProcessEnvironment(env);
+    run.start(ANISO_EXECUTABLE,
+              {"builtin:sphere", "--session", session, "--screenshot", out, "--quit"});
+    QVERIFY(run.waitForFinished(60000));
+    QCOMPARE(run.exitCode(), 0);
+    QCOMPARE(aniso::readImage(out.toStdString()).channels, 3);
+
+    const QString missing = dir.filePath("missing.stl");
+    run.start(ANISO_EXECUTABLE, {missing, "--screenshot", out, "--quit"});
+    QVERIFY(run.waitForFinished(60000));
+    QCOMPARE(run.exitCode(), 1);
+    const QString err = QString::fromUtf8(run.readAllStandardError()).trimmed();
+    QVERIFY2(err.contains("aniso: " + missing + ": "), qPrintable(err));
+  }
+};
+
+int main(int argc, char** argv)
+{
+  // The VTK widget needs its OpenGL format before the application exists.
+  QSurfaceFormat::setDefaultFormat(QVTKOpenGLNativeWidget::defaultFormat());
+  QApplication app(argc, argv);
+  TestMainWindow test;
+  return QTest::qExec(&test, argc, argv);
+}
+
+#include "test_main_window.moc"
