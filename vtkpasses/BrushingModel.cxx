@@ -117,14 +117,12 @@ std::vector<glm::dvec3> accumulateUvTangents(vtkPolyData* surface, vtkDataArray*
                                  pointAt(surface, ids[2])};
         const glm::dvec3 e1 = p[1] - p[0];
         const glm::dvec3 e2 = p[2] - p[0];
-        double uv0[2], uv1[2], uv2[2];
-        tcoords->GetTuple(ids[0], uv0);
-        tcoords->GetTuple(ids[1], uv1);
-        tcoords->GetTuple(ids[2], uv2);
-        const double du1 = uv1[0] - uv0[0];
-        const double dv1 = uv1[1] - uv0[1];
-        const double du2 = uv2[0] - uv0[0];
-        const double dv2 = uv2[1] - uv0[1];
+        // Component-wise: the array may carry a third texture coordinate.
+        auto uv = [tcoords](vtkIdType id, int c) { return tcoords->GetComponent(id, c); };
+        const double du1 = uv(ids[1], 0) - uv(ids[0], 0);
+        const double dv1 = uv(ids[1], 1) - uv(ids[0], 1);
+        const double du2 = uv(ids[2], 0) - uv(ids[0], 0);
+        const double dv2 = uv(ids[2], 1) - uv(ids[0], 1);
         const double det = du1 * dv2 - du2 * dv1;
         if (det == 0.0)
         {
