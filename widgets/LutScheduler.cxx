@@ -238,23 +238,16 @@ void LutScheduler::requestNow()
         {
           const uint64_t bakesBefore = cache->stats().bakes;
           LutResult& r = outcome.result;
-          if (!cancel->load())
-          {
-            r.halfVector = cache->halfVector(request.lobe, request.size);
-          }
-          if (!cancel->load())
-          {
-            r.brdf = cache->brdf(request.lobe, request.size, request.samples);
-          }
-          if (cancel->load())
-          {
-            outcome.cancelled = true;
-            return outcome;
-          }
+          r.halfVector = cache->halfVector(request.lobe, request.size, cancel.get());
+          r.brdf = cache->brdf(request.lobe, request.size, request.samples, cancel.get());
           r.baked = cache->stats().bakes != bakesBefore;
           r.halfVectorImage = halfVectorPreview(*r.halfVector);
           r.pdfImage = pdfPreview(*r.halfVector, r.pdfRange);
           r.brdfImage = brdfPreview(*r.brdf, &r.maxBias);
+        }
+        catch (const BakeCancelled&)
+        {
+          outcome.cancelled = true;
         }
         catch (const Error& e)
         {

@@ -41,8 +41,10 @@ void checkThreads(int threads)
 // threads) that take rows one at a time. Each row is computed by one call, so the result does
 // not depend on the schedule. Small jobs stay on the calling thread: starting a thread costs
 // more than they do. If the system refuses a thread, the calling thread does its share.
+// A set cancel flag makes the workers take no further row, and then throws BakeCancelled.
 template <class RowFn>
-void forEachRow(int rows, int threads, double workPerRow, const RowFn& rowFn)
+void forEachRow(int rows, int threads, double workPerRow, const std::atomic<bool>* cancel,
+                const RowFn& rowFn)
 {
   int count = threads > 0 ? threads : static_cast<int>(std::thread::hardware_concurrency());
   constexpr double kWorkPerThread = 32768.0; // inner-loop iterations that justify a thread
@@ -54,6 +56,10 @@ void forEachRow(int rows, int threads, double workPerRow, const RowFn& rowFn)
   {
     for (int row = next.fetch_add(1); row < rows; row = next.fetch_add(1))
     {
+      if (cancel && cancel->load(std::memory_order_relaxed))
+      {
+        return;
+      }
       rowFn(row);
     }
   };
@@ -74,6 +80,10 @@ void forEachRow(int rows, int threads, double workPerRow, const RowFn& rowFn)
   for (std::thread& t : pool)
   {
     t.join();
+  }
+  if (cancel && cancel->load())
+  {
+    throw BakeCancelled("bake: cancelled");
   }
 }
 
@@ -175,7 +185,8 @@ glm::dvec2 sizeBiasAt(const AsLobe& lobe, const glm::dvec3& view, int samples)
   return sizeBiasOver(halfVectorSamples(lobe, samples), samples, view);
 }
 
-HalfVectorLut bakeHalfVectorLut(const AsLobe& lobe, int size, int threads)
+HalfVectorLut bakeHalfVectorLut(const AsLobe& lobe, int size, int threads,
+                                const std::atomic<bool>* cancel)
 {
   checkLutInputs(lobe, size);
   checkThreads(threads);
@@ -184,7 +195,7 @@ HalfVectorLut bakeHalfVectorLut(const AsLobe& lobe, int size, int threads)
   lut.lobe = lobe;
   lut.rgba.resize(std::size_t(size) * size * 4);
   const double inv = 1.0 / size;
-  forEachRow(size, threads, 64.0 * size,
+  forEachRow(size, threads, 64.0 * size, cancel,
              [&](int j)
              {
                float* row = lut.rgba.data() + std::size_t(j) * size * 4;
@@ -200,7 +211,8 @@ HalfVectorLut bakeHalfVectorLut(const AsLobe& lobe, int size, int threads)
   return lut;
 }
 
-BrdfLut bakeBrdfLut(const AsLobe& lobe, int size, int samples, int threads)
+BrdfLut bakeBrdfLut(const AsLobe& lobe, int size, int samples, int threads,
+                    const std::atomic<bool>* cancel)
 {
   checkLutInputs(lobe, size, samples);
   checkThreads(threads);
@@ -211,7 +223,7 @@ BrdfLut bakeBrdfLut(const AsLobe& lobe, int size, int samples, int threads)
   lut.rg.resize(std::size_t(size) * size * 2);
   const HalfVectorSet halfVectors = halfVectorSamples(lobe, samples);
   const double inv = 1.0 / size;
-  forEachRow(size, threads, double(size) * samples,
+  forEachRow(size, threads, double(size) * samples, cancel,
              [&](int j)
              {
                float* row = lut.rg.data() + std::size_t(j) * size * 2;

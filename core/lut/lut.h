@@ -2,7 +2,9 @@
 // Lookup tables of the AS method (DESIGN.md, source 1), float, baked on all cores,
 // deterministic (same inputs, same bits, whatever the thread count), cached by their inputs.
 #include "brdf/ashikhmin_shirley.h"
+#include "error.h"
 
+#include <atomic>
 #include <cstdint>
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
@@ -47,10 +49,21 @@ glm::dvec3 brdfLutView(const glm::dvec2& uv);
 // A view below the horizon (n.v < 0) gives (0, 0).
 glm::dvec2 sizeBiasAt(const AsLobe& lobe, const glm::dvec3& view, int samples);
 
+// Thrown by a bake whose cancel flag was set: it stopped early and made nothing.
+class BakeCancelled : public Error
+{
+public:
+  using Error::Error;
+};
+
 // threads: 0 uses every hardware thread; the result does not depend on it (every texel is
 // computed alone, in the same order). Invalid inputs throw aniso::Error "name: reason".
-HalfVectorLut bakeHalfVectorLut(const AsLobe& lobe, int size, int threads = 0);
-BrdfLut bakeBrdfLut(const AsLobe& lobe, int size, int samples, int threads = 0);
+// cancel: when another thread sets it, the bake stops after the rows in progress and throws
+// BakeCancelled (an interactive caller drops a bake that newer inputs made stale).
+HalfVectorLut bakeHalfVectorLut(const AsLobe& lobe, int size, int threads = 0,
+                                const std::atomic<bool>* cancel = nullptr);
+BrdfLut bakeBrdfLut(const AsLobe& lobe, int size, int samples, int threads = 0,
+                    const std::atomic<bool>* cancel = nullptr);
 
 // Limits checked by the bakers (aniso::Error otherwise).
 constexpr int kMinLutSize = 2;

@@ -299,19 +299,32 @@ struct LutCache::Impl
   // key meanwhile wait for its result instead of baking it again.
   template <class Lut, class Make>
   std::shared_ptr<const Lut> get(EntryMap<Lut>& map, const Key& key, const AsLobe& lobe,
-                                 const Make& make)
+                                 const Make& make, const std::atomic<bool>* cancel)
   {
     std::unique_lock<std::mutex> lock(mutex);
     auto found = map.find(key);
-    if (found != map.end())
+    while (found != map.end())
     {
       std::shared_ptr<Entry<Lut>> entry = found->second;
       entry->lastUse = ++tick;
       lock.unlock();
-      std::shared_ptr<const Lut> lut = entry->future.get();
-      lock.lock();
-      ++stats.memoryHits;
-      return lut;
+      try
+      {
+        std::shared_ptr<const Lut> lut = entry->future.get();
+        lock.lock();
+        ++stats.memoryHits;
+        return lut;
+      }
+      catch (const BakeCancelled&)
+      {
+        // The caller making it gave up (its entry is gone already); this one did not.
+        if (cancel && cancel->load())
+        {
+          throw;
+        }
+        lock.lock();
+        found = map.find(key);
+      }
     }
     std::promise<std::shared_ptr<const Lut>> promise;
     auto entry = std::make_shared<Entry<Lut>>();
@@ -348,13 +361,15 @@ struct LutCache::Impl
     }
     catch (...)
     {
-      promise.set_exception(std::current_exception());
+      // Erased before waiters wake, so a waiter that retries never finds this entry again.
       lock.lock();
       auto current = map.find(key);
       if (current != map.end() && current->second == entry)
       {
         map.erase(current);
       }
+      lock.unlock();
+      promise.set_exception(std::current_exception());
       throw;
     }
     promise.set_value(lut);
@@ -456,18 +471,22 @@ LutCache::LutCache(std::string directory) : impl_(std::make_unique<Impl>())
 
 LutCache::~LutCache() = default;
 
-std::shared_ptr<const HalfVectorLut> LutCache::halfVector(const AsLobe& lobe, int size)
+std::shared_ptr<const HalfVectorLut> LutCache::halfVector(const AsLobe& lobe, int size,
+                                                          const std::atomic<bool>* cancel)
 {
   checkLutInputs(lobe, size);
-  return impl_->get(impl_->halfVectors, keyOf(Kind::HalfVector, lobe, size, 0), lobe,
-                    [&] { return bakeHalfVectorLut(lobe, size); });
+  return impl_->get(
+      impl_->halfVectors, keyOf(Kind::HalfVector, lobe, size, 0), lobe,
+      [&] { return bakeHalfVectorLut(lobe, size, 0, cancel); }, cancel);
 }
 
-std::shared_ptr<const BrdfLut> LutCache::brdf(const AsLobe& lobe, int size, int samples)
+std::shared_ptr<const BrdfLut> LutCache::brdf(const AsLobe& lobe, int size, int samples,
+                                              const std::atomic<bool>* cancel)
 {
   checkLutInputs(lobe, size, samples);
-  return impl_->get(impl_->brdfs, keyOf(Kind::Brdf, lobe, size, samples), lobe,
-                    [&] { return bakeBrdfLut(lobe, size, samples); });
+  return impl_->get(
+      impl_->brdfs, keyOf(Kind::Brdf, lobe, size, samples), lobe,
+      [&] { return bakeBrdfLut(lobe, size, samples, 0, cancel); }, cancel);
 }
 
 LutCacheStats LutCache::stats() const

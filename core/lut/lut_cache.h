@@ -40,8 +40,13 @@ public:
   LutCache& operator=(const LutCache&) = delete;
 
   // Invalid inputs throw aniso::Error as the bakers do (checkLutInputs).
-  std::shared_ptr<const HalfVectorLut> halfVector(const AsLobe& lobe, int size);
-  std::shared_ptr<const BrdfLut> brdf(const AsLobe& lobe, int size, int samples);
+  // cancel: as for the bakers; a set flag makes the call throw BakeCancelled and stores
+  // nothing. A caller waiting for the same LUT from a bake that was cancelled makes it itself
+  // (unless its own flag is set too).
+  std::shared_ptr<const HalfVectorLut> halfVector(const AsLobe& lobe, int size,
+                                                  const std::atomic<bool>* cancel = nullptr);
+  std::shared_ptr<const BrdfLut> brdf(const AsLobe& lobe, int size, int samples,
+                                      const std::atomic<bool>* cancel = nullptr);
 
   LutCacheStats stats() const;
   // The directory in use; empty when the cache is memory only.
