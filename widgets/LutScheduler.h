@@ -6,7 +6,8 @@
 // debounce interval. Each request goes to a worker thread that takes the half-vector and BRDF
 // LUTs from the LutCache (baking what is missing) and makes their preview images there too.
 // The latest request wins: a newer one sets the cancel flag of the one in flight (the bakers
-// stop within a few rows), and results of stale requests are dropped. Returning to earlier values is a memory hit of the cache.
+// stop within a few rows), and results of stale requests are dropped. Returning to earlier values
+// is a memory hit of the cache.
 #include "SceneModel.h"
 #include "brdf/ashikhmin_shirley.h"
 #include "lut/lut.h"

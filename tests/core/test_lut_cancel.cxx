@@ -32,10 +32,12 @@ TEST(LutCancel, SetFlagStopsBothBakers)
 TEST(LutCancel, FlagSetDuringABakeStopsIt)
 {
   std::atomic<bool> cancel{false};
-  std::thread canceller([&] {
-    std::this_thread::sleep_for(std::chrono::milliseconds(50));
-    cancel = true;
-  });
+  std::thread canceller(
+      [&]
+      {
+        std::this_thread::sleep_for(std::chrono::milliseconds(50));
+        cancel = true;
+      });
   EXPECT_THROW(aniso::bakeBrdfLut(kLobe, 1024, 1 << 16, 0, &cancel), aniso::BakeCancelled);
   canceller.join();
 }
@@ -55,29 +57,33 @@ TEST(LutCancel, CacheKeepsNothingAndWaitersCarryOn)
   const int size = 128;
   const int samples = 1 << 14;
   std::atomic<bool> first{false};
-  auto cancelled = std::async(std::launch::async, [&] {
-    try
-    {
-      cache.brdf(kLobe, size, samples, &first);
-      return false;
-    }
-    catch (const aniso::BakeCancelled&)
-    {
-      return true;
-    }
-  });
+  auto cancelled = std::async(std::launch::async,
+                              [&]
+                              {
+                                try
+                                {
+                                  cache.brdf(kLobe, size, samples, &first);
+                                  return false;
+                                }
+                                catch (const aniso::BakeCancelled&)
+                                {
+                                  return true;
+                                }
+                              });
   std::this_thread::sleep_for(std::chrono::milliseconds(30));
   std::atomic<bool> second{false};
-  auto waiter = std::async(std::launch::async, [&] {
-    try
-    {
-      return cache.brdf(kLobe, size, samples, &second) != nullptr ? 1 : 0;
-    }
-    catch (const aniso::BakeCancelled&)
-    {
-      return 2; // only its own flag may stop it
-    }
-  });
+  auto waiter = std::async(std::launch::async,
+                           [&]
+                           {
+                             try
+                             {
+                               return cache.brdf(kLobe, size, samples, &second) != nullptr ? 1 : 0;
+                             }
+                             catch (const aniso::BakeCancelled&)
+                             {
+                               return 2; // only its own flag may stop it
+                             }
+                           });
   std::this_thread::sleep_for(std::chrono::milliseconds(30));
   first = true;
   EXPECT_TRUE(cancelled.get());
@@ -89,15 +95,17 @@ TEST(LutCancel, CacheKeepsNothingAndWaitersCarryOn)
 
   // A waiter whose first caller is cancelled completes with the same bits as a direct bake.
   std::atomic<bool> third{false};
-  auto slow = std::async(std::launch::async, [&] {
-    try
-    {
-      cache.halfVector(kLobe, 512, &third);
-    }
-    catch (const aniso::BakeCancelled&)
-    {
-    }
-  });
+  auto slow = std::async(std::launch::async,
+                         [&]
+                         {
+                           try
+                           {
+                             cache.halfVector(kLobe, 512, &third);
+                           }
+                           catch (const aniso::BakeCancelled&)
+                           {
+                           }
+                         });
   std::this_thread::sleep_for(std::chrono::milliseconds(5));
   auto other = std::async(std::launch::async, [&] { return cache.halfVector(kLobe, 512); });
   third = true;
