@@ -12,8 +12,8 @@ namespace
 {
 std::string mainHelp()
 {
-  return "Usage: aniso [--help | --version] COMMAND [ARGS...]\n"
-         "       " + aniso::gui::guiUsage() + "  (opens the window)\n\n"
+  return "Usage: aniso [--help | --version] COMMAND [ARGS...]\n       " + aniso::gui::guiUsage() +
+         "  (opens the window)\n\n"
          "aniso renders meshes with anisotropic Ashikhmin-Shirley materials under image-based\n"
          "lighting.\n\n"
          "Commands:\n"
