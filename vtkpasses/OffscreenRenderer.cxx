@@ -11,6 +11,8 @@
 #include <cmath>
 #include <cstdlib>
 #include <glm/geometric.hpp>
+#include <mutex>
+#include <thread>
 #include <vtkActor.h>
 #include <vtkCamera.h>
 #include <vtkNew.h>
@@ -56,7 +58,9 @@ void validate(const RenderSettings& s)
   AnisoMaterial::validate(s.material);
 }
 
-// VTK's X window aborts the process when it cannot reach a display: check first.
+// VTK's X window aborts the process when it cannot reach a display: check first. The check's
+// connection stays open for the life of the process: an X server resets when its last client
+// leaves and refuses connections meanwhile, which would fail the next render's window at random.
 void requireDisplay()
 {
   const char* name = std::getenv("DISPLAY");
@@ -64,12 +68,21 @@ void requireDisplay()
   {
     throw errorAbout("render", "no X display (DISPLAY is not set); run under xvfb-run");
   }
-  Display* display = XOpenDisplay(nullptr);
-  if (!display)
+  static std::mutex mutex;
+  static Display* connection = nullptr;
+  std::lock_guard<std::mutex> lock(mutex);
+  for (int attempt = 0; !connection && attempt < 20; ++attempt)
+  {
+    connection = XOpenDisplay(nullptr);
+    if (!connection)
+    {
+      std::this_thread::sleep_for(std::chrono::milliseconds(50)); // a server resetting
+    }
+  }
+  if (!connection)
   {
     throw errorAbout("render", std::string("cannot open the X display ") + name);
   }
-  XCloseDisplay(display);
 }
 
 // Centre and radius of a sphere around every point (bounding-box centre, farthest point).
