@@ -6,15 +6,19 @@
 
 #include <QComboBox>
 #include <QDoubleSpinBox>
+#include <QDragEnterEvent>
+#include <QDropEvent>
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QFormLayout>
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QLineEdit>
+#include <QMimeData>
 #include <QSignalBlocker>
 #include <QStringList>
 #include <QToolButton>
+#include <QUrl>
 
 namespace aniso
 {
@@ -59,6 +63,9 @@ FileRow::FileRow(const QString& caption, const QString& filter, QWidget* parent)
 {
   edit_->setPlaceholderText(tr("none"));
   edit_->setClearButtonEnabled(true);
+  // Drops go to the row (a file), not into the text as a URL.
+  edit_->setAcceptDrops(false);
+  setAcceptDrops(true);
   auto* open = new QToolButton(this);
   open->setText(tr("…"));
   open->setToolTip(tr("Choose a file"));
@@ -87,6 +94,23 @@ FileRow::FileRow(const QString& caption, const QString& filter, QWidget* parent)
               emit edited(edit_->text().trimmed());
             }
           });
+}
+
+void FileRow::dragEnterEvent(QDragEnterEvent* event)
+{
+  const QList<QUrl> urls = event->mimeData()->urls();
+  if (urls.size() == 1 && urls.front().isLocalFile())
+  {
+    event->acceptProposedAction();
+  }
+}
+
+void FileRow::dropEvent(QDropEvent* event)
+{
+  const QString path = event->mimeData()->urls().front().toLocalFile();
+  event->acceptProposedAction();
+  setText(path);
+  emit edited(path);
 }
 
 void FileRow::setText(const QString& path)

@@ -32,6 +32,11 @@ public:
 signals:
   void edited(const QString& path); // empty: cleared
 
+protected:
+  // A file dropped on the row is chosen, as if picked in the dialog.
+  void dragEnterEvent(QDragEnterEvent* event) override;
+  void dropEvent(QDropEvent* event) override;
+
 private:
   QString caption_;
   QString filter_;

@@ -18,9 +18,11 @@
 #include <QFile>
 #include <QLineEdit>
 #include <QListWidget>
+#include <QMimeData>
 #include <QSignalSpy>
 #include <QTemporaryDir>
 #include <QUndoStack>
+#include <QUrl>
 #include <QtTest>
 #include <cmath>
 
@@ -129,6 +131,37 @@ private slots:
     QCOMPARE(errors.count(), 2);
     QVERIFY(errors.at(0).at(0).toString().startsWith(bad + ": "));
     QCOMPARE(editor.undoStack()->count(), 1);
+  }
+
+  // A file dropped on a map's row is that map; a corrupt one is refused like a chosen one.
+  void droppedFileIsTheMap()
+  {
+    QTemporaryDir dir;
+    const QString good = dir.filePath("height.exr");
+    aniso::writeImage(good.toStdString(), aniso::Image(4, 4, 1));
+    const QString bad = dir.filePath("height.png");
+    writeGarbage(bad);
+    aniso::SceneModel model;
+    installImageValidator(model, "height-map");
+    aniso::SceneEditor editor(&model);
+    aniso::MapsDock dock(&editor);
+    QSignalSpy errors(&dock, &aniso::MapsDock::errorOccurred);
+    aniso::FileRow* row = dock.fileRow("height-map");
+    const auto drop = [row](const QString& path)
+    {
+      QMimeData mime;
+      mime.setUrls({QUrl::fromLocalFile(path)});
+      QDropEvent event(QPointF(5, 5), Qt::CopyAction, &mime, Qt::LeftButton, Qt::NoModifier);
+      // Straight to the widget's handler: QApplication routes drops only during a real drag.
+      static_cast<QObject*>(row)->event(&event);
+    };
+    drop(good);
+    QVERIFY2(errors.isEmpty(), errors.isEmpty() ? "" : qPrintable(errors.at(0).at(0).toString()));
+    QCOMPARE(model.text("height-map"), good.toStdString());
+    drop(bad);
+    QCOMPARE(model.text("height-map"), good.toStdString());
+    QCOMPARE(row->text(), good);
+    QCOMPARE(errors.count(), 1);
   }
 
   // A constant environment L gives thumbnail texels sRGB(ACES(0.18 L / (L + 1e-4))), by the
