@@ -1,10 +1,12 @@
 #include "env/env_sampling.h"
 
+#include "env/parallel.h"
 #include "error.h"
 
 #include <algorithm>
 #include <cmath>
 #include <glm/geometric.hpp>
+#include <limits>
 #include <map>
 #include <mutex>
 #include <sstream>
@@ -31,6 +33,39 @@ int findInterval(const double* cdf, int count, double x)
   const double* upper = std::upper_bound(cdf, cdf + count + 1, x);
   const int index = int(upper - cdf) - 1;
   return std::clamp(index, 0, count - 1);
+}
+
+// Texels next to a neighbour kRefineContrast times brighter are sampled again, up to
+// kMaxRefinement times more densely per side, within kRefineBudget times the samples of the
+// first pass (an image full of contrast gets a milder refinement than a lone sun).
+constexpr double kRefineContrast = 2.0;
+constexpr int kMaxRefinement = 32;
+constexpr double kRefineBudget = 4.0;
+
+double luminanceOf(const Image& image, int x, int y)
+{
+  if (image.channels >= 3)
+    return 0.2126 * image.at(x, y, 0) + 0.7152 * image.at(x, y, 1) + 0.0722 * image.at(x, y, 2);
+  return image.at(x, y, 0);
+}
+
+// Mean radiance over texel (x, y) of a W x H equirect grid from n x n samples at the centres of
+// equal (u, v) cells, weighted by sin(theta) (their solid angle), as renderEquirect does.
+glm::dvec3 texelMean(const Environment& env, int x, int y, int w, int h, int n)
+{
+  glm::dvec3 sum(0.0);
+  double weightSum = 0.0;
+  for (int j = 0; j < n; ++j)
+  {
+    const double v = 1.0 - (y + (j + 0.5) / n) / h;
+    const double weight = std::sin(kPi * (1.0 - v));
+    for (int i = 0; i < n; ++i)
+    {
+      sum += weight * env.radiance(equirectToDirection({(x + (i + 0.5) / n) / w, v}));
+      weightSum += weight;
+    }
+  }
+  return sum / weightSum;
 }
 
 void validateOptions(const EnvSamplingOptions& options)
@@ -69,12 +104,7 @@ EnvironmentDistribution::EnvironmentDistribution(const Image& equirect, double u
     rowSolidAngle[std::size_t(y)] = kTwoPi / w * (rowCos(y, h) - rowCos(y + 1, h));
     for (int x = 0; x < w; ++x)
     {
-      double value = 0.0;
-      if (equirect.channels >= 3)
-        value = 0.2126 * equirect.at(x, y, 0) + 0.7152 * equirect.at(x, y, 1) +
-                0.0722 * equirect.at(x, y, 2);
-      else
-        value = equirect.at(x, y, 0);
+      double value = luminanceOf(equirect, x, y);
       if (!std::isfinite(value))
         throw errorAbout("environment image", "texel (" + std::to_string(x) + ", " +
                                                   std::to_string(y) + ") is not finite");
@@ -122,7 +152,51 @@ EnvironmentDistribution EnvironmentDistribution::bake(const Environment& env,
                                                       const EnvSamplingOptions& options)
 {
   validateOptions(options);
-  const Image image = renderEquirect(env, options.width, options.width / 2, options.supersample);
+  const int w = options.width;
+  const int h = options.width / 2;
+  Image image = renderEquirect(env, w, h, options.supersample);
+
+  // A texel beside a much brighter one may hold a sliver of a small source (a sun's edge) that
+  // its supersamples missed; its density would then be far below the radiance there, and the
+  // rare samples that land on the sliver would carry huge weights. A texel holding a source
+  // smaller than itself gets its area from a handful of supersamples. Wherever the luminance
+  // changes by more than kRefineContrast within a 3 x 3 neighbourhood, texels are sampled
+  // again more densely (at 32 times the density per side, a sun's edge texels keep the weights
+  // of their samples bounded: tested by the estimators converging to the reference).
+  std::vector<double> lum(std::size_t(w) * std::size_t(h), 0.0);
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x)
+      lum[std::size_t(y) * std::size_t(w) + std::size_t(x)] = luminanceOf(image, x, y);
+  std::vector<int> refine;
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x)
+    {
+      double brightest = 0.0;
+      double dimmest = std::numeric_limits<double>::infinity();
+      for (int dy = -1; dy <= 1; ++dy)
+        for (int dx = -1; dx <= 1; ++dx)
+        {
+          const int ny = std::clamp(y + dy, 0, h - 1);
+          const int nx = (x + dx + w) % w;
+          const double value = lum[std::size_t(ny) * std::size_t(w) + std::size_t(nx)];
+          brightest = std::max(brightest, value);
+          dimmest = std::min(dimmest, value);
+        }
+      if (brightest > kRefineContrast * dimmest)
+        refine.push_back(y * w + x);
+    }
+  const double affordable = std::sqrt(kRefineBudget * double(w) * double(h) /
+                                      double(std::max<std::size_t>(refine.size(), 1)));
+  const int n = options.supersample * std::clamp(int(affordable), 1, kMaxRefinement);
+  parallelFor(int(refine.size()),
+              [&](int i)
+              {
+                const int x = refine[std::size_t(i)] % w;
+                const int y = refine[std::size_t(i)] / w;
+                const glm::dvec3 mean = texelMean(env, x, y, w, h, n);
+                for (int c = 0; c < 3; ++c)
+                  image.at(x, y, c) = float(mean[c]);
+              });
   return EnvironmentDistribution(image, options.uniformFraction,
                                  distributionKey(env.key(), options));
 }

@@ -120,7 +120,8 @@ TEST(EnvSampling, DensityIntegratesToOne)
 }
 
 // Texel by texel, density = (1 - f) L / (sum of L times solid angle) + f / (4 pi), with L the
-// luminance of the environment rendered to the same grid here, for f = 0 and f = 0.3.
+// luminance of the image the distribution is made from (the studio rendered here), for f = 0
+// and f = 0.3.
 TEST(EnvSampling, DensityFollowsLuminance)
 {
   aniso::StudioEnvironment studio;
@@ -134,8 +135,7 @@ TEST(EnvSampling, DensityFollowsLuminance)
                (2.0 * kPi / w) * (std::cos(kPi * y / h) - std::cos(kPi * (y + 1) / h));
   for (double f : {0.0, 0.3})
   {
-    const aniso::EnvironmentDistribution d =
-        aniso::EnvironmentDistribution::bake(studio, options(w, 2, f));
+    const aniso::EnvironmentDistribution d(image, f, "studio image");
     for (int y = 0; y < h; ++y)
       for (int x = 0; x < w; ++x)
       {
@@ -191,6 +191,26 @@ TEST(EnvSampling, SamplesMatchDensityChiSquare)
       }
     const aniso_test::ChiSquareResult r = aniso_test::chiSquare(observed, expected);
     EXPECT_GT(r.pValue, 1e-4) << d->key() << " bins " << r.bins;
+  }
+}
+
+// The bake resolves a small source: with the sky removed, the sun's power in the tables
+// (sum over texels of luminance times solid angle) is 1e5 times the disc's exact solid angle
+// within 1%, on a coarse grid (disc well inside one texel) and a fine one (disc across texels,
+// whose edge texels the bake refines).
+TEST(EnvSampling, BakeResolvesTheSun)
+{
+  for (int width : {256, 1024})
+  {
+    const aniso::SunSkyEnvironment env = sunSky(1.0);
+    const aniso::EnvironmentDistribution d =
+        aniso::EnvironmentDistribution::bake(env, options(width, 4, 0.0));
+    // density = L / P with P the total power, and the sky's power is 4 pi exactly.
+    const double skyDensity = d.pdf(-env.sun().direction);
+    const double power = 1.0 / skyDensity;
+    const double sunPower = power - 4.0 * kPi;
+    EXPECT_NEAR(sunPower, 1e5 * env.sunSolidAngle(), 1e-2 * 1e5 * env.sunSolidAngle())
+        << "width " << width;
   }
 }
 
