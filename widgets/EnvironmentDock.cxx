@@ -12,6 +12,7 @@
 #include <QListWidget>
 #include <QPushButton>
 #include <QSignalBlocker>
+#include <QTimer>
 #include <QVBoxLayout>
 #include <QtConcurrent>
 
@@ -49,7 +50,7 @@ EnvironmentDock::EnvironmentDock(SceneEditor* editor, const QString& hdriDirecto
   list_->setUniformItemSizes(true);
   list_->setGridSize(QSize(kThumbnailWidth + 12, kThumbnailWidth / 2 + 28));
   list_->setTextElideMode(Qt::ElideRight);
-  list_->setMinimumHeight(2 * (kThumbnailWidth / 2 + 28) + 8);
+  list_->setMinimumHeight(3 * (kThumbnailWidth / 2 + 28) + 8);
 
   addItem(tr("Studio (built-in)"), "builtin:studio");
   addItem(tr("White (built-in)"), "builtin:white");
@@ -173,5 +174,14 @@ void EnvironmentDock::sync()
   }
   const QSignalBlocker block(list_);
   list_->setCurrentItem(match);
+  // Once the list has laid its items out.
+  QTimer::singleShot(0, list_,
+                     [this]
+                     {
+                       if (QListWidgetItem* item = list_->currentItem())
+                       {
+                         list_->scrollToItem(item);
+                       }
+                     });
 }
 } // namespace aniso

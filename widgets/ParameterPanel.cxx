@@ -6,6 +6,7 @@
 #include <QFormLayout>
 #include <QLabel>
 #include <QScrollArea>
+#include <QScrollBar>
 #include <QVBoxLayout>
 
 namespace aniso
@@ -121,6 +122,9 @@ QWidget* scrollableColumn(const QList<QWidget*>& panels, QWidget* parent)
   }
   column->addStretch(1);
   scroll->setWidget(inner);
+  // Wide enough for the rows (they cannot shrink further), plus the vertical scroll bar.
+  scroll->setMinimumWidth(inner->minimumSizeHint().width() +
+                          scroll->verticalScrollBar()->sizeHint().width());
   return scroll;
 }
 } // namespace aniso

@@ -23,12 +23,14 @@
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QFormLayout>
+#include <QGuiApplication>
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QLineEdit>
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QMimeData>
+#include <QScreen>
 #include <QSettings>
 #include <QSpinBox>
 #include <QStandardPaths>
@@ -117,7 +119,12 @@ MainWindow::MainWindow(QWidget* parent)
   statusBar()->addPermanentWidget(samplesLabel_);
   createMenus();
 
-  resize(1280, 900);
+  // Most of the screen, without growing past a comfortable size on large screens.
+  if (const QScreen* screen = QGuiApplication::primaryScreen())
+  {
+    const QRect area = screen->availableGeometry();
+    resize(std::min(1500, area.width() * 9 / 10), std::min(960, area.height() * 9 / 10));
+  }
   resizeDocks({materialDock_, environmentDock_}, {350, 370}, Qt::Horizontal);
   resizeDocks({materialDock_, mapsDock_}, {520, 380}, Qt::Vertical);
   QSettings settings;
