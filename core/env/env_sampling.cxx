@@ -10,6 +10,7 @@
 #include <map>
 #include <mutex>
 #include <sstream>
+#include <string>
 #include <utility>
 
 namespace aniso
@@ -35,9 +36,10 @@ int findInterval(const double* cdf, int count, double x)
   return std::clamp(index, 0, count - 1);
 }
 
-// Texels next to a neighbour kRefineContrast times brighter are sampled again, up to
-// kMaxRefinement times more densely per side, within kRefineBudget times the samples of the
-// first pass (an image full of contrast gets a milder refinement than a lone sun).
+// Texels whose 3 x 3 neighbourhood spans more than a factor kRefineContrast in luminance are
+// sampled again, up to kMaxRefinement times more densely per side, within kRefineBudget times
+// the samples of the first pass (an image full of contrast gets a milder refinement than a lone
+// sun).
 constexpr double kRefineContrast = 2.0;
 constexpr int kMaxRefinement = 32;
 constexpr double kRefineBudget = 4.0;
@@ -157,12 +159,10 @@ EnvironmentDistribution EnvironmentDistribution::bake(const Environment& env,
   Image image = renderEquirect(env, w, h, options.supersample);
 
   // A texel beside a much brighter one may hold a sliver of a small source (a sun's edge) that
-  // its supersamples missed; its density would then be far below the radiance there, and the
-  // rare samples that land on the sliver would carry huge weights. A texel holding a source
-  // smaller than itself gets its area from a handful of supersamples. Wherever the luminance
-  // changes by more than kRefineContrast within a 3 x 3 neighbourhood, texels are sampled
-  // again more densely (at 32 times the density per side, a sun's edge texels keep the weights
-  // of their samples bounded: tested by the estimators converging to the reference).
+  // its supersamples missed: its density would be far below the radiance there, and the rare
+  // samples landing on the sliver would carry huge weights. And a source smaller than a texel
+  // gets its area from a handful of supersamples. So texels where the luminance jumps (see
+  // kRefineContrast) are sampled again, more densely.
   std::vector<double> lum(std::size_t(w) * std::size_t(h), 0.0);
   for (int y = 0; y < h; ++y)
     for (int x = 0; x < w; ++x)

@@ -76,6 +76,16 @@ glm::dvec2 secondShift(const glm::dvec2& shift)
   return cranleyPatterson(shift, frameShift(1));
 }
 
+// Lobe samples of two-sample MIS: the nearest count to N times the fraction, at least one when
+// the fraction is positive (so N = 1 with the default 1/2 is one lobe sample).
+uint32_t twoSampleLobeCount(uint32_t n, double fraction)
+{
+  if (fraction <= 0.0)
+    return 0;
+  const long nearest = std::lround(double(n) * fraction);
+  return uint32_t(std::clamp<long>(nearest, 1, long(n)));
+}
+
 double heuristic(SamplingStrategy strategy, double mine, double other)
 {
   if (strategy == SamplingStrategy::MisPower)
@@ -148,38 +158,45 @@ glm::dvec3 estimate(const Model& model, const Frame& frame, const Environment& e
   case SamplingStrategy::MisPower:
   {
     // Each technique's sum is divided by its own count: (1/n_i) sum w_i f L (n.l) / p_i.
-    const uint32_t lobeCount = (n + 1) / 2;
-    const uint32_t envCount = n / 2;
-    lobeSamples(lobeCount, double(lobeCount), double(envCount));
-    const glm::dvec3 lobePart = sum / double(lobeCount);
+    const uint32_t lobeCount = twoSampleLobeCount(n, options.lobeFraction);
+    const uint32_t envCount = n - lobeCount;
+    glm::dvec3 lobePart(0.0);
+    if (lobeCount > 0)
+    {
+      lobeSamples(lobeCount, double(lobeCount), double(envCount));
+      lobePart = sum / double(lobeCount);
+    }
     sum = glm::dvec3(0.0);
     if (envCount > 0)
       envSamples(envCount, double(lobeCount), double(envCount), secondShift(options.shift));
     return lobePart + (envCount > 0 ? sum / double(envCount) : glm::dvec3(0.0));
   }
   case SamplingStrategy::MisOneSample:
+  {
+    const double c = options.lobeFraction;
     for (uint32_t i = 0; i < n; ++i)
     {
       const glm::dvec2 p = cranleyPatterson(hammersley(i, n), options.shift);
       glm::dvec3 l(0.0);
-      if (p.x < 0.5)
+      if (p.x < c)
       {
-        const LobeSample s = model.sample({2.0 * p.x, p.y});
+        const LobeSample s = model.sample({p.x / c, p.y});
         if (!s.valid)
           continue;
         l = s.l;
       }
       else
       {
-        l = frame.toLocal(distribution->sample({2.0 * p.x - 1.0, p.y}).direction);
+        l = frame.toLocal(distribution->sample({(p.x - c) / (1.0 - c), p.y}).direction);
         if (!(l.z > 0.0))
           continue;
       }
-      const double mixture = 0.5 * (model.pdf(l) + distribution->pdf(frame.toWorld(l)));
+      const double mixture = c * model.pdf(l) + (1.0 - c) * distribution->pdf(frame.toWorld(l));
       if (mixture > 0.0)
         sum += model.brdfCos(l) * radiance(l) / mixture;
     }
     return sum / double(n);
+  }
   }
   return sum;
 }
@@ -195,6 +212,8 @@ void validateEstimate(const glm::dvec3& f0, const glm::dvec3& viewWorld,
     throw errorAbout("view", "must be a finite non-zero vector");
   if (options.samples == 0)
     throw errorAbout("samples", "must be at least 1");
+  if (!(options.lobeFraction >= 0.0 && options.lobeFraction <= 1.0))
+    throw errorAbout("lobeFraction", "must be in [0, 1]");
   if (options.strategy != SamplingStrategy::Brdf && distribution == nullptr)
     throw errorAbout("environment distribution",
                      std::string("required by strategy ") + strategyName(options.strategy));

@@ -24,14 +24,16 @@ enum class SamplingStrategy
   Brdf,
   // N samples of the environment distribution, each weighted by f (n.l) / pdf.
   Environment,
-  // Two-sample multiple importance sampling: ceil(N / 2) lobe and floor(N / 2) environment
-  // samples, combined by the balance heuristic (n_i p_i / sum_j n_j p_j) ...
+  // Two-sample multiple importance sampling: n_lobe = N x lobeFraction (rounded, at least 1)
+  // lobe samples and the rest environment samples, each technique on its own rotated Hammersley
+  // set, combined by the balance heuristic (n_i p_i / sum_j n_j p_j) ...
   MisBalance,
   // ... or by the power heuristic with exponent 2.
   MisPower,
-  // One-sample MIS: each of the N points takes the lobe or the environment technique with
-  // probability 1/2 (by its first coordinate, so exactly half of a Hammersley set each) and is
-  // weighted by the mixture density (p_lobe + p_env) / 2: one loop, as a shader would run it.
+  // One-sample MIS: each of the N points takes the lobe technique with probability c =
+  // lobeFraction (by its first coordinate: x < c, so a Hammersley set splits in proportion) or
+  // the environment otherwise, and is weighted by the mixture density c p_lobe + (1 - c) p_env:
+  // one loop, as a shader would run it.
   MisOneSample,
 };
 
@@ -43,6 +45,9 @@ struct EstimatorOptions
   SamplingStrategy strategy = SamplingStrategy::Brdf;
   uint32_t samples = 64; // radiance lookups per estimate, >= 1
   glm::dvec2 shift{0.0}; // Cranley-Patterson rotation of the point sets, in [0, 1)^2
+  // Share of the lobe technique in the MIS strategies, in [0, 1]: sharp lobes gain from more
+  // lobe samples, rough ones next to bright sources from more environment samples.
+  double lobeFraction = 0.5;
 };
 
 // Estimate of integrateSpecular(lobe, f0, frame, viewWorld, env) with N = options.samples.
@@ -50,7 +55,7 @@ struct EstimatorOptions
 // environment for the estimate to be efficient (any distribution keeps it unbiased as long as
 // its density is positive wherever env is, e.g. with a uniform fraction > 0). A view below the
 // surface gives 0. Throws aniso::Error for an invalid lobe or F0, a non-finite or zero view,
-// samples = 0 or a missing distribution.
+// samples = 0, lobeFraction outside [0, 1] or a missing distribution.
 glm::dvec3 estimateSpecular(const AsLobe& lobe, const glm::dvec3& f0, const Frame& frame,
                             const glm::dvec3& viewWorld, const Environment& env,
                             const EnvironmentDistribution* distribution,
