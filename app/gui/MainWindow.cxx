@@ -233,13 +233,11 @@ void MainWindow::reportError(const QString& message, bool dialog)
   }
 }
 
-bool MainWindow::openMesh(const QString& path)
+bool MainWindow::attempt(const std::function<void()>& action)
 {
   try
   {
-    editor_.edit("mesh", textValue(path.toStdString()));
-    view_->resetCamera();
-    addRecent(path);
+    action();
     return true;
   }
   catch (const Error& e)
@@ -247,60 +245,57 @@ bool MainWindow::openMesh(const QString& path)
     reportError(QString::fromStdString(e.what()), true);
     return false;
   }
+}
+
+bool MainWindow::openMesh(const QString& path)
+{
+  return attempt(
+      [&]
+      {
+        editor_.edit("mesh", textValue(path.toStdString()));
+        view_->resetCamera();
+        addRecent(path);
+      });
 }
 
 bool MainWindow::openEnvironment(const QString& path)
 {
-  try
-  {
-    editor_.edit("env", textValue(path.toStdString()));
-    addRecent(path);
-    return true;
-  }
-  catch (const Error& e)
-  {
-    reportError(QString::fromStdString(e.what()), true);
-    return false;
-  }
+  return attempt(
+      [&]
+      {
+        editor_.edit("env", textValue(path.toStdString()));
+        addRecent(path);
+      });
 }
 
 bool MainWindow::openSession(const QString& path)
 {
-  try
-  {
-    const QStringList unknown = session_.open(editor_, path);
-    sessionPath_ = path;
-    addRecent(path);
-    if (!unknown.isEmpty())
-    {
-      // Reported once, here; the keys are kept and written back on save.
-      statusBar()->showMessage(
-          tr("%1: kept keys this version does not know: %2").arg(path, unknown.join(", ")), 15000);
-    }
-    return true;
-  }
-  catch (const Error& e)
-  {
-    reportError(QString::fromStdString(e.what()), true);
-    return false;
-  }
+  return attempt(
+      [&]
+      {
+        const QStringList unknown = session_.open(editor_, path);
+        sessionPath_ = path;
+        addRecent(path);
+        if (!unknown.isEmpty())
+        {
+          // Reported once, here; the keys are kept and written back on save.
+          statusBar()->showMessage(
+              tr("%1: kept keys this version does not know: %2").arg(path, unknown.join(", ")),
+              15000);
+        }
+      });
 }
 
 bool MainWindow::saveSession(const QString& path)
 {
-  try
-  {
-    session_.save(model_, path);
-    sessionPath_ = path;
-    addRecent(path);
-    statusBar()->showMessage(tr("Saved %1").arg(path), 5000);
-    return true;
-  }
-  catch (const Error& e)
-  {
-    reportError(QString::fromStdString(e.what()), true);
-    return false;
-  }
+  return attempt(
+      [&]
+      {
+        session_.save(model_, path);
+        sessionPath_ = path;
+        addRecent(path);
+        statusBar()->showMessage(tr("Saved %1").arg(path), 5000);
+      });
 }
 
 bool MainWindow::openAny(const QString& path)
@@ -314,41 +309,32 @@ bool MainWindow::openAny(const QString& path)
   {
     return openMesh(path);
   }
-  if (suffix == "hdr")
+  bool environment = suffix == "hdr";
+  if (suffix == "exr" && !attempt(
+                             [&]
+                             {
+                               const Image image = readImage(path.toStdString());
+                               // Equirectangular environments are twice as wide as high; maps
+                               // usually are not.
+                               environment = std::abs(image.width - 2 * image.height) <=
+                                             image.height / 50 + 1;
+                             }))
+  {
+    return false;
+  }
+  if (environment)
   {
     return openEnvironment(path);
   }
-  if (suffix == "exr")
-  {
-    try
-    {
-      const Image image = readImage(path.toStdString());
-      // Equirectangular environments are twice as wide as high; maps usually are not.
-      if (std::abs(image.width - 2 * image.height) <= image.height / 50 + 1)
+  return attempt(
+      [&]
       {
-        return openEnvironment(path);
-      }
-    }
-    catch (const Error& e)
-    {
-      reportError(QString::fromStdString(e.what()), true);
-      return false;
-    }
-  }
-  try
-  {
-    editor_.edit("normal-map", textValue(path.toStdString()));
-    if (model_.text("bump") == "none")
-    {
-      editor_.edit("bump", textValue("quaternion"));
-    }
-    return true;
-  }
-  catch (const Error& e)
-  {
-    reportError(QString::fromStdString(e.what()), true);
-    return false;
-  }
+        editor_.edit("normal-map", textValue(path.toStdString()));
+        if (model_.text("bump") == "none")
+        {
+          editor_.edit("bump", textValue("quaternion"));
+        }
+      });
 }
 
 QString MainWindow::defaultScreenshotName(const QString& extension) const
@@ -462,14 +448,9 @@ void MainWindow::chooseAndExportScreenshot()
   ScreenshotOptions options;
   options.scale = scale->value();
   options.transparent = transparent->isChecked();
-  try
+  if (attempt([&] { exportScreenshot(pathEdit->text(), options); }))
   {
-    exportScreenshot(pathEdit->text(), options);
     statusBar()->showMessage(tr("Wrote %1").arg(pathEdit->text()), 8000);
-  }
-  catch (const Error& e)
-  {
-    reportError(QString::fromStdString(e.what()), true);
   }
 }
 

@@ -11,6 +11,7 @@
 #include <QMainWindow>
 #include <QString>
 #include <QStringList>
+#include <functional>
 #include <memory>
 #include <vtkNew.h>
 
@@ -78,6 +79,8 @@ protected:
 
 private:
   void createMenus();
+  // Runs ACTION; an aniso::Error it throws is reported (with a dialog) and gives false.
+  bool attempt(const std::function<void()>& action);
   void reportError(const QString& message, bool dialog);
   void addRecent(const QString& path);
   void rebuildRecentMenu();
