@@ -3,6 +3,7 @@
 #include "brdf/ashikhmin_shirley.h"
 #include "error.h"
 #include "materials/height_field.h"
+#include "materials/texture_sampling.h"
 
 #include <algorithm>
 #include <array>
@@ -96,34 +97,14 @@ SlopeMoments fromArray(const std::array<double, kChannels>& m)
   return {m[0], m[1], m[2], m[3], m[4]};
 }
 
-int wrapIndex(double i, int n)
+std::array<double, kChannels> bilinearMoments(const Image& image, const glm::dvec2& uv)
 {
-  const int k = int(i - n * std::floor(i / n));
-  return k >= n ? 0 : k;
-}
-
-std::array<double, kChannels> bilinearMoments(const Image& image, const glm::dvec2& uvIn)
-{
-  glm::dvec2 uv = uvIn;
-  for (int k = 0; k < 2; ++k)
-    uv[k] = std::isfinite(uv[k]) ? uv[k] - std::floor(uv[k]) : 0.0;
-  const double fx = uv.x * image.width - 0.5;
-  const double fy = (1.0 - uv.y) * image.height - 0.5;
-  const double x0 = std::floor(fx);
-  const double y0 = std::floor(fy);
-  const double wx[2] = {1.0 - (fx - x0), fx - x0};
-  const double wy[2] = {1.0 - (fy - y0), fy - y0};
+  const BilinearTaps taps = bilinearTaps(image.width, image.height, uv);
   std::array<double, kChannels> out{};
   for (int j = 0; j < 2; ++j)
-  {
-    const int y = wrapIndex(y0 + j, image.height);
     for (int i = 0; i < 2; ++i)
-    {
-      const int x = wrapIndex(x0 + i, image.width);
       for (int c = 0; c < kChannels; ++c)
-        out[std::size_t(c)] += wx[i] * wy[j] * image.at(x, y, c);
-    }
-  }
+        out[std::size_t(c)] += taps.wx[i] * taps.wy[j] * image.at(taps.x[i], taps.y[j], c);
   return out;
 }
 

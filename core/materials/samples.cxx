@@ -2,6 +2,7 @@
 
 #include "error.h"
 #include "materials/height_field.h"
+#include "materials/texture_sampling.h"
 
 #include <algorithm>
 #include <cmath>
@@ -13,22 +14,6 @@ namespace aniso
 namespace
 {
 constexpr double kPi = 3.14159265358979323846;
-
-// Integer hash (lowbias32): deterministic everywhere, unlike the standard distributions.
-std::uint32_t hash32(std::uint32_t x)
-{
-  x ^= x >> 16;
-  x *= 0x7feb352dU;
-  x ^= x >> 15;
-  x *= 0x846ca68bU;
-  x ^= x >> 16;
-  return x;
-}
-
-double random01(std::uint32_t seed, std::uint32_t a, std::uint32_t b = 0)
-{
-  return hash32(seed ^ hash32(a ^ hash32(b + 0x9e3779b9U))) * (1.0 / 4294967296.0);
-}
 
 double smooth5(double t)
 {
@@ -48,7 +33,7 @@ double valueNoise(double u, double v, int period, std::uint32_t seed)
   {
     const auto wi = std::uint32_t(((long long)(i) % period + period) % period);
     const auto wj = std::uint32_t(((long long)(j) % period + period) % period);
-    return random01(seed, wi, wj);
+    return hashedUniform(seed, wi, wj);
   };
   const double a = lattice(x0, y0) + ax * (lattice(x0 + 1, y0) - lattice(x0, y0));
   const double b = lattice(x0, y0 + 1) + ax * (lattice(x0 + 1, y0 + 1) - lattice(x0, y0 + 1));
@@ -125,11 +110,11 @@ SvMaps scratchedPlate(int size, std::uint32_t seed)
   {
     const bool vertical = s >= kScratchesPerAxis;
     const auto id = std::uint32_t(s);
-    const double start = random01(seed, id, 1);                          // along the scratch
-    const double length = 0.1 + 0.4 * random01(seed, id, 2);             // tile fraction
-    const double offset = random01(seed, id, 3);                         // across the scratch
-    const double halfWidth = (1.0 + 1.5 * random01(seed, id, 4)) / size; // 1 to 2.5 texels
-    const double groove = (0.2 + 0.8 * random01(seed, id, 5)) * 0.5 / size;
+    const double start = hashedUniform(seed, id, 1);                          // along the scratch
+    const double length = 0.1 + 0.4 * hashedUniform(seed, id, 2);             // tile fraction
+    const double offset = hashedUniform(seed, id, 3);                         // across the scratch
+    const double halfWidth = (1.0 + 1.5 * hashedUniform(seed, id, 4)) / size; // 1 to 2.5 texels
+    const double groove = (0.2 + 0.8 * hashedUniform(seed, id, 5)) * 0.5 / size;
     const int steps = int(std::ceil(length * size));
     const int across = int(std::ceil(halfWidth * size)) + 1;
     for (int i = 0; i <= steps; ++i)

@@ -2,6 +2,7 @@
 
 #include "brdf/shading_frame.h"
 #include "error.h"
+#include "materials/texture_sampling.h"
 
 #include <algorithm>
 #include <array>
@@ -24,34 +25,15 @@ void checkMap(const Image& image, int channels, const char* name)
 }
 
 // Bilinear, wrapping; texel centres at ((x + 0.5) / W, 1 - (y + 0.5) / H).
-int wrapIndex(double i, int n)
+// Bilinear, wrapping lookup of up to 4 channels.
+std::array<double, 4> bilinear(const Image& image, const glm::dvec2& uv)
 {
-  const int k = int(i - n * std::floor(i / n));
-  return k >= n ? 0 : k; // i / n rounding up to an integer
-}
-
-// Bilinear, wrapping; texel centres at ((x + 0.5) / W, 1 - (y + 0.5) / H). Non-finite or huge
-// coordinates are reduced to one tile first.
-std::array<double, 4> bilinear(const Image& image, const glm::dvec2& uvIn)
-{
-  glm::dvec2 uv = uvIn;
-  for (int k = 0; k < 2; ++k)
-    uv[k] = std::isfinite(uv[k]) ? uv[k] - std::floor(uv[k]) : 0.0;
-  const double fx = uv.x * image.width - 0.5;
-  const double fy = (1.0 - uv.y) * image.height - 0.5;
-  const double x0 = std::floor(fx);
-  const double y0 = std::floor(fy);
-  const double ax = fx - x0;
-  const double ay = fy - y0;
-  const int xs[2] = {wrapIndex(x0, image.width), wrapIndex(x0 + 1.0, image.width)};
-  const int ys[2] = {wrapIndex(y0, image.height), wrapIndex(y0 + 1.0, image.height)};
-  const double wx[2] = {1.0 - ax, ax};
-  const double wy[2] = {1.0 - ay, ay};
+  const BilinearTaps taps = bilinearTaps(image.width, image.height, uv);
   std::array<double, 4> out{0.0, 0.0, 0.0, 0.0};
   for (int j = 0; j < 2; ++j)
     for (int i = 0; i < 2; ++i)
       for (int c = 0; c < std::min(image.channels, 4); ++c)
-        out[std::size_t(c)] += wx[i] * wy[j] * image.at(xs[i], ys[j], c);
+        out[std::size_t(c)] += taps.wx[i] * taps.wy[j] * image.at(taps.x[i], taps.y[j], c);
   return out;
 }
 
@@ -139,21 +121,27 @@ AsMaterial toAshikhminShirley(const SvTexel& texel)
   return m;
 }
 
-BanksMaterial toBanks(const SvTexel& texel)
+namespace
 {
-  BanksMaterial m;
+// Banks and Heidrich-Seidel take the same fibre parameters.
+template <class FibreMaterial>
+FibreMaterial toFibreMaterial(const SvTexel& texel)
+{
+  FibreMaterial m;
   m.exponent = fibreExponent(texel.alphaX);
   m.diffuse = texel.diffuse;
   m.specular = glm::dvec3(fibreSpecular(texel.specular, m.exponent));
   return m;
 }
+} // namespace
+
+BanksMaterial toBanks(const SvTexel& texel)
+{
+  return toFibreMaterial<BanksMaterial>(texel);
+}
 
 HeidrichSeidelMaterial toHeidrichSeidel(const SvTexel& texel)
 {
-  HeidrichSeidelMaterial m;
-  m.exponent = fibreExponent(texel.alphaX);
-  m.diffuse = texel.diffuse;
-  m.specular = glm::dvec3(fibreSpecular(texel.specular, m.exponent));
-  return m;
+  return toFibreMaterial<HeidrichSeidelMaterial>(texel);
 }
 } // namespace aniso

@@ -5,6 +5,7 @@
 #include "brdf/ggx.h"
 #include "error.h"
 #include "materials/height_field.h"
+#include "materials/texture_sampling.h"
 
 #include <algorithm>
 #include <array>
@@ -99,45 +100,9 @@ void finishNormals(Microstructure& s)
   s.normal = normalsFromSlopes(slopesFromHeight(s.height, s.depth));
 }
 
-int wrapIndex(double i, int n)
-{
-  const int k = int(i - n * std::floor(i / n));
-  return k >= n ? 0 : k;
-}
-
-// Bilinear weights and wrapped texel indices at structure point p.
-struct Footprint4
-{
-  int x[2];
-  int y[2];
-  double wx[2];
-  double wy[2];
-};
-
-Footprint4 bilinearAt(const Image& image, const glm::dvec2& pIn)
-{
-  glm::dvec2 p = pIn;
-  for (int k = 0; k < 2; ++k)
-    p[k] = std::isfinite(p[k]) ? p[k] - std::floor(p[k]) : 0.0;
-  const double fx = p.x * image.width - 0.5;
-  const double fy = (1.0 - p.y) * image.height - 0.5;
-  const double x0 = std::floor(fx);
-  const double y0 = std::floor(fy);
-  Footprint4 f;
-  f.x[0] = wrapIndex(x0, image.width);
-  f.x[1] = wrapIndex(x0 + 1.0, image.width);
-  f.y[0] = wrapIndex(y0, image.height);
-  f.y[1] = wrapIndex(y0 + 1.0, image.height);
-  f.wx[1] = fx - x0;
-  f.wx[0] = 1.0 - f.wx[1];
-  f.wy[1] = fy - y0;
-  f.wy[0] = 1.0 - f.wy[1];
-  return f;
-}
-
 double heightAt(const Microstructure& s, const glm::dvec2& p)
 {
-  const Footprint4 f = bilinearAt(s.height, p);
+  const BilinearTaps f = bilinearTaps(s.height.width, s.height.height, p);
   double h = 0.0;
   for (int j = 0; j < 2; ++j)
     for (int i = 0; i < 2; ++i)
@@ -149,21 +114,6 @@ double heightAt(const Microstructure& s, const glm::dvec2& p)
 double surfaceDepth(const Microstructure& s, const glm::dvec2& p)
 {
   return s.depth * (1.0 - heightAt(s, p));
-}
-
-std::uint32_t hash32(std::uint32_t x)
-{
-  x ^= x >> 16;
-  x *= 0x7feb352dU;
-  x ^= x >> 15;
-  x *= 0x846ca68bU;
-  x ^= x >> 16;
-  return x;
-}
-
-double random01(std::uint32_t seed, std::uint32_t index)
-{
-  return hash32(seed ^ hash32(index * 2654435761U + 0x9e3779b9U)) * (1.0 / 4294967296.0);
 }
 
 double schlickMasking(double cosine, double k)
@@ -257,7 +207,7 @@ MicroTexel sampleMicrostructure(const Microstructure& s, const glm::dvec2& p)
   t.albedo = glm::dvec3(0.0);
   t.normal = glm::dvec3(0.0);
   t.height = 0.0;
-  const Footprint4 f = bilinearAt(s.height, p);
+  const BilinearTaps f = bilinearTaps(s.height.width, s.height.height, p);
   for (int j = 0; j < 2; ++j)
   {
     for (int i = 0; i < 2; ++i)
@@ -385,8 +335,8 @@ glm::dvec3 shadeMicroPixel(const Microstructure& s, const MicroShadingOptions& o
     for (int i = 0; i < k; ++i)
     {
       const auto index = std::uint32_t(j * k + i);
-      const double a = o.jittered ? random01(o.seed, 2 * index) : 0.5;
-      const double b = o.jittered ? random01(o.seed, 2 * index + 1) : 0.5;
+      const double a = o.jittered ? hashedUniform(o.seed, 2 * index) : 0.5;
+      const double b = o.jittered ? hashedUniform(o.seed, 2 * index + 1) : 0.5;
       const glm::dvec2 p = footprint.centre + ((i + a) / k - 0.5) * footprint.axisU +
                            ((j + b) / k - 0.5) * footprint.axisV;
       glm::dvec2 q = p;

@@ -326,6 +326,51 @@ TEST(Microstructure, JitterIsSeededAndUnbiased)
   EXPECT_NEAR(mean, reference, 0.01 * reference);
 }
 
+// Finite and non-negative across the option ranges: depths 0.01 and 2, GGX roughness 1e-3 and
+// 1, Blinn-Phong exponents 0 and 1e6, 1 and 64 march steps, every masking mode with shadows,
+// grazing views and lights.
+TEST(Microstructure, FiniteAcrossParameterRange)
+{
+  const std::vector<aniso::Light> lights = {aniso::parseLight("dir:1,0,1e-6:1"),
+                                            aniso::parseLight("dir:0.2,-0.3,1:2"),
+                                            aniso::parseLight("point:0.1,0.2,0.001:5")};
+  const glm::dvec3 views[] = {glm::normalize(glm::dvec3(-1.0, 0.3, 1e-6)),
+                              glm::dvec3(0.0, 0.0, 1.0), fromAngles(60.0, 100.0)};
+  for (aniso::MicroPattern pattern :
+       {aniso::MicroPattern::Pyramids, aniso::MicroPattern::InvertedPyramids,
+        aniso::MicroPattern::Grooves, aniso::MicroPattern::Silk})
+  {
+    for (double depth : {0.01, aniso::kMicroMaxDepth})
+    {
+      const aniso::Microstructure s = aniso::makeMicrostructure(pattern, 16, depth);
+      for (aniso::MicroMasking masking :
+           {aniso::MicroMasking::Normal, aniso::MicroMasking::Parallax,
+            aniso::MicroMasking::ParallaxOcclusion})
+      {
+        for (int variant = 0; variant < 4; ++variant)
+        {
+          aniso::MicroShadingOptions o;
+          o.samplesPerAxis = 2;
+          o.masking = masking;
+          o.selfShadowing = true;
+          o.brdf = variant < 2 ? aniso::MicroBrdf::GgxSmithSchlick : aniso::MicroBrdf::BlinnPhong;
+          o.roughness = variant == 0 ? 1e-3 : 1.0;
+          o.blinnExponent = variant == 2 ? 0.0 : 1e6;
+          o.marchSteps = variant % 2 == 0 ? 1 : 64;
+          o.f0 = glm::dvec3(1.0);
+          aniso::validateMicroOptions(o);
+          for (const glm::dvec3& v : views)
+          {
+            const glm::dvec3 c =
+                aniso::shadeMicroPixel(s, o, {}, aniso::Frame{}, glm::dvec3(0.0), v, lights);
+            EXPECT_TRUE(std::isfinite(c.x) && c.x >= 0.0) << int(pattern) << " " << depth;
+          }
+        }
+      }
+    }
+  }
+}
+
 // Options and structures outside their ranges are refused, naming the subject.
 TEST(Microstructure, ValidatesArguments)
 {

@@ -15,6 +15,7 @@
 namespace
 {
 using models_test::kPi;
+using models_test::randomUpper;
 
 aniso::AsMaterial as(double nu, double nv, double f0, double rd)
 {
@@ -24,15 +25,6 @@ aniso::AsMaterial as(double nu, double nv, double f0, double rd)
   m.f0 = glm::dvec3(f0);
   m.diffuse = glm::dvec3(rd);
   return m;
-}
-
-glm::dvec3 randomUpper(std::mt19937_64& rng)
-{
-  std::uniform_real_distribution<double> u(0.0, 1.0);
-  const double z = u(rng);
-  const double phi = 2.0 * kPi * u(rng);
-  const double r = std::sqrt(std::max(0.0, 1.0 - z * z));
-  return {r * std::cos(phi), r * std::sin(phi), z};
 }
 
 // A directional light of irradiance E on a tilted frame: radiance = evalSpecular(v, l) E (n.l),

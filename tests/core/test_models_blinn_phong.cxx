@@ -16,15 +16,7 @@ namespace
 {
 using aniso::BlinnPhongAnisoMaterial;
 using models_test::kPi;
-
-glm::dvec3 randomUpper(std::mt19937_64& rng)
-{
-  std::uniform_real_distribution<double> u(0.0, 1.0);
-  const double z = u(rng);
-  const double phi = 2.0 * kPi * u(rng);
-  const double r = std::sqrt(std::max(0.0, 1.0 - z * z));
-  return {r * std::cos(phi), r * std::sin(phi), z};
-}
+using models_test::randomUpper;
 
 BlinnPhongAnisoMaterial material(double ax, double ay, double ks = 1.0, double rd = 0.0)
 {

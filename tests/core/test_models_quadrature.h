@@ -1,13 +1,16 @@
 #pragma once
-// Deterministic quadrature over the sphere of directions for the model tests: composite
+// Deterministic quadrature over the sphere of directions for the model tests (and random
+// directions for the pointwise checks): composite
 // Gauss-Legendre in the polar angle around a chosen axis (optionally graded towards the axis,
 // where narrow lobes live) times equally spaced azimuths (spectrally accurate for smooth periodic
 // integrands). It shares no code with the models it checks.
 #include "env/quadrature.h"
 
+#include <algorithm>
 #include <cmath>
 #include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
+#include <random>
 
 namespace models_test
 {
@@ -71,6 +74,16 @@ double hemisphereAlbedo(const Term& term, const glm::dvec3& v, const glm::dvec3&
 inline glm::dvec3 mirrorOf(const glm::dvec3& v)
 {
   return {-v.x, -v.y, v.z};
+}
+
+// A direction uniform over the upper hemisphere (uniform in cos(theta) and phi).
+inline glm::dvec3 randomUpper(std::mt19937_64& rng)
+{
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  const double z = u(rng);
+  const double phi = 2.0 * kPi * u(rng);
+  const double r = std::sqrt(std::max(0.0, 1.0 - z * z));
+  return {r * std::cos(phi), r * std::sin(phi), z};
 }
 
 inline glm::dvec3 fromAngles(double thetaDegrees, double phiDegrees)

@@ -17,15 +17,7 @@ namespace
 using aniso::WardForm;
 using aniso::WardMaterial;
 using models_test::kPi;
-
-glm::dvec3 randomUpper(std::mt19937_64& rng)
-{
-  std::uniform_real_distribution<double> u(0.0, 1.0);
-  const double z = u(rng);
-  const double phi = 2.0 * kPi * u(rng);
-  const double r = std::sqrt(std::max(0.0, 1.0 - z * z));
-  return {r * std::cos(phi), r * std::sin(phi), z};
-}
+using models_test::randomUpper;
 
 WardMaterial ward(double ax, double ay, WardForm form, double rs = 1.0, double rd = 0.0)
 {
