@@ -1,6 +1,7 @@
 #include "leadr/leadr.h"
 
 #include "brdf/ashikhmin_shirley.h"
+#include "brdf/sv_common.h"
 #include "error.h"
 #include "materials/height_field.h"
 #include "materials/texture_sampling.h"
@@ -108,17 +109,10 @@ std::array<double, kChannels> bilinearMoments(const Image& image, const glm::dve
   return out;
 }
 
-// Slope variance of the distribution along the unit tangent-plane direction d, and its mean.
+// Slope variance of the distribution along the unit tangent-plane direction d.
 double varianceAlong(const SlopeStatistics& s, const glm::dvec2& d)
 {
   return s.varX * d.x * d.x + 2.0 * s.covXY * d.x * d.y + s.varY * d.y * d.y;
-}
-
-glm::dvec3 normalizeScaled(const glm::dvec3& x)
-{
-  const double m = std::max(std::max(std::abs(x.x), std::abs(x.y)), std::abs(x.z));
-  const glm::dvec3 y = x / m;
-  return y / std::sqrt(glm::dot(y, y));
 }
 
 // The statistics a shading call works with: lifted view and silhouette micronormal.
@@ -321,7 +315,9 @@ double slopeDensity(const SlopeStatistics& s, const glm::dvec2& slope)
 
 double beckmannDistribution(const SlopeStatistics& stats, const glm::dvec3& m)
 {
-  if (!(m.z > 0.0))
+  // Below 1e-100 the slope is beyond 1e100, where the density is 0 for any valid statistics
+  // (and z^4 would underflow to a 0 / 0).
+  if (!(m.z > 1e-100))
     return 0.0;
   const double z2 = m.z * m.z;
   return slopeDensity(stats, {-m.x / m.z, -m.y / m.z}) / (z2 * z2);
@@ -372,7 +368,7 @@ glm::dvec3 evalLeadrSpecular(const SlopeStatistics& stats, const glm::dvec3& f0,
 {
   if (!(v.z > 0.0) || !(l.z > 0.0))
     return glm::dvec3(0.0);
-  const glm::dvec3 h = normalizeScaled(v + l);
+  const glm::dvec3 h = sv::normalizeScaled(v + l);
   const double g = leadrMasking(stats, v) * leadrMasking(stats, l);
   if (!(g > 0.0))
     return glm::dvec3(0.0);
@@ -407,9 +403,10 @@ SlopeStatistics withSilhouetteMicronormal(const SlopeStatistics& stats, const gl
   // The view kSilhouetteMinA deviations above the mean microsurface's horizon.
   const double byMasking = cot - kSilhouetteMinA * std::sqrt(2.0 * varianceAlong(stats, d));
   // The mirror direction of v about the mean normal normalize(-mean, 1) above the geometric
-  // horizon: cot along^2 + 2 along - cot (1 - across^2) <= 0, whose upper root is below.
-  const double byReflection =
-      (std::sqrt(1.0 + cot * cot * std::max(0.0, 1.0 - across * across)) - 1.0) / cot;
+  // horizon: cot along^2 + 2 along - cot q <= 0 with q = 1 - across^2 (at least 0), whose upper
+  // root (sqrt(1 + cot^2 q) - 1) / cot is written without the cancellation at grazing views.
+  const double q = std::max(0.0, 1.0 - across * across);
+  const double byReflection = cot * q / (std::sqrt(1.0 + cot * cot * q) + 1.0);
   const double limit = std::min(byMasking, byReflection);
   if (along <= limit)
     return stats;
