@@ -3,6 +3,7 @@
 #include "brdf/ashikhmin_shirley.h"
 #include "brdf/blinn_phong_aniso.h"
 #include "brdf/ggx.h"
+#include "brdf/sv_common.h"
 #include "error.h"
 #include "materials/height_field.h"
 #include "materials/texture_sampling.h"
@@ -135,11 +136,13 @@ glm::dvec3 specular(const MicroShadingOptions& o, const glm::dvec3& v, const glm
     m.specular = o.f0;
     return evalBlinnPhongAniso(m, v, l);
   }
-  const glm::dvec3 h = glm::normalize(v + l);
+  const glm::dvec3 h = sv::normalizeScaled(v + l);
   const double k = 0.5 * o.roughness;
   const double g = schlickMasking(v.z, k) * schlickMasking(l.z, k);
   const double d = ggxDistribution(GgxLobe{o.roughness, o.roughness}, h);
-  return schlickFresnel(o.f0, glm::dot(v, h)) * (d * g / (4.0 * v.z * l.z));
+  // G1 ~ n.w / k cancels the cosines at grazing angles; the floor only avoids 0 / 0 where both
+  // underflow.
+  return schlickFresnel(o.f0, glm::dot(v, h)) * (d * g / std::max(4.0 * v.z * l.z, 1e-300));
 }
 } // namespace
 
