@@ -218,6 +218,20 @@ void validateEstimate(const glm::dvec3& f0, const glm::dvec3& viewWorld,
     throw errorAbout("environment distribution",
                      std::string("required by strategy ") + strategyName(options.strategy));
 }
+// Validates the inputs common to both models, then estimates for a view above the surface
+// (below it nothing is reflected).
+template <class Model, class Lobe>
+glm::dvec3 estimateAbove(const Lobe& lobe, const glm::dvec3& f0, const Frame& frame,
+                         const glm::dvec3& viewWorld, const Environment& env,
+                         const EnvironmentDistribution* distribution,
+                         const EstimatorOptions& options)
+{
+  validateEstimate(f0, viewWorld, distribution, options);
+  const glm::dvec3 v = glm::normalize(frame.toLocal(glm::normalize(viewWorld)));
+  if (!(v.z > 0.0))
+    return glm::dvec3(0.0);
+  return estimate(Model{lobe, f0, v}, frame, env, distribution, options);
+}
 } // namespace
 
 const char* strategyName(SamplingStrategy strategy)
@@ -244,11 +258,7 @@ glm::dvec3 estimateSpecular(const AsLobe& lobe, const glm::dvec3& f0, const Fram
                             const EstimatorOptions& options)
 {
   validateLobe(lobe);
-  validateEstimate(f0, viewWorld, distribution, options);
-  const glm::dvec3 v = glm::normalize(frame.toLocal(glm::normalize(viewWorld)));
-  if (!(v.z > 0.0))
-    return glm::dvec3(0.0);
-  return estimate(AsModel{lobe, f0, v}, frame, env, distribution, options);
+  return estimateAbove<AsModel>(lobe, f0, frame, viewWorld, env, distribution, options);
 }
 
 glm::dvec3 estimateSpecularGgx(const GgxLobe& lobe, const glm::dvec3& f0, const Frame& frame,
@@ -257,10 +267,6 @@ glm::dvec3 estimateSpecularGgx(const GgxLobe& lobe, const glm::dvec3& f0, const 
                                const EstimatorOptions& options)
 {
   validateGgxLobe(lobe);
-  validateEstimate(f0, viewWorld, distribution, options);
-  const glm::dvec3 v = glm::normalize(frame.toLocal(glm::normalize(viewWorld)));
-  if (!(v.z > 0.0))
-    return glm::dvec3(0.0);
-  return estimate(GgxModel{lobe, f0, v}, frame, env, distribution, options);
+  return estimateAbove<GgxModel>(lobe, f0, frame, viewWorld, env, distribution, options);
 }
 } // namespace aniso

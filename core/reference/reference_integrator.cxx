@@ -440,6 +440,14 @@ glm::dvec3 localView(const Frame& frame, const glm::dvec3& viewWorld)
 {
   return glm::normalize(frame.toLocal(glm::normalize(viewWorld)));
 }
+
+// The exact result for a view below the surface, where nothing is reflected.
+ReferenceResult reflectsNothing()
+{
+  ReferenceResult below;
+  below.converged = true;
+  return below;
+}
 } // namespace
 
 ReferenceResult integrateSpecularGgx(const GgxLobe& lobe, const glm::dvec3& f0, const Frame& frame,
@@ -457,11 +465,7 @@ ReferenceResult integrateSpecularGgx(const GgxLobe& lobe, const glm::dvec3& f0, 
   setup.frame = frame;
   setup.env = &env;
   if (setup.v.z <= 0.0)
-  {
-    ReferenceResult below;
-    below.converged = true; // no reflection towards a view below the surface
-    return below;
-  }
+    return reflectsNothing();
   setup.lambdaV = ggxLambdaOf(setup.ax, setup.ay, setup.v);
   return refine([&](int level) { return ggxAtLevel(setup, level); }, options);
 }
@@ -476,11 +480,7 @@ ReferenceResult integrateSpecularSunSky(const AsLobe& lobe, const glm::dvec3& f0
   validateSpecularInputs(f0, viewWorld);
   const glm::dvec3 v = localView(frame, viewWorld);
   if (v.z <= 0.0)
-  {
-    ReferenceResult below;
-    below.converged = true;
-    return below;
-  }
+    return reflectsNothing();
   const double scale = std::sqrt((lobe.nu + 1.0) * (lobe.nv + 1.0)) / kTwoPi;
   // f_s (n.l) with the Ashikhmin-Shirley formula written out (see the file's header comment).
   auto brdfCos = [&](const glm::dvec3& l) -> glm::dvec3
@@ -516,11 +516,7 @@ ReferenceResult integrateSpecularGgxSunSky(const GgxLobe& lobe, const glm::dvec3
   validateSpecularInputs(f0, viewWorld);
   const glm::dvec3 v = localView(frame, viewWorld);
   if (v.z <= 0.0)
-  {
-    ReferenceResult below;
-    below.converged = true;
-    return below;
-  }
+    return reflectsNothing();
   const double lambdaV = ggxLambdaOf(lobe.alphaX, lobe.alphaY, v);
   // D G2 F / (4 (n.v)(n.l)) times n.l, written out.
   auto brdfCos = [&](const glm::dvec3& l) -> glm::dvec3
