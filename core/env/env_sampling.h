@@ -47,14 +47,15 @@ public:
   EnvironmentDistribution(const Image& equirect, double uniformFraction, std::string key);
 
   // Bakes env at options.width x options.width / 2 with renderEquirect (options.supersample^2
-  // solid-angle-weighted samples per texel); texels beside a neighbour more than twice as bright
-  // (the edge of a small bright source, which the supersamples may have only grazed) are sampled
-  // again up to 32 times more densely per side (within 4 times the cost of the first pass). The
-  // sample spacing, pi / height / supersample radians, must be below the radius of the smallest
-  // bright source for the density to see it at all (the uniform part keeps the estimators unbiased
-  // either way, but not efficient). Grids whose texels are about the size of the source (1024 x 512
-  // for the sun, 0.27 degrees) send most of the sun's samples onto it. Throws aniso::Error naming
-  // the option out of range.
+  // solid-angle-weighted samples per texel). Where the luminance within a 3 x 3 neighbourhood
+  // spans more than a factor 2 (the edge of a small bright source, which the supersamples may
+  // have only grazed, or a source smaller than a texel), texels are sampled again, up to 32 times
+  // more densely per side (within 4 times the cost of the first pass). The sample spacing,
+  // pi / height / supersample radians, must be below the radius of the smallest bright source
+  // for the density to see it at all (the uniform part keeps the estimators unbiased either way,
+  // but not efficient). Grids whose texels are about the size of the source (1024 x 512 for the
+  // sun, 0.27 degrees) send most of the sun's samples onto it. Throws aniso::Error naming the
+  // option out of range.
   static EnvironmentDistribution bake(const Environment& env, const EnvSamplingOptions& options);
 
   // Direction with density pdf(direction) from xi in [0, 1)^2 (clamped into it).

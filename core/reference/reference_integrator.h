@@ -50,7 +50,8 @@ ReferenceResult integrateSpecular(const AsLobe& lobe, const glm::dvec3& f0, cons
 // D(h)(n.h) dw_h is the uniform measure dq dpsi / (2 pi) in the stretched polar coordinates
 // (r, psi) of the slope, q = r^2 / (1 + r^2); the rule runs over s = ln r (where that measure is
 // sech^2(s) / 2 ds), so environment features far out in GGX's heavy tail stay resolved in angle.
-// Azimuths crowd towards the meridians perpendicular to the view, as for Ashikhmin-Shirley.
+// Azimuths crowd towards the meridians perpendicular to the view, as for Ashikhmin-Shirley, and
+// towards the axis of the smaller alpha, where masking changes fastest with the azimuth.
 // Throws as integrateSpecular, with validateGgxLobe for the lobe.
 ReferenceResult integrateSpecularGgx(const GgxLobe& lobe, const glm::dvec3& f0, const Frame& frame,
                                      const glm::dvec3& viewWorld, const Environment& env,
