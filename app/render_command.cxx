@@ -234,8 +234,16 @@ std::shared_ptr<const Image> tprMap(const std::string& text)
   std::error_code ec;
   if (!fs::exists(text, ec))
   {
-    return std::make_shared<const Image>(
-        bakeTprMap(parseTprPattern(text), kTprBakeSide, kTprBakeSide));
+    TprParams params;
+    try
+    {
+      params = parseTprPattern(text);
+    }
+    catch (const Error& e)
+    {
+      throw errorAbout("--tpr", "'" + text + "' is no file, nor a pattern (" + e.what() + ")");
+    }
+    return std::make_shared<const Image>(bakeTprMap(params, kTprBakeSide, kTprBakeSide));
   }
   ImageInfo info;
   Image image = readImage(text, &info);
@@ -253,7 +261,8 @@ std::shared_ptr<const Image> tprMap(const std::string& text)
   return std::make_shared<const Image>(std::move(image));
 }
 
-vtkSmartPointer<vtkPolyData> surfaceOf(const Arguments& a, std::string& source, std::ostream& out)
+vtkSmartPointer<vtkPolyData> surfaceOf(const Arguments& a, const SurfaceOptions& options,
+                                       std::string& source, std::ostream& out)
 {
   LoadedMesh mesh;
   if (a.has("--builtin"))
@@ -273,11 +282,6 @@ vtkSmartPointer<vtkPolyData> surfaceOf(const Arguments& a, std::string& source, 
   for (const std::string& line : mesh.report.notes())
   {
     out << "  " << line << "\n";
-  }
-  SurfaceOptions options;
-  if (a.has("--tangents"))
-  {
-    options.brushing = parseBrushingModel(a.text("--tangents"));
   }
   PreparedSurface prepared = prepareSurface(mesh.polyData, options, source);
   for (const std::string& note : prepared.report.notes())
@@ -328,10 +332,22 @@ int runRender(const std::vector<std::string>& args, std::ostream& out)
   {
     throw usageError("--view", "give either --view or --azimuth/--elevation");
   }
-  settings.view.direction =
-      a.has("--azimuth") || a.has("--elevation")
-          ? viewDirectionFromAngles(a.real("--azimuth"), a.real("--elevation"))
-          : viewDirectionFromName(a.text("--view"), "--view");
+  SurfaceOptions surfaceOptions;
+  try
+  {
+    settings.view.direction =
+        a.has("--azimuth") || a.has("--elevation")
+            ? viewDirectionFromAngles(a.real("--azimuth"), a.real("--elevation"))
+            : viewDirectionFromName(a.text("--view"), "--view");
+    if (a.has("--tangents"))
+    {
+      surfaceOptions.brushing = parseBrushingModel(a.text("--tangents"));
+    }
+  }
+  catch (const Error& e)
+  {
+    throw UsageError(e.what());
+  }
   settings.view.parallel = a.has("--ortho");
   if (a.has("--quaternion-map") && a.has("--normal-map"))
   {
@@ -374,7 +390,7 @@ int runRender(const std::vector<std::string>& args, std::ostream& out)
 
   // Then the inputs, each failing with its file's name.
   std::string source;
-  settings.surface = surfaceOf(a, source, out);
+  settings.surface = surfaceOf(a, surfaceOptions, source, out);
   settings.environment = openEnvironment(parameters.text("env"));
   if (a.has("--normal-map"))
   {

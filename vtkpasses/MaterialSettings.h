@@ -36,9 +36,9 @@ struct MaterialSettings
   // Variants.
   SpecularMethod method = SpecularMethod::Exact;
   bool filtered = true; // filtered importance sampling (mip level per sample)
-  HalfVectorSource halfVectors = HalfVectorSource::Shader;
-  int lutSize = 64;          // half-vector and BRDF LUTs
-  int brdfLutSamples = 1024; // importance samples per BRDF LUT texel
+  HalfVectorSource halfVectors = HalfVectorSource::Lut; // as fast or faster, as accurate
+  int lutSize = 64;                                     // half-vector and BRDF LUTs
+  int brdfLutSamples = 1024;                            // importance samples per BRDF LUT texel
 
   // Maps, read through the mesh's texture coordinates; null = not used. Images have row 0 at
   // the top (v = 1), as files store them.
