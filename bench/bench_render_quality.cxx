@@ -13,6 +13,7 @@
 #include <cmath>
 #include <cstdio>
 #include <glm/geometric.hpp>
+#include <vtkPolyData.h>
 #include <memory>
 #include <vector>
 
