@@ -112,10 +112,11 @@ Command renderCommand()
   c.options.push_back(
       textOption("--height-map", "FILE",
                  "height map (first channel, 1 = top) for parallax occlusion mapping"));
-  c.options.push_back(
-      textOption("--tangents", "MODEL",
-                 "tangent field: " + brushingModelSyntax() +
-                     "; by default the mesh's own, else from its UVs, else axis:1,0,0"));
+  // Option help is a string_view: the composed text must outlive the command table.
+  static const std::string tangentsHelp =
+      "tangent field: " + brushingModelSyntax() +
+      "; by default the mesh's own, else from its UVs, else axis:1,0,0";
+  c.options.push_back(textOption("--tangents", "MODEL", tangentsHelp));
   c.options.push_back(textOption("--size", "WxH", "image size in pixels", "512x512"));
   c.options.push_back(textOption(
       "--view", "SIDE",
