@@ -182,19 +182,6 @@ std::string lowercaseExtension(const std::string& path)
   return ext;
 }
 
-std::pair<int, int> parseSize(const std::string& text)
-{
-  ParameterSpec side;
-  side.type = ParameterType::Integer;
-  side.minimum = 1.0;
-  side.maximum = kMaxSide;
-  const std::size_t x = text.find('x');
-  const std::string w = text.substr(0, x);
-  const std::string h = x == std::string::npos ? w : text.substr(x + 1);
-  return {static_cast<int>(parseParameterValue(side, w, "--size").number[0]),
-          static_cast<int>(parseParameterValue(side, h, "--size").number[0])};
-}
-
 void checkOutput(const std::string& output)
 {
   const std::string ext = lowercaseExtension(output);
@@ -321,14 +308,7 @@ int runRender(const std::vector<std::string>& args, std::ostream& out)
   const std::string output = a.text("--output");
   checkOutput(output);
   RenderSettings settings;
-  try
-  {
-    std::tie(settings.width, settings.height) = parseSize(a.text("--size"));
-  }
-  catch (const Error& e)
-  {
-    throw UsageError(e.what());
-  }
+  std::tie(settings.width, settings.height) = parseImageSize(a.text("--size"), "--size", kMaxSide);
   if (a.has("--view") && (a.has("--azimuth") || a.has("--elevation")))
   {
     throw usageError("--view", "give either --view or --azimuth/--elevation");

@@ -48,18 +48,6 @@ constexpr const char* kFragmentImplTag = "//VTK::Light::Impl";
 
 constexpr int kMaxSamples = 1 << 16;
 
-void setMatrix(vtkShaderProgram* program, const char* name, const glm::dmat4& m)
-{
-  glm::mat4 f(m);
-  program->SetUniformMatrix4x4(name, glm::value_ptr(f));
-}
-
-void setMatrix(vtkShaderProgram* program, const char* name, const glm::dmat3& m)
-{
-  glm::mat3 f(m);
-  program->SetUniformMatrix3x3(name, glm::value_ptr(f));
-}
-
 void setVector(vtkShaderProgram* program, const char* name, const glm::dvec3& v)
 {
   const glm::vec3 f(v);
@@ -367,13 +355,13 @@ public:
 
   void setUniforms(vtkShaderProgram* program, vtkOpenGLRenderWindow* window)
   {
-    setMatrix(program, "anisoClipToWorld", clipToWorld(renderer));
+    setUniformMatrix(program, "anisoClipToWorld", clipToWorld(renderer));
     const glm::dmat3 toWorld(toGlm(actor->GetMatrix()));
     const double det = glm::determinant(toWorld);
     const glm::dmat3 normalToWorld =
         det != 0.0 && std::isfinite(det) ? glm::transpose(glm::inverse(toWorld)) : toWorld;
-    setMatrix(program, "anisoDirectionToWorld", toWorld);
-    setMatrix(program, "anisoNormalToWorld", normalToWorld);
+    setUniformMatrix(program, "anisoDirectionToWorld", toWorld);
+    setUniformMatrix(program, "anisoNormalToWorld", normalToWorld);
 
     setVector(program, "anisoF0", settings.f0);
     setVector(program, "anisoAlbedo", settings.albedo);
@@ -391,7 +379,7 @@ public:
     // its own image-based lighting).
     window->GetState()->vtkglEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS);
     bind(program, "anisoEnvironment", lighting->cubeTexture(window));
-    setMatrix(program, "anisoWorldToEnvironment", lighting->worldToEnvironment());
+    setUniformMatrix(program, "anisoWorldToEnvironment", lighting->worldToEnvironment());
     const double size = lighting->cubeSize();
     program->SetUniformf("anisoLog2TexelSolidAngle",
                          static_cast<float>(std::log2(4.0 * M_PI / (6.0 * size * size))));

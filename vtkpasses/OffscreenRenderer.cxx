@@ -85,24 +85,6 @@ void requireDisplay()
   }
 }
 
-// Centre and radius of a sphere around every point (bounding-box centre, farthest point).
-void boundingSphere(vtkPolyData* surface, glm::dvec3& centre, double& radius)
-{
-  double bounds[6];
-  surface->GetBounds(bounds);
-  centre = {0.5 * (bounds[0] + bounds[1]), 0.5 * (bounds[2] + bounds[3]),
-            0.5 * (bounds[4] + bounds[5])};
-  double r2 = 0.0;
-  vtkPoints* points = surface->GetPoints();
-  for (vtkIdType i = 0; i < points->GetNumberOfPoints(); ++i)
-  {
-    double p[3];
-    points->GetPoint(i, p);
-    const glm::dvec3 d = glm::dvec3(p[0], p[1], p[2]) - centre;
-    r2 = std::max(r2, glm::dot(d, d));
-  }
-  radius = std::sqrt(r2);
-}
 } // namespace
 
 double medianSeconds(std::vector<double> seconds)

@@ -1,9 +1,11 @@
 #include "RendererMatrices.h"
 
+#include <glm/gtc/type_ptr.hpp>
 #include <glm/matrix.hpp>
 #include <vtkCamera.h>
 #include <vtkMatrix4x4.h>
 #include <vtkRenderer.h>
+#include <vtkShaderProgram.h>
 
 namespace aniso
 {
@@ -25,6 +27,18 @@ glm::dmat4 worldToClip(vtkRenderer* renderer)
   vtkCamera* camera = renderer->GetActiveCamera();
   return toGlm(
       camera->GetCompositeProjectionTransformMatrix(renderer->GetTiledAspectRatio(), -1, 1));
+}
+
+bool setUniformMatrix(vtkShaderProgram* program, const char* name, const glm::dmat4& m)
+{
+  glm::mat4 f(m);
+  return program->SetUniformMatrix4x4(name, glm::value_ptr(f));
+}
+
+bool setUniformMatrix(vtkShaderProgram* program, const char* name, const glm::dmat3& m)
+{
+  glm::mat3 f(m);
+  return program->SetUniformMatrix3x3(name, glm::value_ptr(f));
 }
 
 glm::dmat4 clipToWorld(vtkRenderer* renderer)

@@ -5,6 +5,7 @@
 
 class vtkMatrix4x4;
 class vtkRenderer;
+class vtkShaderProgram;
 
 namespace aniso
 {
@@ -15,4 +16,9 @@ glm::dmat4 worldToClip(vtkRenderer* renderer);
 glm::dmat4 clipToWorld(vtkRenderer* renderer);
 
 glm::dmat4 toGlm(vtkMatrix4x4* matrix);
+
+// Uploads a matrix uniform (as float, column-major as GLSL reads it); false if the program
+// has no such uniform.
+bool setUniformMatrix(vtkShaderProgram* program, const char* name, const glm::dmat4& m);
+bool setUniformMatrix(vtkShaderProgram* program, const char* name, const glm::dmat3& m);
 } // namespace aniso

@@ -2,8 +2,11 @@
 
 #include "error.h"
 
+#include <algorithm>
 #include <cmath>
 #include <glm/geometric.hpp>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
 
 namespace aniso
 {
@@ -32,6 +35,24 @@ glm::dvec3 viewDirectionFromAngles(double azimuthDegrees, double elevationDegree
   const double a = azimuthDegrees * M_PI / 180.0;
   const double e = elevationDegrees * M_PI / 180.0;
   return {std::sin(a) * std::cos(e), -std::cos(a) * std::cos(e), std::sin(e)};
+}
+
+void boundingSphere(vtkPolyData* surface, glm::dvec3& centre, double& radius)
+{
+  double bounds[6];
+  surface->GetBounds(bounds);
+  centre = {0.5 * (bounds[0] + bounds[1]), 0.5 * (bounds[2] + bounds[3]),
+            0.5 * (bounds[4] + bounds[5])};
+  double r2 = 0.0;
+  vtkPoints* points = surface->GetPoints();
+  for (vtkIdType i = 0; points && i < points->GetNumberOfPoints(); ++i)
+  {
+    double p[3];
+    points->GetPoint(i, p);
+    const glm::dvec3 d = glm::dvec3(p[0], p[1], p[2]) - centre;
+    r2 = std::max(r2, glm::dot(d, d));
+  }
+  radius = std::sqrt(r2);
 }
 
 CameraPlacement placeCamera(const ViewSettings& view, const glm::dvec3& centre, double radius)

@@ -2,6 +2,8 @@
 // Where the camera looks from: the world is Z-up; the camera looks at the centre of the object's
 // bounding sphere from a direction, far enough for the sphere to fit the view.
 #include <glm/vec3.hpp>
+
+class vtkPolyData;
 #include <string>
 
 namespace aniso
@@ -30,6 +32,10 @@ struct CameraPlacement
   double parallelScale = 1.0;       // parallel: half the view height in world units
   bool parallel = false;
 };
+
+// A sphere around every point of SURFACE: the bounding box's centre and the distance to the
+// farthest point.
+void boundingSphere(vtkPolyData* surface, glm::dvec3& centre, double& radius);
 
 // The camera for an object with bounding sphere (centre, radius > 0).
 CameraPlacement placeCamera(const ViewSettings& view, const glm::dvec3& centre, double radius);

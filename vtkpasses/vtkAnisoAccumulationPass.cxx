@@ -50,18 +50,6 @@ double radicalInverse(int index, int base)
   return result;
 }
 
-void setMatrix(vtkShaderProgram* program, const char* name, const glm::dmat4& m)
-{
-  glm::mat4 f(m);
-  program->SetUniformMatrix4x4(name, glm::value_ptr(f));
-}
-
-void setMatrix(vtkShaderProgram* program, const char* name, const glm::dmat3& m)
-{
-  glm::mat3 f(m);
-  program->SetUniformMatrix3x3(name, glm::value_ptr(f));
-}
-
 void allocateColor(vtkTextureObject* texture, vtkOpenGLRenderWindow* window, int width, int height)
 {
   texture->SetContext(window);
@@ -391,7 +379,7 @@ void vtkAnisoAccumulationPass::DrawBackground(vtkOpenGLRenderWindow* window, vtk
   ostate->vtkglDepthMask(GL_FALSE);
   ostate->vtkglDisable(GL_BLEND);
   program->SetUniformf("quadDepth", 1.0f);
-  setMatrix(program, "clipToWorld", aniso::clipToWorld(renderer));
+  setUniformMatrix(program, "clipToWorld", aniso::clipToWorld(renderer));
 
   const bool environment =
       this->Display.background == aniso::BackgroundMode::Environment && this->Lighting;
@@ -402,7 +390,7 @@ void vtkAnisoAccumulationPass::DrawBackground(vtkOpenGLRenderWindow* window, vtk
     cube->Activate();
     ostate->vtkglEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS);
     program->SetUniformi("environment", cube->GetTextureUnit());
-    setMatrix(program, "worldToEnvironment", this->Lighting->worldToEnvironment());
+    setUniformMatrix(program, "worldToEnvironment", this->Lighting->worldToEnvironment());
   }
   const bool color = this->Display.background == aniso::BackgroundMode::Color;
   const glm::vec3 radiance = color ? glm::vec3(this->Display.backgroundColor) : glm::vec3(0.0f);
