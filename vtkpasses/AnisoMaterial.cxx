@@ -115,11 +115,12 @@ bool hasArray(vtkPolyData* poly, const char* name, int components)
 class AnisoMaterial::Impl
 {
 public:
-  // A texture and the data it was made from (re-uploaded when that changes).
+  // A texture and the data it was made from (re-uploaded when that changes). The data is held,
+  // so a new table can never be mistaken for an old one that lived at the same address.
   struct Texture
   {
     vtkSmartPointer<vtkTextureObject> object;
-    const void* source = nullptr;
+    std::shared_ptr<const void> source;
   };
 
   MaterialSettings settings;
@@ -273,7 +274,7 @@ public:
       }
       textureWindow = window;
     }
-    auto refresh = [window](Texture& texture, const void* source, auto&& make)
+    auto refresh = [](Texture& texture, std::shared_ptr<const void> source, auto&& make)
     {
       if (!source)
       {
@@ -285,14 +286,14 @@ public:
         texture.source = source;
       }
     };
-    refresh(halfVectorTexture, halfVectorLut.get(),
+    refresh(halfVectorTexture, halfVectorLut,
             [&]
             {
               return uploadFloatTexture(window, halfVectorLut->size, halfVectorLut->size, 4,
                                         halfVectorLut->rgba.data(), TextureFiltering::Nearest,
                                         TextureWrap::Clamp, "half-vector LUT");
             });
-    refresh(brdfTexture, brdfLut.get(),
+    refresh(brdfTexture, brdfLut,
             [&]
             {
               return uploadFloatTexture(window, brdfLut->size, brdfLut->size, 2, brdfLut->rg.data(),
@@ -302,7 +303,7 @@ public:
     auto mapTexture = [&](Texture& texture, bool used, const std::shared_ptr<const Image>& image,
                           int channels, const char* name)
     {
-      refresh(texture, used ? image.get() : nullptr,
+      refresh(texture, used ? image : nullptr,
               [&] { return uploadMapTexture(window, *image, channels, name); });
     };
     mapTexture(normalTexture, v.normalMap, settings.normalMap, 3, "normal map");
@@ -311,7 +312,7 @@ public:
     mapTexture(heightTexture, v.heightMap, settings.heightMap, 1, "height map");
     mapTexture(occlusionTexture, v.occlusionMap, settings.occlusionMap, 1, "occlusion map");
     mapTexture(metallicTexture, v.metallicMap, settings.metallicMap, 1, "metallic map");
-    refresh(albedoTexture, v.albedoMap ? settings.albedoMap.get() : nullptr,
+    refresh(albedoTexture, v.albedoMap ? settings.albedoMap : nullptr,
             [&] { return uploadMapTexture(window, asRgb(*settings.albedoMap), 3, "albedo map"); });
   }
 
