@@ -379,7 +379,7 @@ void vtkAnisoAccumulationPass::DrawBackground(vtkOpenGLRenderWindow* window, vtk
   ostate->vtkglDepthMask(GL_FALSE);
   ostate->vtkglDisable(GL_BLEND);
   program->SetUniformf("quadDepth", 1.0f);
-  setUniformMatrix(program, "clipToWorld", aniso::clipToWorld(renderer));
+  aniso::setUniformMatrix(program, "clipToWorld", aniso::clipToWorld(renderer));
 
   const bool environment =
       this->Display.background == aniso::BackgroundMode::Environment && this->Lighting;
@@ -390,7 +390,7 @@ void vtkAnisoAccumulationPass::DrawBackground(vtkOpenGLRenderWindow* window, vtk
     cube->Activate();
     ostate->vtkglEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS);
     program->SetUniformi("environment", cube->GetTextureUnit());
-    setUniformMatrix(program, "worldToEnvironment", this->Lighting->worldToEnvironment());
+    aniso::setUniformMatrix(program, "worldToEnvironment", this->Lighting->worldToEnvironment());
   }
   const bool color = this->Display.background == aniso::BackgroundMode::Color;
   const glm::vec3 radiance = color ? glm::vec3(this->Display.backgroundColor) : glm::vec3(0.0f);
