@@ -143,8 +143,17 @@ RenderResult renderOffscreen(const RenderSettings& s)
   pass->SetTargetFrames(s.frames);
   renderer->SetPass(pass);
 
-  AnisoMaterial material(lighting, s.material);
-  material.apply(actor, renderer);
+  std::unique_ptr<AnisoMaterial> material;
+  std::shared_ptr<void> otherMaterial;
+  if (s.installMaterial)
+  {
+    otherMaterial = s.installMaterial(actor, renderer, lighting);
+  }
+  else
+  {
+    material = std::make_unique<AnisoMaterial>(lighting, s.material);
+    material->apply(actor, renderer);
+  }
 
   RenderResult result;
   result.frameSeconds.reserve(static_cast<std::size_t>(s.frames));
@@ -195,8 +204,11 @@ RenderResult renderOffscreen(const RenderSettings& s)
       result.coveredPixels += result.linear.at(x, y, 3) > 0.0f ? 1 : 0;
     }
   }
-  result.variant = material.variant();
-  result.mapsDropped = material.mapsDropped();
+  if (material)
+  {
+    result.variant = material->variant();
+    result.mapsDropped = material->mapsDropped();
+  }
   return result;
 }
 } // namespace aniso

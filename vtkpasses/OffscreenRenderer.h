@@ -11,16 +11,27 @@
 #include "image/image.h"
 
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 #include <vtkSmartPointer.h>
 
+class vtkActor;
 class vtkPolyData;
+class vtkRenderer;
 
 namespace aniso
 {
+class EnvironmentLighting;
+
+// Installs a material of another shading model on the actor (drawn by the renderer, lit by the
+// scene's lighting) in place of the anisotropic one; what it returns is kept alive while the
+// frames are rendered. Throws aniso::Error for settings it cannot render.
+using MaterialInstaller = std::function<std::shared_ptr<void>(
+    vtkActor*, vtkRenderer*, const std::shared_ptr<EnvironmentLighting>&)>;
+
 struct RenderSettings
 {
   // A prepared surface (SurfacePreparation.h): triangles with "Normals", and "Tangents",
@@ -39,6 +50,8 @@ struct RenderSettings
   int height = 512;
   int frames = 1;     // progressive frames accumulated (each with its own sample shift)
   bool jitter = true; // sub-pixel camera jitter between frames (anti-aliasing)
+  // When set, the object is shaded by this instead of `material` (which is then unused).
+  MaterialInstaller installMaterial;
 };
 
 struct RenderResult
