@@ -2,6 +2,7 @@
 // robustness. References are deterministic quadrature of the densities (never the sampler),
 // the closed forms of DESIGN.md, and analytic albedos.
 #include "brdf/ashikhmin_shirley.h"
+#include "chi_square.h"
 #include "error.h"
 
 #include <algorithm>
@@ -186,50 +187,6 @@ std::string describe(const AsLobe& lobe)
   return "lobe (" + str(lobe.nu) + ", " + str(lobe.nv) + ")";
 }
 
-// Regularised upper incomplete gamma Q(a, x): the chi-square survival function is Q(dof/2, x/2).
-// Series for x < a + 1, Lentz continued fraction otherwise (both standard expansions).
-double upperIncompleteGamma(double a, double x)
-{
-  if (x <= 0.0)
-  {
-    return 1.0;
-  }
-  const double logPrefactor = -x + a * std::log(x) - std::lgamma(a);
-  if (x < a + 1.0)
-  {
-    double term = 1.0 / a;
-    double sum = term;
-    for (double ap = a + 1.0; std::abs(term) > 1e-16 * std::abs(sum); ap += 1.0)
-    {
-      term *= x / ap;
-      sum += term;
-    }
-    return 1.0 - sum * std::exp(logPrefactor);
-  }
-  const double tiny = 1e-300;
-  double b = x + 1.0 - a;
-  double c = 1.0 / tiny;
-  double d = 1.0 / b;
-  double h = d;
-  for (int i = 1; i < 100000; ++i)
-  {
-    const double an = -i * (i - a);
-    b += 2.0;
-    d = an * d + b;
-    d = std::abs(d) < tiny ? tiny : d;
-    c = b + an / c;
-    c = std::abs(c) < tiny ? tiny : c;
-    d = 1.0 / d;
-    const double delta = d * c;
-    h *= delta;
-    if (std::abs(delta - 1.0) < 1e-16)
-    {
-      break;
-    }
-  }
-  return std::exp(logPrefactor) * h;
-}
-
 const std::vector<AsLobe> kStressLobes = []
 {
   const std::array<double, 8> exponents = {0.0, 1.0, 10.0, 100.0, 1e3, 1e4, 1e5, 1e6};
@@ -270,9 +227,9 @@ TEST(AshikhminShirley, SamplerMatchesPdfChiSquare)
 {
   // The survival function used below, checked on closed forms: Q(1, x) = e^-x and
   // Q(1/2, x) = erfc(sqrt(x)).
-  ASSERT_NEAR(upperIncompleteGamma(1.0, 3.0), std::exp(-3.0), 1e-14);
-  ASSERT_NEAR(upperIncompleteGamma(0.5, 0.3), std::erfc(std::sqrt(0.3)), 1e-14);
-  ASSERT_NEAR(upperIncompleteGamma(0.5, 7.0), std::erfc(std::sqrt(7.0)), 1e-14);
+  ASSERT_NEAR(aniso_test::gammaQ(1.0, 3.0), std::exp(-3.0), 1e-14);
+  ASSERT_NEAR(aniso_test::gammaQ(0.5, 0.3), std::erfc(std::sqrt(0.3)), 1e-14);
+  ASSERT_NEAR(aniso_test::gammaQ(0.5, 7.0), std::erfc(std::sqrt(7.0)), 1e-14);
 
   const std::vector<AsLobe> lobes = {{1, 1}, {100, 10}, {10, 100}, {20000, 70}, {1e6, 1e3}};
   const int quadrantColumns = 8;
@@ -390,7 +347,7 @@ TEST(AshikhminShirley, SamplerMatchesPdfChiSquare)
       EXPECT_LT(pooledObserved, 20.0) << describe(lobe);
     }
     ASSERT_GT(cells, 100) << describe(lobe);
-    const double pValue = upperIncompleteGamma(0.5 * (cells - 1), 0.5 * chi2);
+    const double pValue = aniso_test::gammaQ(0.5 * (cells - 1), 0.5 * chi2);
     RecordProperty("p-value " + describe(lobe), str(pValue));
     EXPECT_GT(pValue, significance)
         << describe(lobe) << ": chi2 = " << chi2 << " over " << cells << " cells";
