@@ -132,8 +132,8 @@ vtkSmartPointer<vtkTextureObject> uploadMomentLevels(vtkOpenGLRenderWindow* wind
   const GLenum code = glGetError();
   if (code != GL_NO_ERROR)
   {
-    throw errorAbout(subject, "uploading the mip chain failed (GL error " + std::to_string(code) +
-                                  ")");
+    throw errorAbout(subject,
+                     "uploading the mip chain failed (GL error " + std::to_string(code) + ")");
   }
   return texture;
 }
@@ -237,20 +237,17 @@ public:
                                    replace(kVertexDecTag, shaders::kLeadrVsDec), false);
     sp->AddVertexShaderReplacement(kVertexImplTag, true,
                                    replace(kVertexImplTag, shaders::kLeadrVsImpl), false);
-    sp->AddFragmentShaderReplacement(
-        kFragmentDecTag, true,
-        replace(kFragmentDecTag,
-                std::string(shaders::kLeadrFsLights) + owner->fragmentDeclarations()),
-        false);
+    sp->AddFragmentShaderReplacement(kFragmentDecTag, true,
+                                     replace(kFragmentDecTag, std::string(shaders::kLeadrFsLights) +
+                                                                  owner->fragmentDeclarations()),
+                                     false);
     sp->AddFragmentShaderReplacement(kFragmentUniformFlowTag, true,
-                                     replace(kFragmentUniformFlowTag,
-                                             shaders::kLeadrFsUniformFlow),
+                                     replace(kFragmentUniformFlowTag, shaders::kLeadrFsUniformFlow),
                                      false);
     sp->AddFragmentShaderReplacement(kFragmentImplTag, true,
                                      replace(kFragmentImplTag, implementation), false);
-    const std::pair<const char*, const char*> attributes[] = {{"leadrNormalMC", "Normals"},
-                                                              {"leadrTangentMC", "Tangents"},
-                                                              {"leadrTCoordMC", "TCoords"}};
+    const std::pair<const char*, const char*> attributes[] = {
+        {"leadrNormalMC", "Normals"}, {"leadrTangentMC", "Tangents"}, {"leadrTCoordMC", "TCoords"}};
     for (const auto& [attribute, array] : attributes)
     {
       mapper->MapDataArrayToVertexAttribute(attribute, array,
@@ -403,8 +400,8 @@ public:
 
 LeadrShadingMaterial::LeadrShadingMaterial(std::shared_ptr<EnvironmentLighting> lighting,
                                            LeadrSettings settings)
-    : SurfaceShaderMaterial(std::move(lighting), "LEADR material"),
-      settings_(std::move(settings)), textures_(std::make_unique<Textures>())
+    : SurfaceShaderMaterial(std::move(lighting), "LEADR material"), settings_(std::move(settings)),
+      textures_(std::make_unique<Textures>())
 {
   validate(settings_);
   setLights(settings_.lights);

@@ -21,9 +21,8 @@ namespace
 {
 // CHANNELS of IMAGE as a bilinear, repeating float texture, row 0 at v = 1 (the structure's
 // y = 1), so texture(s, p) is the core's wrapping bilinear lookup at p.
-vtkSmartPointer<vtkTextureObject> uploadStructure(vtkOpenGLRenderWindow* window,
-                                                  const Image& image, int channels,
-                                                  const char* subject)
+vtkSmartPointer<vtkTextureObject> uploadStructure(vtkOpenGLRenderWindow* window, const Image& image,
+                                                  int channels, const char* subject)
 {
   std::vector<float> texels(std::size_t(image.width) * image.height * channels);
   for (int y = 0; y < image.height; ++y)
