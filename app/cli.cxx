@@ -201,6 +201,12 @@ const std::string& Arguments::text(const std::string& name) const
   return value(name).text;
 }
 
+std::vector<std::string> Arguments::texts(const std::string& name) const
+{
+  const auto found = repeated_.find(name);
+  return found != repeated_.end() ? found->second : std::vector<std::string>{};
+}
+
 Arguments parseArguments(const Command& command, const std::vector<std::string>& args)
 {
   Arguments parsed;
@@ -245,7 +251,7 @@ Arguments parseArguments(const Command& command, const std::vector<std::string>&
     {
       throw usageError(name, "unknown option" + seeHelp);
     }
-    if (parsed.given_.count(option->name))
+    if (parsed.given_.count(option->name) && !option->repeatable)
     {
       throw usageError(name, "given more than once");
     }
@@ -275,6 +281,10 @@ Arguments parseArguments(const Command& command, const std::vector<std::string>&
                                                 value.text) == option->choices.end())
       {
         throw usageError(name, "'" + text + "' is not one of " + joined(option->choices, ", "));
+      }
+      if (option->repeatable)
+      {
+        parsed.repeated_[option->name].push_back(value.text);
       }
       parsed.given_[option->name] = std::move(value);
     }

@@ -35,6 +35,7 @@ struct Option
   ParameterSpec spec;               // type, default, range, unit and help (spec.name is not used)
   std::vector<std::string> choices; // allowed values of a text option, if restricted
   bool required = false;
+  bool repeatable = false; // may be given more than once (Arguments::texts lists every value)
 };
 
 // The option of declared parameter PARAMETER, named "--" + PARAMETER unless NAME is given
@@ -67,11 +68,14 @@ public:
   int integer(const std::string& name) const;
   glm::dvec3 color(const std::string& name) const;
   const std::string& text(const std::string& name) const;
+  // Every value given for a repeatable option, in command-line order (empty when not given).
+  std::vector<std::string> texts(const std::string& name) const;
 
 private:
   friend Arguments parseArguments(const Command&, const std::vector<std::string>&);
   std::map<std::string, ParameterValue> given_;
   std::map<std::string, ParameterValue> defaults_;
+  std::map<std::string, std::vector<std::string>> repeated_;
 };
 
 // "--name VALUE", "--name=VALUE", aliases ("-o FILE"), "-h"/"--help", "--" ending the options.

@@ -6,6 +6,7 @@
 #include "OffscreenRenderer.h"
 #include "SurfacePreparation.h"
 #include "cli.h"
+#include "render_models.h"
 #include "env/environment.h"
 #include "image/image.h"
 #include "maps/quaternion_map.h"
@@ -143,10 +144,12 @@ Command renderCommand()
   c.options.push_back(output);
   c.options.push_back(
       flagOption("--time", "print the median frame time and the samples per second"));
+  addModelOptions(c);
   c.details = "Examples:\n"
               "  aniso render --builtin sphere --nu 20000 --nv 70 -o sphere.png\n"
               "  aniso render part.stl --tangents around:0,0,1 --frames 16 -o part.exr\n"
-              "  aniso render --builtin plate --tpr circular --view +z --time -o disc.png\n";
+              "  aniso render --builtin plate --tpr circular --view +z --time -o disc.png\n"
+              "  aniso render --builtin sphere --model ward --light dir:1,-1,1:3 -o ward.png\n";
   return c;
 }
 
@@ -368,6 +371,7 @@ int runRender(const std::vector<std::string>& args, std::ostream& out)
   settings.cubeSize = parameters.integer("cube-size");
   settings.frames = a.integer("--frames");
   settings.jitter = a.text("--jitter") == "on";
+  applyModelOptions(a, settings);
 
   // Then the inputs, each failing with its file's name.
   std::string source;
@@ -430,7 +434,8 @@ int runRender(const std::vector<std::string>& args, std::ostream& out)
       << (exr ? "linear RGBA float, alpha = coverage" : "tone-mapped sRGB") << ") of " << source
       << ": " << settings.frames << " frame(s) x " << samples << " samples, "
       << parameters.text("method") << ", filtered " << parameters.text("filtered")
-      << ", half vectors from the " << parameters.text("half-vectors") << "\n";
+      << ", half vectors from the " << parameters.text("half-vectors") << "; "
+      << modelSummary(a) << "\n";
   if (a.has("--time"))
   {
     const double median = medianSeconds(result.frameSeconds);

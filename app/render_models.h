@@ -1,0 +1,28 @@
+#pragma once
+// The shading-model options of `aniso render`: --model NAME (materials/models.h), --light
+// (repeatable) and --sample-material, kept apart from the environment material's options. A
+// model other than as-env is drawn through RenderSettings::installMaterial.
+#include "OffscreenRenderer.h"
+#include "cli.h"
+#include "lights/light.h"
+
+#include <string>
+#include <vector>
+
+namespace aniso::cli
+{
+// Adds --model, --light and --sample-material to COMMAND.
+void addModelOptions(Command& command);
+
+// The lights of the command line (--light, in order), or the default pair when none is given.
+// Throws UsageError for a bad light or more than LitModelMaterial::kMaxLights.
+std::vector<Light> lightsFromOptions(const Arguments& arguments);
+
+// Reads those options into SETTINGS: for a lit model, its installer with the lights and a
+// uniform material made from settings.material (n_u, n_v, F0, albedo: see uniformTexel) unless
+// --sample-material names one. Throws UsageError for options that do not apply to the model.
+void applyModelOptions(const Arguments& arguments, RenderSettings& settings);
+
+// What the summary line says about the model: "model banks, 2 light(s), material marble".
+std::string modelSummary(const Arguments& arguments);
+} // namespace aniso::cli

@@ -1,0 +1,387 @@
+#include "LitModelMaterial.h"
+
+#include "MaterialShaderSource.h"
+#include "RendererMatrices.h"
+#include "TextureUpload.h"
+#include "aniso_shaders.h"
+#include "error.h"
+
+#include <array>
+#include <cmath>
+#include <glm/mat3x3.hpp>
+#include <glm/matrix.hpp>
+#include <optional>
+#include <vtkActor.h>
+#include <vtkCommand.h>
+#include <vtkDataArray.h>
+#include <vtkDataObject.h>
+#include <vtkOpenGLPolyDataMapper.h>
+#include <vtkOpenGLRenderWindow.h>
+#include <vtkPointData.h>
+#include <vtkPolyData.h>
+#include <vtkRenderer.h>
+#include <vtkShaderProgram.h>
+#include <vtkShaderProperty.h>
+#include <vtkSmartPointer.h>
+#include <vtkTextureObject.h>
+#include <vtkWeakPointer.h>
+
+namespace aniso
+{
+namespace
+{
+// The tags the material's code follows (each replacement keeps its tag).
+constexpr const char* kVertexDecTag = "//VTK::Normal::Dec";
+constexpr const char* kVertexImplTag = "//VTK::CustomEnd::Impl";
+constexpr const char* kFragmentDecTag = "//VTK::Light::Dec";
+constexpr const char* kFragmentUniformFlowTag = "//VTK::UniformFlow::Impl";
+constexpr const char* kFragmentImplTag = "//VTK::Light::Impl";
+
+const char* modelDefine(LitModel model)
+{
+  switch (model)
+  {
+  case LitModel::AshikhminShirley:
+    return "LIT_MODEL_ASHIKHMIN_SHIRLEY";
+  case LitModel::Banks:
+    return "LIT_MODEL_BANKS";
+  case LitModel::BlinnPhong:
+    return "LIT_MODEL_BLINN_PHONG";
+  case LitModel::Ward:
+    return "LIT_MODEL_WARD";
+  case LitModel::HeidrichSeidel:
+    return "LIT_MODEL_HEIDRICH_SEIDEL";
+  }
+  return "LIT_MODEL_ASHIKHMIN_SHIRLEY";
+}
+
+bool hasArray(vtkPolyData* poly, const char* name, int components)
+{
+  vtkDataArray* array = poly->GetPointData()->GetArray(name);
+  return array && array->GetNumberOfComponents() == components &&
+         array->GetNumberOfTuples() == poly->GetNumberOfPoints();
+}
+
+void checkMap(const Image& image, int channels, const char* name)
+{
+  if (image.width <= 0 || image.height <= 0 || image.channels < channels ||
+      image.data.size() != std::size_t(image.width) * image.height * image.channels)
+  {
+    throw errorAbout("material maps", std::string(name) +
+                                          " must be a non-empty image with at least " +
+                                          std::to_string(channels) + " channels");
+  }
+}
+
+std::shared_ptr<const SvMaps> defaultMaps()
+{
+  static const auto maps = std::make_shared<const SvMaps>(uniformSvMaps(SvTexel{}));
+  return maps;
+}
+} // namespace
+
+std::string litVariantDefines(const LitModelVariant& v)
+{
+  std::string d = "#define LIT_MAX_LIGHTS " + std::to_string(LitModelMaterial::kMaxLights) + "\n";
+  d += std::string("#define ") + modelDefine(v.model) + "\n";
+  if (v.normals)
+  {
+    d += "#define LIT_HAVE_NORMALS\n";
+  }
+  if (v.tangents)
+  {
+    d += "#define LIT_HAVE_TANGENTS\n";
+  }
+  if (v.tcoords)
+  {
+    d += "#define LIT_HAVE_TCOORDS\n";
+  }
+  return d;
+}
+
+class LitModelMaterial::Impl
+{
+public:
+  LitModelSettings settings;
+  vtkWeakPointer<vtkActor> actor;
+  vtkWeakPointer<vtkRenderer> renderer;
+  vtkWeakPointer<vtkOpenGLPolyDataMapper> mapper;
+  unsigned long updateShaderTag = 0;
+  unsigned long mapperEndTag = 0;
+  std::optional<LitModelVariant> installed;
+  bool normals = false;
+  bool tangents = false;
+  bool tcoords = false;
+
+  // The textures and the maps they were made from (held, so new maps at a freed address are
+  // never taken for the old ones).
+  vtkWeakPointer<vtkOpenGLRenderWindow> textureWindow;
+  std::shared_ptr<const SvMaps> uploadedMaps;
+  std::array<vtkSmartPointer<vtkTextureObject>, 3> textures;
+
+  ~Impl() { detach(); }
+
+  void clearReplacements()
+  {
+    vtkShaderProperty* sp = actor->GetShaderProperty();
+    sp->ClearVertexShaderReplacement(kVertexDecTag, true);
+    sp->ClearVertexShaderReplacement(kVertexImplTag, true);
+    sp->ClearFragmentShaderReplacement(kFragmentDecTag, true);
+    sp->ClearFragmentShaderReplacement(kFragmentUniformFlowTag, true);
+    sp->ClearFragmentShaderReplacement(kFragmentImplTag, true);
+  }
+
+  void detach()
+  {
+    if (mapper)
+    {
+      mapper->RemoveObserver(updateShaderTag);
+      mapper->RemoveObserver(mapperEndTag);
+      for (const char* attribute : {"litNormalMC", "litTangentMC", "litTCoordMC"})
+      {
+        mapper->RemoveVertexAttributeMapping(attribute);
+      }
+    }
+    if (actor)
+    {
+      clearReplacements();
+      actor->Modified();
+    }
+    mapper = nullptr;
+    actor = nullptr;
+    renderer = nullptr;
+    installed.reset();
+  }
+
+  void onMapperEnd(vtkObject*, unsigned long, void*)
+  {
+    vtkPolyData* poly = mapper ? mapper->GetInput() : nullptr;
+    if (!poly)
+    {
+      return;
+    }
+    normals = hasArray(poly, kNormalsArray, 3);
+    tangents = hasArray(poly, kTangentsArray, 3);
+    tcoords = hasArray(poly, kTCoordsArray, 2);
+    updateVariant();
+  }
+
+  void updateVariant()
+  {
+    const LitModelVariant v{settings.model, normals, tangents, tcoords};
+    if (!installed || *installed != v)
+    {
+      install(v);
+    }
+  }
+
+  void install(const LitModelVariant& v)
+  {
+    if (!actor || !mapper)
+    {
+      return;
+    }
+    const std::string defines = litVariantDefines(v);
+    auto after = [](const char* tag, const std::string& text)
+    { return std::string(tag) + "\n" + text; };
+    clearReplacements();
+    vtkShaderProperty* sp = actor->GetShaderProperty();
+    sp->AddVertexShaderReplacement(kVertexDecTag, true,
+                                   after(kVertexDecTag, defines + shaders::kLitVsDec), false);
+    sp->AddVertexShaderReplacement(kVertexImplTag, true, after(kVertexImplTag, shaders::kLitVsImpl),
+                                   false);
+    sp->AddFragmentShaderReplacement(kFragmentDecTag, true,
+                                     after(kFragmentDecTag, defines + shaders::kLitFsDec), false);
+    sp->AddFragmentShaderReplacement(kFragmentUniformFlowTag, true,
+                                     after(kFragmentUniformFlowTag, shaders::kLitFsUniformFlow),
+                                     false);
+    sp->AddFragmentShaderReplacement(kFragmentImplTag, true,
+                                     after(kFragmentImplTag, shaders::kLitFsImpl), false);
+    auto map = [this](bool on, const char* attribute, const char* array)
+    {
+      if (on)
+      {
+        mapper->MapDataArrayToVertexAttribute(attribute, array,
+                                              vtkDataObject::FIELD_ASSOCIATION_POINTS, -1);
+      }
+      else
+      {
+        mapper->RemoveVertexAttributeMapping(attribute);
+      }
+    };
+    map(v.normals, "litNormalMC", kNormalsArray);
+    map(v.tangents, "litTangentMC", kTangentsArray);
+    map(v.tcoords, "litTCoordMC", kTCoordsArray);
+    installed = v;
+  }
+
+  void updateTextures(vtkOpenGLRenderWindow* window)
+  {
+    const std::shared_ptr<const SvMaps> maps = settings.maps ? settings.maps : defaultMaps();
+    if (textureWindow == window && uploadedMaps == maps && textures[0])
+    {
+      return;
+    }
+    textures[0] = uploadMapTexture(window, maps->tangentAlpha, 4, "tangent and roughness map");
+    textures[1] = uploadMapTexture(window, maps->albedoSpecular, 4, "albedo and specular map");
+    textures[2] = uploadMapTexture(window, maps->normal, 3, "normal map");
+    textureWindow = window;
+    uploadedMaps = maps;
+  }
+
+  void onUpdateShader(vtkObject*, unsigned long, void* data)
+  {
+    auto* program = static_cast<vtkShaderProgram*>(data);
+    if (!program || !installed || !actor || !renderer || !program->IsUniformUsed("litLightCount"))
+    {
+      return;
+    }
+    auto* window = vtkOpenGLRenderWindow::SafeDownCast(renderer->GetRenderWindow());
+    if (!window)
+    {
+      return;
+    }
+    try
+    {
+      updateTextures(window);
+      setUniforms(program);
+    }
+    catch (const std::exception& e)
+    {
+      // Exceptions must not unwind through VTK's render loop; the draw goes on unshaded.
+      vtkGenericWarningMacro("lit material: " << e.what());
+    }
+  }
+
+  void setUniforms(vtkShaderProgram* program)
+  {
+    setUniformMatrix(program, "litClipToWorld", clipToWorld(renderer));
+    const glm::dmat3 toWorld(toGlm(actor->GetMatrix()));
+    const double det = glm::determinant(toWorld);
+    const glm::dmat3 normalToWorld =
+        det != 0.0 && std::isfinite(det) ? glm::transpose(glm::inverse(toWorld)) : toWorld;
+    setUniformMatrix(program, "litDirectionToWorld", toWorld);
+    setUniformMatrix(program, "litNormalToWorld", normalToWorld);
+
+    float vectors[kMaxLights][4] = {};
+    float intensities[kMaxLights][3] = {};
+    const int count = static_cast<int>(settings.lights.size());
+    for (int i = 0; i < count; ++i)
+    {
+      const Light& light = settings.lights[std::size_t(i)];
+      const bool point = light.type == LightType::Point;
+      const glm::dvec3 vector = point ? light.vector : glm::normalize(light.vector);
+      for (int c = 0; c < 3; ++c)
+      {
+        vectors[i][c] = static_cast<float>(vector[c]);
+        intensities[i][c] = static_cast<float>(light.intensity[c]);
+      }
+      vectors[i][3] = point ? 1.0f : 0.0f;
+    }
+    program->SetUniformi("litLightCount", count);
+    program->SetUniform4fv("litLightVector", kMaxLights, vectors);
+    program->SetUniform3fv("litLightIntensity", kMaxLights, intensities);
+
+    const char* samplers[3] = {"litTangentAlpha", "litAlbedoSpecular", "litNormalMap"};
+    for (std::size_t i = 0; i < textures.size(); ++i)
+    {
+      textures[i]->Activate();
+      program->SetUniformi(samplers[i], textures[i]->GetTextureUnit());
+    }
+  }
+};
+
+LitModelMaterial::LitModelMaterial(const LitModelSettings& settings)
+    : impl_(std::make_unique<Impl>())
+{
+  validate(settings);
+  impl_->settings = settings;
+}
+
+LitModelMaterial::~LitModelMaterial() = default;
+
+void LitModelMaterial::validate(const LitModelSettings& s)
+{
+  if (s.lights.size() > std::size_t(kMaxLights))
+  {
+    throw errorAbout("lights", std::to_string(s.lights.size()) + " given, at most " +
+                                   std::to_string(kMaxLights));
+  }
+  for (const Light& light : s.lights)
+  {
+    validateLight(light);
+  }
+  if (s.maps)
+  {
+    checkMap(s.maps->tangentAlpha, 4, "tangentAlpha");
+    checkMap(s.maps->albedoSpecular, 4, "albedoSpecular");
+    checkMap(s.maps->normal, 3, "normal");
+  }
+}
+
+void LitModelMaterial::apply(vtkActor* actor, vtkRenderer* renderer)
+{
+  if (!actor || !renderer)
+  {
+    throw errorAbout("material", "needs an actor and a renderer");
+  }
+  auto* mapper = vtkOpenGLPolyDataMapper::SafeDownCast(actor->GetMapper());
+  if (!mapper)
+  {
+    throw errorAbout("material", "the actor's mapper is not an OpenGL polydata mapper");
+  }
+  impl_->detach();
+  impl_->actor = actor;
+  impl_->renderer = renderer;
+  impl_->mapper = mapper;
+  Impl* impl = impl_.get();
+  impl_->updateShaderTag =
+      mapper->AddObserver(vtkCommand::UpdateShaderEvent, impl, &Impl::onUpdateShader);
+  impl_->mapperEndTag = mapper->AddObserver(vtkCommand::EndEvent, impl, &Impl::onMapperEnd);
+  if (vtkPolyData* poly = mapper->GetInput())
+  {
+    if (poly->GetNumberOfPoints() > 0)
+    {
+      impl_->onMapperEnd(nullptr, 0, nullptr);
+    }
+  }
+  actor->Modified();
+}
+
+void LitModelMaterial::detach()
+{
+  impl_->detach();
+}
+
+void LitModelMaterial::setSettings(const LitModelSettings& settings)
+{
+  validate(settings);
+  impl_->settings = settings;
+  if (impl_->installed)
+  {
+    impl_->updateVariant();
+  }
+  if (impl_->actor)
+  {
+    // Lights and maps live outside VTK's objects; this restarts progressive accumulation.
+    impl_->actor->Modified();
+  }
+}
+
+const LitModelSettings& LitModelMaterial::settings() const
+{
+  return impl_->settings;
+}
+
+MaterialInstaller litModelInstaller(const LitModelSettings& settings)
+{
+  LitModelMaterial::validate(settings);
+  return [settings](vtkActor* actor, vtkRenderer* renderer,
+                    const std::shared_ptr<EnvironmentLighting>&) -> std::shared_ptr<void>
+  {
+    auto material = std::make_shared<LitModelMaterial>(settings);
+    material->apply(actor, renderer);
+    return material;
+  };
+}
+} // namespace aniso
