@@ -34,8 +34,7 @@ constexpr int kTprBakeSide = 1024; // texels of a TPR pattern map: finer than an
 const char* const kDeclared[] = {"env",          "env-rotation", "nu",       "nv",
                                  "f0",           "albedo",       "method",   "filtered",
                                  "half-vectors", "samples",      "lut-size", "lut-samples",
-                                 "cube-size",    "height-scale", "exposure", "tone-mapping",
-                                 "env-sampling"};
+                                 "cube-size",    "height-scale", "exposure", "tone-mapping"};
 
 Option declared(const char* name)
 {
@@ -46,7 +45,7 @@ Option declared(const char* name)
   }
   if (std::string(name) == "env")
   {
-    o.valueName = "FILE|builtin:studio|builtin:sunsky";
+    o.valueName = "FILE|builtin:studio";
   }
   return o;
 }

@@ -8,6 +8,8 @@
 #include "lut/lut_cache.h"
 #include "vtkAnisoAccumulationPass.h"
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <glm/gtc/type_ptr.hpp>
 #include <glm/mat3x3.hpp>
@@ -47,6 +49,14 @@ constexpr const char* kFragmentUniformFlowTag = "//VTK::UniformFlow::Impl";
 constexpr const char* kFragmentImplTag = "//VTK::Light::Impl";
 
 constexpr int kMaxSamples = 1 << 16;
+
+// Filtered importance sampling: the level from the sample's footprint along the lobe's sharp
+// axis (the anisotropy term is 0.5 log2 of the width ratio sqrt((n_max + 1) / (n_min + 1))) and
+// no bias. Measured against the reference, it beats unfiltered lookups at N = 4, 16, 64 for
+// (10, 10), (1000, 100) and (20000, 70), where the isotropic footprint with a bias of +1 lost
+// to them at every N (docs/BENCHMARKS.md, "Filtered importance sampling and MIS in the shader").
+constexpr double kLodAnisotropyWeight = 0.25;
+constexpr double kLodBias = 0.0;
 
 void setVector(vtkShaderProgram* program, const char* name, const glm::dvec3& v)
 {
@@ -385,6 +395,21 @@ public:
     program->SetUniformf("anisoLog2TexelSolidAngle",
                          static_cast<float>(std::log2(4.0 * M_PI / (6.0 * size * size))));
     program->SetUniformf("anisoMaxLod", static_cast<float>(lighting->mipLevels() - 1));
+    const double nMax = std::max(settings.lobe.nu, settings.lobe.nv);
+    const double nMin = std::min(settings.lobe.nu, settings.lobe.nv);
+    program->SetUniformf(
+        "anisoLodAnisotropy",
+        static_cast<float>(kLodAnisotropyWeight * std::log2((nMax + 1.0) / (nMin + 1.0))));
+    program->SetUniformf("anisoLodBias", static_cast<float>(kLodBias));
+    program->SetUniformf("anisoPixelDecorrelation", settings.pixelDecorrelation ? 1.0f : 0.0f);
+    if (installed->environmentMis)
+    {
+      bind(program, "anisoEnvCdf", lighting->samplingCdfTexture(window));
+      bind(program, "anisoEnvPdf", lighting->samplingPdfTexture(window));
+      const EnvironmentDistribution& d = lighting->samplingDistribution();
+      program->SetUniform2i("anisoEnvGrid", std::array<int, 2>{d.width(), d.height()}.data());
+      program->SetUniformf("anisoLobeFraction", static_cast<float>(misLobeFraction(settings.lobe)));
+    }
     program->SetUniform3fv(
         "anisoIrradianceSH", 9,
         reinterpret_cast<const float(*)[3]>(lighting->irradianceCoefficients().data()));
@@ -394,12 +419,10 @@ public:
       bind(program, "anisoHalfVectorLut", halfVectorTexture.object);
       program->SetUniformi("anisoHalfVectorLutSize", halfVectorLut->size);
     }
-    else
-    {
-      const float exponents[2] = {static_cast<float>(settings.lobe.nu),
-                                  static_cast<float>(settings.lobe.nv)};
-      program->SetUniform2f("anisoExponents", exponents);
-    }
+    // The in-shader half vectors and the MIS densities read the exponents.
+    const float exponents[2] = {static_cast<float>(settings.lobe.nu),
+                                static_cast<float>(settings.lobe.nv)};
+    program->SetUniform2f("anisoExponents", exponents);
     if (brdfTexture.object)
     {
       bind(program, "anisoBrdfLut", brdfTexture.object);

@@ -68,8 +68,69 @@ vtkTextureObject* EnvironmentLighting::cubeTexture(vtkOpenGLRenderWindow* window
   return texture_;
 }
 
+const EnvironmentDistribution& EnvironmentLighting::samplingDistribution()
+{
+  if (!distribution_)
+  {
+    EnvSamplingOptions options;
+    options.width = 1024;
+    distribution_ = sharedDistribution(*environment_, options);
+  }
+  return *distribution_;
+}
+
+void EnvironmentLighting::uploadSamplingTables(vtkOpenGLRenderWindow* window)
+{
+  if (cdfTexture_ && pdfTexture_ && samplingWindow_ == window)
+  {
+    return;
+  }
+  for (vtkTextureObject* t : {cdfTexture_.Get(), pdfTexture_.Get()})
+  {
+    if (t && samplingWindow_)
+    {
+      t->ReleaseGraphicsResources(samplingWindow_);
+    }
+  }
+  const EnvironmentDistribution& d = samplingDistribution();
+  const Image cdf = d.cdfTable();
+  const Image pdf = d.pdfTable();
+  cdfTexture_ =
+      uploadFloatTexture(window, cdf.width, cdf.height, 1, cdf.data.data(),
+                         TextureFiltering::Nearest, TextureWrap::Clamp, "environment sampling CDF");
+  pdfTexture_ = uploadFloatTexture(window, pdf.width, pdf.height, 1, pdf.data.data(),
+                                   TextureFiltering::Nearest, TextureWrap::Clamp,
+                                   "environment sampling density");
+  samplingWindow_ = window;
+}
+
+vtkTextureObject* EnvironmentLighting::samplingCdfTexture(vtkOpenGLRenderWindow* window)
+{
+  uploadSamplingTables(window);
+  return cdfTexture_;
+}
+
+vtkTextureObject* EnvironmentLighting::samplingPdfTexture(vtkOpenGLRenderWindow* window)
+{
+  uploadSamplingTables(window);
+  return pdfTexture_;
+}
+
 void EnvironmentLighting::releaseGraphicsResources(vtkWindow* window)
 {
+  if (samplingWindow_ == window)
+  {
+    for (vtkTextureObject* t : {cdfTexture_.Get(), pdfTexture_.Get()})
+    {
+      if (t)
+      {
+        t->ReleaseGraphicsResources(window);
+      }
+    }
+    cdfTexture_ = nullptr;
+    pdfTexture_ = nullptr;
+    samplingWindow_ = nullptr;
+  }
   if (texture_ && textureWindow_ == window)
   {
     texture_->ReleaseGraphicsResources(window);

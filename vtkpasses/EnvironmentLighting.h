@@ -3,6 +3,7 @@
 // (specular lookups, background) and SH9 irradiance (diffuse), rotated about the world Z axis.
 // Shared by every anisotropic material of a renderer and by the accumulation pass.
 #include "env/cubemap.h"
+#include "env/env_sampling.h"
 #include "env/environment.h"
 
 #include <array>
@@ -51,6 +52,15 @@ public:
 
   // The cube texture in WINDOW's context, uploaded on first use (and again for a new window).
   vtkTextureObject* cubeTexture(vtkOpenGLRenderWindow* window);
+
+  // Environment importance sampling, baked on first use only (a material with sampling off
+  // never pays for it): the luminance x solid-angle distribution over a 1024 x 512 grid (texels
+  // about the sun's size, so its samples land on it), shared through sharedDistribution.
+  const EnvironmentDistribution& samplingDistribution();
+  // Its shader tables in WINDOW's context (R32F, nearest, read with texelFetch): the CDFs
+  // (EnvironmentDistribution::cdfTable) and the density per solid angle (pdfTable).
+  vtkTextureObject* samplingCdfTexture(vtkOpenGLRenderWindow* window);
+  vtkTextureObject* samplingPdfTexture(vtkOpenGLRenderWindow* window);
   void releaseGraphicsResources(vtkWindow* window);
 
 private:
@@ -61,5 +71,11 @@ private:
   uint64_t revision_ = 0;
   vtkSmartPointer<vtkTextureObject> texture_;
   vtkWeakPointer<vtkOpenGLRenderWindow> textureWindow_;
+  std::shared_ptr<const EnvironmentDistribution> distribution_;
+  vtkSmartPointer<vtkTextureObject> cdfTexture_;
+  vtkSmartPointer<vtkTextureObject> pdfTexture_;
+  vtkWeakPointer<vtkOpenGLRenderWindow> samplingWindow_;
+
+  void uploadSamplingTables(vtkOpenGLRenderWindow* window);
 };
 } // namespace aniso

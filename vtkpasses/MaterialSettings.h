@@ -24,6 +24,12 @@ enum class HalfVectorSource
   Shader, // computed per sample in the shader
 };
 
+enum class EnvironmentSampling
+{
+  Off, // lobe samples only (the published method)
+  Mis, // one-sample MIS of lobe and environment samples (exact method only)
+};
+
 struct MaterialSettings
 {
   // Uniforms.
@@ -32,6 +38,10 @@ struct MaterialSettings
   glm::dvec3 albedo{0.0, 0.0, 0.0};   // linear RGB; 0 = no diffuse
   int samples = 16;                   // N per fragment and frame
   double heightScale = 0.02;          // relief depth, texture-coordinate units
+  // Each pixel rotates its sample set by a hash of its position: the error of few samples turns
+  // from bands into noise that progressive frames average out. Off by default: a single
+  // frame's error against the reference is as large or larger (docs/BENCHMARKS.md).
+  bool pixelDecorrelation = false;
 
   // Variants.
   SpecularMethod method = SpecularMethod::Exact;
@@ -39,6 +49,9 @@ struct MaterialSettings
   HalfVectorSource halfVectors = HalfVectorSource::Lut; // as fast or faster, as accurate
   int lutSize = 64;                                     // half-vector and BRDF LUTs
   int brdfLutSamples = 1024;                            // importance samples per BRDF LUT texel
+  // Environment importance sampling combined with the lobe samples (bright small sources
+  // next to rough lobes); needs the exact method. Off costs nothing.
+  EnvironmentSampling environmentSampling = EnvironmentSampling::Off;
 
   // Maps, read through the mesh's texture coordinates; null = not used. Images have row 0 at
   // the top (v = 1), as files store them.
@@ -59,8 +72,14 @@ struct MaterialSettings
   }
 };
 
+// Share of the lobe technique in the shader's one-sample MIS, from the lobe's width as
+// measured on the CPU (docs/BENCHMARKS.md): 1/2 for broad lobes (a sun next to them needs
+// environment samples), rising to 15/16 for sharp ones (lobe samples alone are best there).
+double misLobeFraction(const AsLobe& lobe);
+
 // The declared parameters (core/material/parameters.h) that a material takes: n_u, n_v, F0,
-// albedo, samples, LUT size and samples, method, filtered, half-vectors, height scale.
+// albedo, samples, LUT size and samples, method, filtered, half-vectors, env-sampling,
+// height scale.
 // Everything else (the maps) keeps its value in BASE.
 MaterialSettings materialFromParameters(const ParameterSet& parameters, MaterialSettings base = {});
 } // namespace aniso

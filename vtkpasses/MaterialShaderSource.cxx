@@ -7,10 +7,10 @@ namespace aniso
 bool MaterialVariant::operator==(const MaterialVariant& o) const
 {
   return method == o.method && filtered == o.filtered && halfVectors == o.halfVectors &&
-         normals == o.normals && tangents == o.tangents && tcoords == o.tcoords &&
-         normalMap == o.normalMap && quaternionMap == o.quaternionMap && tprMap == o.tprMap &&
-         heightMap == o.heightMap && albedoMap == o.albedoMap && occlusionMap == o.occlusionMap &&
-         metallicMap == o.metallicMap;
+         environmentMis == o.environmentMis && normals == o.normals && tangents == o.tangents &&
+         tcoords == o.tcoords && normalMap == o.normalMap && quaternionMap == o.quaternionMap &&
+         tprMap == o.tprMap && heightMap == o.heightMap && albedoMap == o.albedoMap &&
+         occlusionMap == o.occlusionMap && metallicMap == o.metallicMap;
 }
 
 MaterialVariant materialVariant(const MaterialSettings& settings, bool normals, bool tangents,
@@ -20,6 +20,8 @@ MaterialVariant materialVariant(const MaterialSettings& settings, bool normals, 
   v.method = settings.method;
   v.filtered = settings.filtered;
   v.halfVectors = settings.halfVectors;
+  v.environmentMis = settings.method == SpecularMethod::Exact &&
+                     settings.environmentSampling == EnvironmentSampling::Mis;
   v.normals = normals;
   v.tangents = tangents;
   v.tcoords = tcoords;
@@ -52,6 +54,7 @@ std::string variantDefines(const MaterialVariant& v)
   define(v.method == SpecularMethod::Exact, "ANISO_METHOD_EXACT");
   define(v.filtered, "ANISO_FILTERED");
   define(v.halfVectors == HalfVectorSource::Lut, "ANISO_HALF_VECTORS_FROM_LUT");
+  define(v.environmentMis, "ANISO_ENVIRONMENT_MIS");
   define(v.normals, "ANISO_HAVE_NORMALS");
   define(v.tangents, "ANISO_HAVE_TANGENTS");
   define(v.tcoords, "ANISO_HAVE_TCOORDS");

@@ -19,7 +19,8 @@ struct MaterialVariant
   SpecularMethod method = SpecularMethod::Exact;
   bool filtered = true;
   HalfVectorSource halfVectors = HalfVectorSource::Shader;
-  bool normals = false; // mesh attributes present
+  bool environmentMis = false; // environment samples and MIS (exact method only)
+  bool normals = false;        // mesh attributes present
   bool tangents = false;
   bool tcoords = false;
   bool normalMap = false; // maps in use (only with tcoords)

@@ -1,4 +1,5 @@
 #include "env/environment.h"
+#include "env/sun_sky.h"
 
 #include "env/parallel.h"
 #include "error.h"
@@ -222,8 +223,15 @@ std::shared_ptr<Environment> openEnvironment(const std::string& spec)
     return std::make_shared<StudioEnvironment>();
   if (spec == "builtin:white")
     return std::make_shared<UniformEnvironment>(glm::dvec3(1.0));
+  if (spec == "builtin:sunsky")
+    // A stress environment: the sun (radius 0.27 degrees, radiance 1e5) over a sky of 1, as in
+    // the variance benchmark (docs/BENCHMARKS.md).
+    return std::make_shared<SunSkyEnvironment>(glm::dvec3(0.3, -0.6, 0.74),
+                                               SunSkyEnvironment::kSunAngularRadius,
+                                               glm::dvec3(1e5), glm::dvec3(1.0));
   if (spec.rfind("builtin:", 0) == 0)
-    throw errorAbout(spec, "unknown built-in environment (known: builtin:studio, builtin:white)");
+    throw errorAbout(spec, "unknown built-in environment (known: builtin:studio, builtin:white, "
+                           "builtin:sunsky)");
   if (spec.empty())
     throw errorAbout("environment", "empty path");
   return loadEquirect(spec);

@@ -77,7 +77,8 @@ private:
   glm::dvec3 radiance_;
 };
 
-// "builtin:studio", "builtin:white" (uniform radiance 1) or a file path (loadEquirect).
+// "builtin:studio", "builtin:white" (uniform radiance 1), "builtin:sunsky" (a sun of 1e5 over a
+// sky of 1, see sun_sky.h) or a file path (loadEquirect).
 std::shared_ptr<Environment> openEnvironment(const std::string& spec);
 
 // Samples an environment into an equirectangular RGB image (supersample^2 samples per texel,

@@ -91,7 +91,8 @@ std::vector<ParameterSpec> declare()
       number("lut-samples", "LUT samples", T::Integer, 1024.0, 1.0, kMaxLutSamples, 1.0,
              S::Logarithmic, {}, "importance samples per texel of the BRDF lookup table"),
       text("env", "Environment", "builtin:studio",
-           "environment: an equirectangular HDR/EXR file, builtin:studio or builtin:white"),
+           "environment: an equirectangular HDR/EXR file, builtin:studio, builtin:white or "
+           "builtin:sunsky"),
       number("env-rotation", "Rotation", T::Real, 0.0, -180.0, 180.0, 1.0, S::Linear, "deg",
              "rotation of the environment about the world Z axis"),
       number("exposure", "Exposure", T::Real, 0.0, -16.0, 16.0, 0.1, S::Linear, "EV",
@@ -104,6 +105,9 @@ std::vector<ParameterSpec> declare()
              "lookup table"),
       choice("filtered", "Filtered sampling", {"on", "off"}, "on",
              "read each sample at the environment mip level its pdf and the sample count call for"),
+      choice("env-sampling", "Environment sampling", {"off", "mis"}, "off",
+             "exact method: also sample the environment by its luminance and combine with the "
+             "lobe samples by multiple importance sampling (small bright sources, rough lobes)"),
       // The LUT is the default: equally accurate, and 1.7x faster than computing the half
       // vectors at 64 samples on llvmpipe (docs/BENCHMARKS.md, "Frame time").
       choice("half-vectors", "Half vectors", {"shader", "lut"}, "lut",

@@ -21,13 +21,24 @@ uniform mat3 anisoWorldToEnvironment; // undoes the environment rotation about Z
 uniform samplerCube anisoEnvironment;
 uniform float anisoLog2TexelSolidAngle; // log2(4 pi / (6 size^2)) of mip level 0
 uniform float anisoMaxLod;
+uniform float anisoLodAnisotropy; // 0.25 log2((n_max + 1) / (n_min + 1)), see anisoSampleLod
+uniform float anisoLodBias;       // added to every filtered level
+uniform float anisoPixelDecorrelation; // 1: each pixel shifts its sample set by a hash, 0: not
 uniform vec3 anisoIrradianceSH[9]; // SH9 radiance coefficients times the cosine-lobe factors
 
 #ifdef ANISO_HALF_VECTORS_FROM_LUT
 uniform sampler2D anisoHalfVectorLut; // RGBA32F: h in tangent space, log2 p_h
 uniform int anisoHalfVectorLutSize;
-#else
+#endif
+#if !defined(ANISO_HALF_VECTORS_FROM_LUT) || defined(ANISO_ENVIRONMENT_MIS)
 uniform vec2 anisoExponents; // (n_u, n_v)
+#endif
+#ifdef ANISO_ENVIRONMENT_MIS
+// Environment importance sampling (core/env/env_sampling.h), in environment coordinates.
+uniform sampler2D anisoEnvCdf; // R32F: row y < H the CDF of grid row y, row H the marginal
+uniform sampler2D anisoEnvPdf; // R32F, W x H: density per solid angle of each grid texel
+uniform ivec2 anisoEnvGrid;    // (W, H)
+uniform float anisoLobeFraction; // share of the lobe technique in the one-sample MIS
 #endif
 #ifdef ANISO_METHOD_SPLIT_SUM
 uniform sampler2D anisoBrdfLut; // RG32F: s, b with F0 s + b the directional albedo
@@ -68,11 +79,24 @@ float anisoRadicalInverse2(uint bits)
   return float(bits) * 2.3283064365386963e-10;
 }
 
-// Hammersley point i of count, rotated by the frame shift and kept strictly below 1.
-vec2 anisoSamplePoint(int i, int count)
+// A per-pixel Cranley-Patterson shift (integer hash of the pixel): neighbouring pixels use
+// differently rotated point sets, so the error of a few samples shows as fine noise that
+// progressive frames average out, not as bands that follow the environment.
+vec2 anisoPixelShift()
+{
+  uvec2 p = uvec2(gl_FragCoord.xy);
+  uint h = p.x * 1597334677u ^ p.y * 3812015801u;
+  h = (h ^ (h >> 16u)) * 0x7feb352du;
+  h = (h ^ (h >> 15u)) * 0x846ca68bu;
+  h ^= h >> 16u;
+  return anisoPixelDecorrelation * vec2(float(h & 0xffffu), float(h >> 16u)) * (1.0 / 65536.0);
+}
+
+// Hammersley point i of count, rotated by the frame and pixel shifts and kept strictly below 1.
+vec2 anisoSamplePoint(int i, int count, vec2 shift)
 {
   vec2 p = vec2(float(i) / float(count), anisoRadicalInverse2(uint(i)));
-  return min(fract(p + anisoFrameShift), vec2(0.99999994));
+  return min(fract(p + shift), vec2(0.99999994));
 }
 
 // 1 - 2^x for x <= 0, without the cancellation of 1 - exp2(x) near 0 (sin^2 of the sharp
@@ -135,17 +159,97 @@ vec3 anisoEnvironmentRadiance(vec3 directionWorld, float lod)
   return textureLod(anisoEnvironment, anisoWorldToEnvironment * directionWorld, lod).rgb;
 }
 
-// Filtered importance sampling: the level whose texels cover the solid angle the sample
-// stands for, Omega_s = 1 / (N p_l) with p_l = p_h / (4 v.h), against Omega_p of level 0.
-float anisoSampleLod(float log2PdfHalf, float vDotH, int count)
+// Filtered importance sampling: the level whose texels match the solid angle the sample
+// stands for, Omega_s = 1 / (N p_l) (p_l the density of l per solid angle), against Omega_p of
+// level 0. An anisotropic lobe's samples spread along its broad axis only: Omega_s is an
+// ellipse whose short side, sqrt(Omega_s / r) with r = sqrt((n_max + 1) / (n_min + 1)) the
+// ratio of the lobe's widths, is the extent a texel must not exceed, hence the
+// anisoLodAnisotropy = 0.5 log2 r term (an isotropic footprint blurs the sharp axis).
+float anisoSampleLod(float log2PdfLight, int count)
 {
 #ifdef ANISO_FILTERED
-  float log2SampleSolidAngle = log2(4.0 * vDotH) - log2PdfHalf - log2(float(count));
-  return clamp(0.5 * (log2SampleSolidAngle - anisoLog2TexelSolidAngle) + 1.0, 0.0, anisoMaxLod);
+  float log2SampleSolidAngle = -log2PdfLight - log2(float(count));
+  float lod = 0.5 * (log2SampleSolidAngle - anisoLog2TexelSolidAngle) - anisoLodAnisotropy;
+  return clamp(lod + anisoLodBias, 0.0, anisoMaxLod);
 #else
   return 0.0;
 #endif
 }
+
+#if !defined(ANISO_HALF_VECTORS_FROM_LUT) || defined(ANISO_ENVIRONMENT_MIS)
+// log2 of the AS half-vector density sqrt((n_u+1)(n_v+1))/(2 pi) (n.h)^e for h in tangent
+// space, e = (n_u h_t^2 + n_v h_b^2) / (1 - h_n^2); -inf below the surface.
+float anisoLog2HalfVectorPdf(vec3 h)
+{
+  if (h.z <= 0.0)
+  {
+    return -1e30;
+  }
+  float nu = anisoExponents.x;
+  float nv = anisoExponents.y;
+  float tangential = h.x * h.x + h.y * h.y;
+  float e = tangential > 0.0 ? (nu * h.x * h.x + nv * h.y * h.y) / tangential : 0.5 * (nu + nv);
+  float log2Norm = 0.5 * (log2(nu + 1.0) + log2(nv + 1.0)) - log2(2.0 * anisoPi);
+  return log2Norm + e * log2(h.z);
+}
+#endif
+
+#ifdef ANISO_ENVIRONMENT_MIS
+// Index i in [0, count) with cdf(i) <= x < cdf(i + 1) in row `row` of the CDF table, by
+// bisection (cdf(0) = 0 <= x < 1 = cdf(count)): never an interval of zero width.
+int anisoFindInterval(int row, int count, float x)
+{
+  int lo = 0;
+  int hi = count;
+  while (hi - lo > 1)
+  {
+    int mid = (lo + hi) / 2;
+    if (texelFetch(anisoEnvCdf, ivec2(mid, row), 0).r <= x)
+    {
+      lo = mid;
+    }
+    else
+    {
+      hi = mid;
+    }
+  }
+  return lo;
+}
+
+// A direction (environment coordinates) of the environment distribution and its density:
+// a row from the marginal CDF, a column from the row's CDF, then uniform in (phi, cos theta)
+// inside the texel, as EnvironmentDistribution::sample does.
+vec4 anisoSampleEnvironment(vec2 xi)
+{
+  int w = anisoEnvGrid.x;
+  int h = anisoEnvGrid.y;
+  int y = anisoFindInterval(h, h, xi.y);
+  float r0 = texelFetch(anisoEnvCdf, ivec2(y, h), 0).r;
+  float r1 = texelFetch(anisoEnvCdf, ivec2(y + 1, h), 0).r;
+  float t = clamp((xi.y - r0) / max(r1 - r0, 1e-30), 0.0, 1.0);
+  int x = anisoFindInterval(y, w, xi.x);
+  float c0 = texelFetch(anisoEnvCdf, ivec2(x, y), 0).r;
+  float c1 = texelFetch(anisoEnvCdf, ivec2(x + 1, y), 0).r;
+  float s = clamp((xi.x - c0) / max(c1 - c0, 1e-30), 0.0, 1.0);
+  float zTop = cos(anisoPi * float(y) / float(h));
+  float zBottom = cos(anisoPi * float(y + 1) / float(h));
+  float z = clamp(mix(zTop, zBottom, t), -1.0, 1.0);
+  float sinTheta = sqrt(max(1.0 - z * z, 0.0));
+  float phi = anisoPi - 2.0 * anisoPi * (float(x) + s) / float(w);
+  return vec4(sinTheta * cos(phi), sinTheta * sin(phi), z,
+              texelFetch(anisoEnvPdf, ivec2(x, y), 0).r);
+}
+
+// Density of the environment distribution at direction d (environment coordinates).
+float anisoEnvironmentPdf(vec3 d)
+{
+  float u = fract(0.5 - atan(d.y, d.x) * (0.5 / anisoPi));
+  float theta = acos(clamp(d.z / max(length(d), 1e-30), -1.0, 1.0));
+  vec2 grid = vec2(anisoEnvGrid);
+  ivec2 texel = clamp(ivec2(vec2(u, theta / anisoPi) * grid), ivec2(0), anisoEnvGrid - 1);
+  return texelFetch(anisoEnvPdf, texel, 0).r;
+}
+#endif
 
 #ifdef ANISO_METHOD_SPLIT_SUM
 // BRDF LUT coordinates: u = (2/pi) atan(|b.v| / |t.v|), v = sqrt(n.v).
@@ -161,17 +265,68 @@ vec2 anisoBrdfLutCoords(vec3 t, vec3 b, vec3 n, vec3 v)
 // Outgoing specular radiance towards v from the frame (t, b, n), by N importance samples of
 // the half vector: `exact` weights each by F(v.h)(n.l)/max(n.l, n.v) / N; `split-sum`
 // normalises sum L (n.l) / sum (n.l) and multiplies by F0 s + b from the BRDF LUT.
+// With environment MIS (`exact` only), point i takes the lobe technique when its first
+// coordinate is below c = anisoLobeFraction, the environment's otherwise (so the Hammersley set
+// splits in proportion), and every sample is weighted by f (n.l) / (c p_lobe + (1 - c) p_env)
+// (one-sample MIS, balance heuristic), where f (n.l) = AS weight x p_lobe(l).
 vec3 anisoSpecular(vec3 t, vec3 b, vec3 n, vec3 v, vec3 f0)
 {
   int count = max(anisoSampleCount, 1);
   float nDotV = dot(n, v);
+  vec2 shift = fract(anisoFrameShift + anisoPixelShift());
   vec3 sum = vec3(0.0);
 #ifdef ANISO_METHOD_SPLIT_SUM
   float weight = 0.0;
 #endif
+#ifdef ANISO_ENVIRONMENT_MIS
+  float c = anisoLobeFraction;
+  mat3 tbn = mat3(t, b, n);
+  mat3 environmentToWorld = transpose(anisoWorldToEnvironment);
+#endif
   for (int i = 0; i < count; ++i)
   {
-    vec4 hs = anisoHalfVector(anisoSamplePoint(i, count));
+    vec2 xi = anisoSamplePoint(i, count, shift);
+#ifdef ANISO_ENVIRONMENT_MIS
+    vec3 l;
+    vec3 h;
+    float pdfEnvironment;
+    if (xi.x < c)
+    {
+      vec4 hs = anisoHalfVector(vec2(min(xi.x / c, 0.99999994), xi.y));
+      h = tbn * hs.xyz;
+      l = 2.0 * dot(v, h) * h - v;
+      pdfEnvironment = anisoEnvironmentPdf(anisoWorldToEnvironment * l);
+    }
+    else
+    {
+      vec4 ls = anisoSampleEnvironment(vec2(min((xi.x - c) / (1.0 - c), 0.99999994), xi.y));
+      l = environmentToWorld * ls.xyz;
+      h = normalize(v + l);
+      pdfEnvironment = ls.w;
+    }
+    float vDotH = dot(v, h);
+    float nDotL = dot(n, l);
+    if (vDotH <= 0.0 || nDotL <= 0.0)
+    {
+      continue;
+    }
+    // p_lobe(l) = p_h / (4 v.h); the lobe's own samples use the analytic density as well, so
+    // both techniques weigh every direction alike.
+    float log2PdfLobe =
+      anisoLog2HalfVectorPdf(vec3(dot(h, t), dot(h, b), dot(h, n))) - log2(4.0 * vDotH);
+    float pdfLobe = exp2(log2PdfLobe);
+    float pdfMixture = c * pdfLobe + (1.0 - c) * pdfEnvironment;
+    if (!(pdfMixture > 0.0))
+    {
+      continue;
+    }
+    vec3 radiance = anisoEnvironmentRadiance(l, anisoSampleLod(log2(pdfMixture), count));
+    float m = clamp(1.0 - vDotH, 0.0, 1.0);
+    float chi = m * m * m * m * m;
+    sum += radiance * (f0 + (1.0 - f0) * chi) * (nDotL / max(nDotL, nDotV)) *
+      (pdfLobe / pdfMixture);
+#else
+    vec4 hs = anisoHalfVector(xi);
     vec3 h = hs.x * t + hs.y * b + hs.z * n;
     float vDotH = dot(v, h);
     if (vDotH <= 0.0)
@@ -184,7 +339,7 @@ vec3 anisoSpecular(vec3 t, vec3 b, vec3 n, vec3 v, vec3 f0)
     {
       continue;
     }
-    vec3 radiance = anisoEnvironmentRadiance(l, anisoSampleLod(hs.w, vDotH, count));
+    vec3 radiance = anisoEnvironmentRadiance(l, anisoSampleLod(hs.w - log2(4.0 * vDotH), count));
 #ifdef ANISO_METHOD_SPLIT_SUM
     sum += radiance * nDotL;
     weight += nDotL;
@@ -192,6 +347,7 @@ vec3 anisoSpecular(vec3 t, vec3 b, vec3 n, vec3 v, vec3 f0)
     float m = clamp(1.0 - vDotH, 0.0, 1.0);
     float chi = m * m * m * m * m;
     sum += radiance * (f0 + (1.0 - f0) * chi) * (nDotL / max(nDotL, nDotV));
+#endif
 #endif
   }
 #ifdef ANISO_METHOD_SPLIT_SUM

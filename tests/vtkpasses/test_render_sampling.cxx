@@ -1,0 +1,244 @@
+// Render tests of the sampling variants against the CPU reference integrator (core/reference):
+// environment importance sampling with MIS next to a sun, and filtered importance sampling at few
+// samples. The built-in sphere, F0 = 1, albedo 0, fixed camera, no jitter; the reference is the
+// radiance of the analytic sphere hit by each compared pixel's centre ray, with the analytic frame
+// n = p, t = (-y, x, 0)/|.| (the parallels, as the built-in sphere's UV tangents). Metric: relative
+// L2 over the compared pixels, sqrt(sum |gpu - ref|^2 / sum |ref|^2) over RGB.
+#include "BuiltinMeshes.h"
+#include "OffscreenRenderer.h"
+#include "env/environment.h"
+#include "env/sun_sky.h"
+#include "frame.h"
+#include "reference/reference_integrator.h"
+#include "render_test_helpers.h"
+
+#include <cmath>
+#include <cstdio>
+#include <functional>
+#include <gtest/gtest.h>
+#include <memory>
+#include <vector>
+#include <vtkPolyData.h>
+
+namespace aniso::test
+{
+namespace
+{
+constexpr int kSize = 48;
+
+struct Compared
+{
+  int x = 0;
+  int y = 0;
+  glm::dvec3 reference{0.0};
+};
+
+std::shared_ptr<SunSkyEnvironment> sunSky()
+{
+  // The environment `--env builtin:sunsky` opens.
+  return std::dynamic_pointer_cast<SunSkyEnvironment>(openEnvironment("builtin:sunsky"));
+}
+
+RenderSettings sphereSettings(std::shared_ptr<const Environment> env, const AsLobe& lobe,
+                              int samples, int frames)
+{
+  RenderSettings s;
+  // Fine enough that the facets and interpolated normals stay far below the lobes compared.
+  s.surface = makeSphere(256, 128);
+  s.environment = std::move(env);
+  s.cubeSize = 512;
+  s.material.lobe = lobe;
+  s.material.f0 = glm::dvec3(1.0);
+  s.material.albedo = glm::dvec3(0.0);
+  s.material.method = SpecularMethod::Exact;
+  s.material.filtered = false;
+  s.material.halfVectors = HalfVectorSource::Shader;
+  s.material.samples = samples;
+  s.display.background = BackgroundMode::Transparent;
+  s.width = kSize;
+  s.height = kSize;
+  s.frames = frames;
+  s.jitter = false;
+  return s;
+}
+
+using Integrator = std::function<ReferenceResult(const Frame& frame, const glm::dvec3& viewWorld)>;
+
+// Every other pixel in each direction whose centre ray hits the sphere away from its silhouette
+// (n.v >= 0.2) and from the poles (|n.z| <= 0.95, where the parallels' tangents are singular).
+std::vector<Compared> referencePixels(const RenderSettings& s, const Integrator& integrate)
+{
+  const CameraPlacement camera = placeCamera(s.view, glm::dvec3(0.0), 1.0);
+  std::vector<Compared> pixels;
+  for (int y = 0; y < s.height; y += 2)
+  {
+    for (int x = 0; x < s.width; x += 2)
+    {
+      const Ray ray = pixelRay(camera, x, y, s.width, s.height);
+      const auto hit = hitUnitSphere(ray);
+      if (!hit)
+      {
+        continue;
+      }
+      const glm::dvec3 n = *hit;
+      const glm::dvec3 v = -ray.direction;
+      if (glm::dot(n, v) < 0.2 || std::abs(n.z) > 0.95)
+      {
+        continue;
+      }
+      const Frame frame = Frame::fromNormalTangent(n, glm::dvec3(-n.y, n.x, 0.0));
+      pixels.push_back({x, y, integrate(frame, v).value});
+    }
+  }
+  return pixels;
+}
+
+double relativeL2(const Image& rendered, const std::vector<Compared>& pixels)
+{
+  double error = 0.0;
+  double norm = 0.0;
+  for (const Compared& p : pixels)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      const double d = rendered.at(p.x, p.y, c) - p.reference[c];
+      error += d * d;
+      norm += p.reference[c] * p.reference[c];
+    }
+  }
+  return std::sqrt(error / norm);
+}
+
+Image referenceImage(const std::vector<Compared>& pixels)
+{
+  Image image(kSize, kSize, 4);
+  for (const Compared& p : pixels)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      image.at(p.x, p.y, c) = static_cast<float>(p.reference[c]);
+    }
+    image.at(p.x, p.y, 3) = 1.0f;
+  }
+  return image;
+}
+
+// Renders and checks what every render must satisfy: finite values, compared pixels covered.
+double renderError(const RenderSettings& settings, const std::vector<Compared>& pixels,
+                   const char* name)
+{
+  const RenderResult result = renderOffscreen(settings);
+  EXPECT_EQ(nonFiniteValues(result.linear), 0) << name;
+  EXPECT_EQ(nonFiniteValues(result.display), 0) << name;
+  for (const Compared& p : pixels)
+  {
+    EXPECT_EQ(result.linear.at(p.x, p.y, 3), 1.0f) << name << ": pixel not covered";
+  }
+  const double error = relativeL2(result.linear, pixels);
+  if (!std::isfinite(error))
+  {
+    keepImages(name, result.linear, referenceImage(pixels));
+  }
+  return error;
+}
+
+double measure(const char* label, const RenderSettings& settings,
+               const std::vector<Compared>& pixels)
+{
+  const double error = renderError(settings, pixels, label);
+  std::printf("  %-40s relative L2 %.4f\n", label, error);
+  return error;
+}
+
+// A rough lobe next to a sun of 1e5: lobe samples almost never hit the sun (one in ~30,000 for
+// (10, 10)), so pixels whose lobe holds it stay far off for any practical N; the environment's
+// samples land on it. With the same N (16 x 4 frames), MIS must cut the error severalfold.
+TEST(RenderSampling, MisCutsTheErrorOfARoughLobeNextToTheSun)
+{
+  ANISO_REQUIRE_DISPLAY();
+  const auto env = sunSky();
+  ASSERT_TRUE(env);
+  const AsLobe lobe{10.0, 10.0};
+  RenderSettings lobeOnly = sphereSettings(env, lobe, 16, 4);
+  ReferenceOptions options;
+  options.relativeTolerance = 2e-3;
+  const std::vector<Compared> pixels = referencePixels(
+      lobeOnly, [&](const Frame& frame, const glm::dvec3& v)
+      { return integrateSpecularSunSky(lobe, glm::dvec3(1.0), frame, v, *env, options); });
+  ASSERT_GT(pixels.size(), 200u);
+  std::printf("sun and sky, (10, 10), %zu pixels, 16 x 4 samples:\n", pixels.size());
+  const double lobeError = measure("lobe only", lobeOnly, pixels);
+  RenderSettings mis = lobeOnly;
+  mis.material.environmentSampling = EnvironmentSampling::Mis;
+  const double misError = measure("MIS", mis, pixels);
+  EXPECT_LT(misError, lobeError / 4.0);
+  EXPECT_LT(misError, 0.1);
+}
+
+// A sharp lobe gains nothing from environment samples (lobe samples alone are best, see the
+// CPU figures in docs/BENCHMARKS.md); with most samples on the lobe, MIS must stay within a
+// small factor of lobe-only sampling at the same N.
+TEST(RenderSampling, MisKeepsASharpLobeClose)
+{
+  ANISO_REQUIRE_DISPLAY();
+  const auto env = std::make_shared<StudioEnvironment>();
+  const AsLobe lobe{20000.0, 70.0};
+  RenderSettings lobeOnly = sphereSettings(env, lobe, 16, 1);
+  ReferenceOptions options;
+  options.relativeTolerance = 2e-3;
+  const std::vector<Compared> pixels = referencePixels(
+      lobeOnly, [&](const Frame& frame, const glm::dvec3& v)
+      { return integrateSpecular(lobe, glm::dvec3(1.0), frame, v, *env, options); });
+  ASSERT_GT(pixels.size(), 200u);
+  std::printf("studio, (20000, 70), %zu pixels, 16 samples:\n", pixels.size());
+  const double lobeError = measure("lobe only", lobeOnly, pixels);
+  RenderSettings mis = lobeOnly;
+  mis.material.environmentSampling = EnvironmentSampling::Mis;
+  const double misError = measure("MIS", mis, pixels);
+  EXPECT_LT(misError, 2.0 * lobeError);
+}
+
+// Filtered importance sampling (mip level from the sample's footprint along the lobe's sharp
+// axis) against unfiltered lookups, under the studio at N = 4, 16, 64 (one frame each): the
+// blur must not cost accuracy, for a broad, an anisotropic and a very sharp lobe.
+class FilteredSampling : public ::testing::TestWithParam<AsLobe>
+{
+};
+
+TEST_P(FilteredSampling, BeatsUnfilteredAtFewSamples)
+{
+  ANISO_REQUIRE_DISPLAY();
+  const auto env = std::make_shared<StudioEnvironment>();
+  const AsLobe lobe = GetParam();
+  RenderSettings base = sphereSettings(env, lobe, 4, 1);
+  // A coarser cube than the other tests keep (its bake is most of a render's time here); both
+  // variants read the same one.
+  base.cubeSize = 256;
+  ReferenceOptions options;
+  options.relativeTolerance = 2e-3;
+  const std::vector<Compared> pixels = referencePixels(
+      base, [&](const Frame& frame, const glm::dvec3& v)
+      { return integrateSpecular(lobe, glm::dvec3(1.0), frame, v, *env, options); });
+  ASSERT_GT(pixels.size(), 200u);
+  std::printf("studio, (%g, %g), %zu pixels:\n", lobe.nu, lobe.nv, pixels.size());
+  for (int n : {4, 16, 64})
+  {
+    RenderSettings s = base;
+    s.material.samples = n;
+    char label[64];
+    std::snprintf(label, sizeof label, "N = %d unfiltered", n);
+    const double unfiltered = measure(label, s, pixels);
+    s.material.filtered = true;
+    std::snprintf(label, sizeof label, "N = %d filtered", n);
+    const double filtered = measure(label, s, pixels);
+    // At most as large (2% for other drivers' rounding): the isotropic footprint with a bias
+    // of +1 was 1.1 to 5.6 times worse than unfiltered at these N.
+    EXPECT_LT(filtered, 1.02 * unfiltered) << "N = " << n;
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Lobes, FilteredSampling,
+                         ::testing::Values(AsLobe{10.0, 10.0}, AsLobe{1000.0, 100.0},
+                                           AsLobe{20000.0, 70.0}));
+} // namespace
+} // namespace aniso::test
