@@ -34,7 +34,8 @@ constexpr int kTprBakeSide = 1024; // texels of a TPR pattern map: finer than an
 const char* const kDeclared[] = {"env",          "env-rotation", "nu",       "nv",
                                  "f0",           "albedo",       "method",   "filtered",
                                  "half-vectors", "samples",      "lut-size", "lut-samples",
-                                 "cube-size",    "height-scale", "exposure", "tone-mapping"};
+                                 "cube-size",    "height-scale", "exposure", "tone-mapping",
+                                 "env-sampling"};
 
 Option declared(const char* name)
 {
@@ -45,7 +46,7 @@ Option declared(const char* name)
   }
   if (std::string(name) == "env")
   {
-    o.valueName = "FILE|builtin:studio";
+    o.valueName = "FILE|builtin:studio|builtin:sunsky";
   }
   return o;
 }
