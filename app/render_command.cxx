@@ -9,8 +9,8 @@
 #include "render_models.h"
 #include "env/environment.h"
 #include "image/image.h"
+#include "maps/map_files.h"
 #include "maps/quaternion_map.h"
-#include "maps/tpr_map.h"
 #include "material/parameters.h"
 
 #include <algorithm>
@@ -28,7 +28,6 @@ namespace
 namespace fs = std::filesystem;
 
 constexpr int kMaxSide = 16384;
-constexpr int kTprBakeSide = 1024; // texels of a TPR pattern map: finer than any view needs
 
 // The declared parameters this command takes, as --NAME options.
 const char* const kDeclared[] = {"env",          "env-rotation", "nu",       "nv",
@@ -206,53 +205,6 @@ void checkOutput(const std::string& output)
   }
 }
 
-// Integer-encoded files hold signed vectors as 2c - 1, as normal maps do.
-std::shared_ptr<const Image> readSignedMap(const std::string& path)
-{
-  ImageInfo info;
-  Image image = readImage(path, &info);
-  if (info.integerFormat)
-  {
-    for (float& value : image.data)
-    {
-      value = 2.0f * value - 1.0f;
-    }
-  }
-  return std::make_shared<const Image>(std::move(image));
-}
-
-std::shared_ptr<const Image> tprMap(const std::string& text)
-{
-  std::error_code ec;
-  if (!fs::exists(text, ec))
-  {
-    TprParams params;
-    try
-    {
-      params = parseTprPattern(text);
-    }
-    catch (const Error& e)
-    {
-      throw errorAbout("--tpr", "'" + text + "' is no file, nor a pattern (" + e.what() + ")");
-    }
-    return std::make_shared<const Image>(bakeTprMap(params, kTprBakeSide, kTprBakeSide));
-  }
-  ImageInfo info;
-  Image image = readImage(text, &info);
-  if (image.channels == 1)
-  {
-    return std::make_shared<const Image>(tprFromAngleImage(image));
-  }
-  if (info.integerFormat)
-  {
-    for (float& value : image.data)
-    {
-      value = 2.0f * value - 1.0f;
-    }
-  }
-  return std::make_shared<const Image>(std::move(image));
-}
-
 vtkSmartPointer<vtkPolyData> surfaceOf(const Arguments& a, const SurfaceOptions& options,
                                        std::string& source, std::ostream& out)
 {
@@ -383,7 +335,7 @@ int runRender(const std::vector<std::string>& args, std::ostream& out)
     const std::string path = a.text("--normal-map");
     if (a.text("--bump") == "normal")
     {
-      settings.material.normalMap = readSignedMap(path);
+      settings.material.normalMap = std::make_shared<const Image>(readSignedMap(path));
     }
     else
     {
@@ -395,11 +347,12 @@ int runRender(const std::vector<std::string>& args, std::ostream& out)
   }
   if (a.has("--quaternion-map"))
   {
-    settings.material.quaternionMap = readSignedMap(a.text("--quaternion-map"));
+    settings.material.quaternionMap =
+        std::make_shared<const Image>(readSignedMap(a.text("--quaternion-map")));
   }
   if (a.has("--tpr"))
   {
-    settings.material.tprMap = tprMap(a.text("--tpr"));
+    settings.material.tprMap = std::make_shared<const Image>(readTprMap(a.text("--tpr"), "--tpr"));
   }
   if (a.has("--height-map"))
   {

@@ -4,6 +4,7 @@
 #include "BuiltinMeshes.h"
 #include "MeshLoader.h"
 #include "error.h"
+#include "maps/map_files.h"
 #include "maps/quaternion_map.h"
 #include "maps/tpr_map.h"
 
@@ -14,22 +15,7 @@ namespace aniso
 {
 namespace
 {
-constexpr int kTprBakeSide = 1024; // texels of a TPR pattern map: finer than any view needs
 const char* const kBuiltinPrefix = "builtin:";
-
-// Integer-encoded files hold signed vectors as 2c - 1, as normal maps do.
-Image decodedSigned(const Image& image, bool integerFormat)
-{
-  Image out = image;
-  if (integerFormat)
-  {
-    for (float& v : out.data)
-    {
-      v = 2.0f * v - 1.0f;
-    }
-  }
-  return out;
-}
 
 SurfaceOptions surfaceOptions(const std::string& tangents)
 {
@@ -132,14 +118,11 @@ std::shared_ptr<const Image> SceneAssets::map(const std::string& key, const std:
                        if (!std::filesystem::exists(text, ec))
                        {
                          // Not a file: a pattern (its error names the text when it is neither).
-                         return std::make_shared<const Image>(
-                             bakeTprMap(parseTprPattern(text), kTprBakeSide, kTprBakeSide));
+                         return std::make_shared<const Image>(readTprMap(text, key));
                        }
                        const LoadedImage& raw = rawImage(text);
                        return std::make_shared<const Image>(
-                           raw.image->channels == 1
-                               ? tprFromAngleImage(*raw.image)
-                               : decodedSigned(*raw.image, raw.info.integerFormat));
+                           tprFromFileImage(*raw.image, raw.info.integerFormat));
                      });
   }
   if (key == "normal-map" || key == "quaternion-map")
@@ -149,7 +132,7 @@ std::shared_ptr<const Image> SceneAssets::map(const std::string& key, const std:
                      {
                        const LoadedImage& raw = rawImage(text);
                        return std::make_shared<const Image>(
-                           decodedSigned(*raw.image, raw.info.integerFormat));
+                           decodeSignedMap(*raw.image, raw.info.integerFormat));
                      });
   }
   return rawImage(text).image;
