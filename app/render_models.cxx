@@ -2,6 +2,7 @@
 
 #include "LitModelMaterial.h"
 #include "materials/models.h"
+#include "render_surface_models.h"
 
 #include <memory>
 
@@ -65,6 +66,7 @@ void addModelOptions(Command& command)
     sample.choices.emplace_back(info.name);
   }
   command.options.push_back(sample);
+  addSurfaceModelOptions(command);
 }
 
 std::vector<Light> lightsFromOptions(const Arguments& a)
@@ -101,6 +103,14 @@ void applyModelOptions(const Arguments& a, RenderSettings& settings)
   if (a.has("--light") && !info.lights)
   {
     throw usageError("--light", "model " + name + " is not lit by lights");
+  }
+  if (applySurfaceModelOptions(a, settings))
+  {
+    if (a.has("--sample-material"))
+    {
+      throw usageError("--sample-material", "only applies to " + litModelNames());
+    }
+    return;
   }
   LitModel model;
   if (!litModelFromName(name, model))

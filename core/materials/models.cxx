@@ -46,6 +46,15 @@ std::vector<ShadingModelInfo> makeModels()
                "Heidrich-Seidel line lighting on surfaces: the fibre highlight of (l.t, v.t) "
                "plus Lambert on the surface normal",
                false, true, kLitParameters});
+  m.push_back({"leadr", "LEADR mapping",
+               "linearly filterable slope moments of a height or normal map: anisotropic "
+               "Beckmann with Smith masking, environment on a slope-space grid, SH9 diffuse "
+               "(source 3)",
+               true, true, {"f0", "albedo", "env", "env-rotation", "exposure"}});
+  m.push_back({"microstructure", "Small-scale microstructure",
+               "a repeating albedo/normal/height structure sampled K x K per pixel with normal, "
+               "parallax or occlusion masking, self-shadowing, GGX or Blinn-Phong (source 4)",
+               false, true, {"f0", "exposure"}});
   return m;
 }
 
