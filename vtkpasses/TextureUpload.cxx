@@ -2,6 +2,7 @@
 
 #include "error.h"
 
+#include <atomic>
 #include <string>
 #include <vector>
 #include <vtkOpenGLRenderWindow.h>
@@ -13,6 +14,8 @@ namespace aniso
 {
 namespace
 {
+std::atomic<uint64_t> textureUploads{0};
+
 struct GlFormat
 {
   unsigned int internalFormat;
@@ -59,6 +62,7 @@ vtkSmartPointer<vtkTextureObject> newFloatTexture(vtkOpenGLRenderWindow* window,
   {
     // Earlier errors belong to someone else; start clean so checkGl reports ours.
   }
+  ++textureUploads;
   auto texture = vtkSmartPointer<vtkTextureObject>::New();
   texture->SetContext(window);
   const GlFormat format = floatFormat(channels, subject);
@@ -70,6 +74,11 @@ vtkSmartPointer<vtkTextureObject> newFloatTexture(vtkOpenGLRenderWindow* window,
   return texture;
 }
 } // namespace
+
+uint64_t textureUploadCount()
+{
+  return textureUploads.load();
+}
 
 vtkSmartPointer<vtkTextureObject> uploadFloatTexture(vtkOpenGLRenderWindow* window, int width,
                                                      int height, int channels, const float* data,

@@ -4,6 +4,7 @@
 #include "env/cubemap.h"
 #include "image/image.h"
 
+#include <cstdint>
 #include <vtkSmartPointer.h>
 
 class vtkOpenGLRenderWindow;
@@ -42,4 +43,8 @@ vtkSmartPointer<vtkTextureObject> uploadMapTexture(vtkOpenGLRenderWindow* window
 // (seamless filtering across faces is enabled where it is sampled).
 vtkSmartPointer<vtkTextureObject> uploadCubemap(vtkOpenGLRenderWindow* window, const Cubemap& cube,
                                                 const char* subject);
+
+// Textures created by the functions above since the process started (every upload makes one),
+// so callers can check that nothing is uploaded again while its inputs stay the same.
+uint64_t textureUploadCount();
 } // namespace aniso

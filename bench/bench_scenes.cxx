@@ -1,0 +1,135 @@
+#include "bench_scenes.h"
+
+#include "BrushingModel.h"
+#include "BuiltinMeshes.h"
+#include "GeometryAccess.h"
+#include "MeshValidation.h"
+#include "SurfacePreparation.h"
+#include "error.h"
+#include "flange_mesh.h"
+#include "frame.h"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <vtkPointData.h>
+#include <vtkPolyData.h>
+
+namespace aniso::bench
+{
+BenchMesh makeBenchMesh(const std::string& name)
+{
+  BenchMesh mesh;
+  mesh.name = name;
+  if (name == "sphere")
+  {
+    mesh.surface = makeSphere();
+  }
+  else if (name == "torus")
+  {
+    mesh.surface = makeTorus();
+    mesh.view.direction = viewDirectionFromAngles(30.0, 35.0);
+  }
+  else if (name == "flange")
+  {
+    SurfaceOptions options;
+    options.brushing = parseBrushingModel("around:0,0,1");
+    MeshReport report;
+    const auto clean = sanitizeSurface(makeFlange(), "flange", report);
+    mesh.surface = prepareSurface(clean, options, "flange").polyData;
+    mesh.view.direction = viewDirectionFromAngles(30.0, 40.0);
+  }
+  else
+  {
+    throw errorAbout(name, "unknown benchmark mesh (sphere, torus or flange)");
+  }
+  mesh.triangles = triangleMesh(mesh.surface);
+  return mesh;
+}
+
+TriangleMesh triangleMesh(vtkPolyData* surface)
+{
+  vtkDataArray* normals = surface->GetPointData()->GetArray("Normals");
+  vtkDataArray* tangents = surface->GetPointData()->GetArray("Tangents");
+  if (!normals || !tangents)
+  {
+    throw errorAbout("mesh", "a prepared surface with Normals and Tangents is needed");
+  }
+  TriangleMesh mesh;
+  const vtkIdType points = surface->GetNumberOfPoints();
+  for (vtkIdType i = 0; i < points; ++i)
+  {
+    mesh.positions.push_back(geometry::pointAt(surface->GetPoints(), i));
+    mesh.normals.push_back(geometry::tupleAt(normals, i));
+    mesh.tangents.push_back(geometry::tupleAt(tangents, i));
+  }
+  geometry::forEachCell(surface->GetPolys(),
+                        [&](vtkIdType count, const vtkIdType* ids)
+                        {
+                          if (count == 3)
+                          {
+                            mesh.triangles.push_back({static_cast<uint32_t>(ids[0]),
+                                                      static_cast<uint32_t>(ids[1]),
+                                                      static_cast<uint32_t>(ids[2])});
+                          }
+                        });
+  return mesh;
+}
+
+std::vector<std::string> benchEnvironments(const std::string& directory)
+{
+  std::vector<std::string> specs{"builtin:studio"};
+  std::error_code ec;
+  std::vector<std::string> files;
+  for (const auto& entry : std::filesystem::directory_iterator(directory, ec))
+  {
+    if (entry.path().extension() == ".exr")
+    {
+      files.push_back(entry.path().string());
+    }
+  }
+  std::sort(files.begin(), files.end());
+  specs.insert(specs.end(), files.begin(), files.end());
+  return specs;
+}
+
+std::string environmentName(const std::string& spec)
+{
+  if (spec.rfind("builtin:", 0) == 0)
+  {
+    return spec.substr(8);
+  }
+  return std::filesystem::path(spec).stem().string();
+}
+
+std::vector<AsLobe> benchLobes()
+{
+  return {{10.0, 10.0}, {100.0, 10.0}, {1000.0, 100.0}, {20000.0, 70.0}};
+}
+
+VtkPbrMaterial vtkPbrFor(const AsLobe& lobe, const glm::dvec3& f0)
+{
+  const double alphaT = std::sqrt(2.0 / (lobe.nu + 2.0));
+  const double alphaB = std::sqrt(2.0 / (lobe.nv + 2.0));
+  const double rough = std::max(alphaT, alphaB);
+  const double sharp = std::min(alphaT, alphaB);
+  VtkPbrMaterial m;
+  m.baseColor = f0;
+  // ggxLobeFromVtk: alpha = r^2 / aspect along the (rotated) tangent, r^2 aspect across it,
+  // aspect = sqrt(1 - 0.9 a).
+  m.roughness = std::clamp(std::pow(rough * sharp, 0.25), 0.0, 1.0);
+  m.anisotropy = std::clamp((1.0 - sharp / rough) / 0.9, 0.0, 1.0);
+  m.rotation = alphaT >= alphaB ? 0.0 : 0.25;
+  return m;
+}
+
+GgxLobe vtkGgxLobe(const VtkPbrMaterial& material)
+{
+  return ggxLobeFromVtk(material.roughness, material.anisotropy);
+}
+
+double vtkTangentRotation(const VtkPbrMaterial& material)
+{
+  return 2.0 * M_PI * material.rotation;
+}
+} // namespace aniso::bench

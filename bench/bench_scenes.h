@@ -1,0 +1,53 @@
+#pragma once
+// The benchmark's fixed scene set: meshes with their views, environments, and the materials
+// (n_u, n_v), plus the VTK physically based material standing for each of them.
+#include "ViewSettings.h"
+#include "brdf/ashikhmin_shirley.h"
+#include "brdf/ggx.h"
+#include "pixel_geometry.h"
+#include "render_session.h"
+
+#include <string>
+#include <vector>
+#include <vtkSmartPointer.h>
+
+class vtkPolyData;
+
+namespace aniso::bench
+{
+struct BenchMesh
+{
+  std::string name;                     // "sphere", "torus", "flange"
+  vtkSmartPointer<vtkPolyData> surface; // prepared: "Normals", "Tangents"
+  ViewSettings view;
+  TriangleMesh triangles; // the same surface for the CPU rays
+};
+
+// "sphere" (the built-in sphere, front view), "torus" (the built-in torus from azimuth 30,
+// elevation 35: the application's default view), "flange" (makeFlange with tangents
+// around:0,0,1, from azimuth 30, elevation 40). Throws aniso::Error for another name.
+BenchMesh makeBenchMesh(const std::string& name);
+
+// The point arrays "Normals" and "Tangents" of a prepared surface and its triangles.
+TriangleMesh triangleMesh(vtkPolyData* surface);
+
+// Where the Blender CC0 studio-light HDRIs are installed (blender-data).
+constexpr const char* kBlenderHdriDirectory = "/usr/share/blender/datafiles/studiolights/world";
+// "builtin:studio", then the .exr files of DIRECTORY (sorted), if it exists.
+std::vector<std::string> benchEnvironments(const std::string& directory = kBlenderHdriDirectory);
+// "studio", or a file's stem ("forest").
+std::string environmentName(const std::string& spec);
+
+// The materials of the benchmark: (10, 10), (100, 10), (1000, 100), (20000, 70).
+std::vector<AsLobe> benchLobes();
+
+// VTK's material standing for an Ashikhmin-Shirley lobe: each exponent n taken to the GGX
+// roughness alpha = sqrt(2 / (n + 2)) (the Beckmann width of a Phong lobe of exponent n), then
+// VTK's roughness r and anisotropy a chosen so that ggxLobeFromVtk(r, a) gives these alphas
+// (r^2 their geometric mean, a from their ratio, clamped to VTK's [0, 1]), the anisotropy turned
+// to the rougher direction (rotation 0 along t, 0.25 along b).
+VtkPbrMaterial vtkPbrFor(const AsLobe& lobe, const glm::dvec3& f0);
+// The GGX lobe VTK renders for that material (ggxLobeFromVtk) and its tangent rotation, radians.
+GgxLobe vtkGgxLobe(const VtkPbrMaterial& material);
+double vtkTangentRotation(const VtkPbrMaterial& material);
+} // namespace aniso::bench

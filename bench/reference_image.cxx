@@ -1,0 +1,349 @@
+#include "reference_image.h"
+
+#include "env/parallel.h"
+#include "error.h"
+#include "frame.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <glm/geometric.hpp>
+#include <limits>
+#include <sstream>
+#include <unistd.h>
+
+namespace aniso::bench
+{
+namespace
+{
+namespace fs = std::filesystem;
+
+// Bumped whenever what a cached reference holds changes meaning.
+constexpr int kCacheFormat = 1;
+constexpr const char* kCacheMagic = "aniso-bench-reference";
+
+double luminance(const glm::dvec3& c)
+{
+  return 0.2126 * c.x + 0.7152 * c.y + 0.0722 * c.z;
+}
+
+// FNV-1a over raw bytes: a fingerprint of the inputs for file names, not a security measure
+// (the file repeats the full key, which is compared on reading).
+struct Fnv
+{
+  uint64_t state = 1469598103934665603ull;
+  void add(const void* data, std::size_t size)
+  {
+    const auto* bytes = static_cast<const unsigned char*>(data);
+    for (std::size_t i = 0; i < size; ++i)
+    {
+      state = (state ^ bytes[i]) * 1099511628211ull;
+    }
+  }
+  void add(double value) { add(&value, sizeof value); }
+  void add(const glm::dvec3& v)
+  {
+    add(v.x);
+    add(v.y);
+    add(v.z);
+  }
+};
+
+std::string hex(double value)
+{
+  uint64_t bits = 0;
+  std::memcpy(&bits, &value, sizeof bits);
+  char text[17];
+  std::snprintf(text, sizeof text, "%016llx", static_cast<unsigned long long>(bits));
+  return text;
+}
+
+// Everything a reference depends on, spelled out: the model, the environment, the integrator's
+// options, and a fingerprint of the compared pixels' geometry (which stands for the mesh, the
+// camera and the image size).
+std::string cacheKey(const std::vector<PixelSample>& geometry, int width, int height,
+                     const std::vector<int>& selected, const ReferenceModel& model,
+                     const Environment& environment, const ReferenceOptions& options)
+{
+  Fnv pixels;
+  for (int index : selected)
+  {
+    const PixelSample& s = geometry[std::size_t(index)];
+    pixels.add(&index, sizeof index);
+    pixels.add(s.position);
+    pixels.add(s.normal);
+    pixels.add(s.tangent);
+    pixels.add(s.view);
+  }
+  std::ostringstream key;
+  key << kCacheMagic << " v" << kCacheFormat << " " << width << "x" << height << " pixels "
+      << selected.size() << " geometry " << std::hex << pixels.state << std::dec;
+  if (model.ggx)
+  {
+    key << " ggx " << hex(model.ggxLobe.alphaX) << " " << hex(model.ggxLobe.alphaY) << " rot "
+        << hex(model.tangentRotation);
+  }
+  else
+  {
+    key << " as " << hex(model.asLobe.nu) << " " << hex(model.asLobe.nv);
+  }
+  key << " f0 " << hex(model.f0.x) << " " << hex(model.f0.y) << " " << hex(model.f0.z) << " env "
+      << environment.key() << " tol " << hex(options.relativeTolerance) << " "
+      << hex(options.absoluteTolerance) << " max " << options.maxEvaluations;
+  return key.str();
+}
+
+std::string cachePath(const std::string& directory, const std::string& key)
+{
+  Fnv name;
+  name.add(key.data(), key.size());
+  char file[64];
+  std::snprintf(file, sizeof file, "reference_%016llx.bin",
+                static_cast<unsigned long long>(name.state));
+  return (fs::path(directory) / file).string();
+}
+
+struct Record
+{
+  int32_t x;
+  int32_t y;
+  double value[3];
+  double errorEstimate;
+};
+
+bool readCache(const std::string& path, const std::string& key, std::size_t count,
+               ReferenceImage& image)
+{
+  std::ifstream in(path, std::ios::binary);
+  if (!in)
+  {
+    return false;
+  }
+  std::string storedKey;
+  std::getline(in, storedKey);
+  uint64_t storedCount = 0;
+  uint64_t evaluations = 0;
+  in.read(reinterpret_cast<char*>(&storedCount), sizeof storedCount);
+  in.read(reinterpret_cast<char*>(&evaluations), sizeof evaluations);
+  if (!in || storedKey != key || storedCount != count)
+  {
+    return false;
+  }
+  std::vector<Record> records(count);
+  in.read(reinterpret_cast<char*>(records.data()),
+          static_cast<std::streamsize>(count * sizeof(Record)));
+  if (!in || in.peek() != std::char_traits<char>::eof())
+  {
+    return false;
+  }
+  image.pixels.clear();
+  for (const Record& r : records)
+  {
+    const glm::dvec3 value(r.value[0], r.value[1], r.value[2]);
+    if (!std::isfinite(luminance(value)) || !std::isfinite(r.errorEstimate))
+    {
+      return false;
+    }
+    image.pixels.push_back({r.x, r.y, value, r.errorEstimate});
+  }
+  image.evaluations = evaluations;
+  return true;
+}
+
+// Written to a temporary file and renamed, so a reader never sees half a file. A failure only
+// costs the next run a recomputation.
+void writeCache(const std::string& path, const std::string& key, const ReferenceImage& image)
+{
+  std::error_code ec;
+  fs::create_directories(fs::path(path).parent_path(), ec);
+  const std::string temporary = path + ".tmp" + std::to_string(::getpid());
+  {
+    std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
+    if (!out)
+    {
+      return;
+    }
+    out << key << "\n";
+    const uint64_t count = image.pixels.size();
+    out.write(reinterpret_cast<const char*>(&count), sizeof count);
+    out.write(reinterpret_cast<const char*>(&image.evaluations), sizeof image.evaluations);
+    for (const ReferencePixel& p : image.pixels)
+    {
+      const Record r{p.x, p.y, {p.value.x, p.value.y, p.value.z}, p.errorEstimate};
+      out.write(reinterpret_cast<const char*>(&r), sizeof r);
+    }
+    if (!out)
+    {
+      out.close();
+      fs::remove(temporary, ec);
+      return;
+    }
+  }
+  fs::rename(temporary, path, ec);
+  if (ec)
+  {
+    fs::remove(temporary, ec);
+  }
+}
+
+double errorBound(const std::vector<ReferencePixel>& pixels)
+{
+  double error = 0.0;
+  double norm = 0.0;
+  for (const ReferencePixel& p : pixels)
+  {
+    const double squared = glm::dot(p.value, p.value);
+    const double y = luminance(p.value);
+    const double relative = y > 0.0 ? p.errorEstimate / y : 0.0;
+    error += relative * relative * squared;
+    norm += squared;
+  }
+  return norm > 0.0 ? std::sqrt(error / norm) : 0.0;
+}
+} // namespace
+
+std::vector<int> selectPixels(const std::vector<PixelSample>& geometry, int width, int height,
+                              int count)
+{
+  auto hitAt = [&](int x, int y) {
+    return x >= 0 && y >= 0 && x < width && y < height && geometry[std::size_t(y) * width + x].hit;
+  };
+  std::vector<char> eligible(geometry.size(), 0);
+  int64_t total = 0;
+  for (int y = 0; y < height; ++y)
+  {
+    for (int x = 0; x < width; ++x)
+    {
+      const PixelSample& s = geometry[std::size_t(y) * width + x];
+      bool inside = s.hit && glm::dot(s.normal, s.view) > 0.0;
+      for (int dy = -1; dy <= 1 && inside; ++dy)
+      {
+        for (int dx = -1; dx <= 1 && inside; ++dx)
+        {
+          inside = hitAt(x + dx, y + dy);
+        }
+      }
+      eligible[std::size_t(y) * width + x] = inside ? 1 : 0;
+      total += inside ? 1 : 0;
+    }
+  }
+  const int stride =
+      std::max(1, static_cast<int>(std::floor(std::sqrt(double(total) / std::max(count, 1)))));
+  std::vector<int> selected;
+  for (int y = stride / 2; y < height; y += stride)
+  {
+    for (int x = stride / 2; x < width; x += stride)
+    {
+      if (eligible[std::size_t(y) * width + x])
+      {
+        selected.push_back(y * width + x);
+      }
+    }
+  }
+  return selected;
+}
+
+ReferenceImage computeReference(const std::vector<PixelSample>& geometry, int width, int height,
+                                const std::vector<int>& selected, const ReferenceModel& model,
+                                const Environment& environment, const ReferenceOptions& options,
+                                const std::string& directory)
+{
+  ReferenceImage image;
+  image.width = width;
+  image.height = height;
+  const std::string key = cacheKey(geometry, width, height, selected, model, environment, options);
+  const std::string path = directory.empty() ? std::string() : cachePath(directory, key);
+  if (!path.empty() && readCache(path, key, selected.size(), image))
+  {
+    image.fromCache = true;
+    image.relativeErrorBound = errorBound(image.pixels);
+    return image;
+  }
+
+  const auto start = std::chrono::steady_clock::now();
+  image.pixels.resize(selected.size());
+  std::vector<uint64_t> evaluations(selected.size(), 0);
+  parallelFor(
+      static_cast<int>(selected.size()),
+      [&](int i)
+      {
+        const int index = selected[std::size_t(i)];
+        const PixelSample& s = geometry[std::size_t(index)];
+        Frame frame = Frame::fromNormalTangent(s.normal, s.tangent);
+        ReferenceResult r;
+        if (model.ggx)
+        {
+          const double c = std::cos(model.tangentRotation);
+          const double sn = std::sin(model.tangentRotation);
+          frame = Frame::fromNormalTangent(frame.n, c * frame.t + sn * frame.b);
+          r = integrateSpecularGgx(model.ggxLobe, model.f0, frame, s.view, environment, options);
+        }
+        else
+        {
+          r = integrateSpecular(model.asLobe, model.f0, frame, s.view, environment, options);
+        }
+        image.pixels[std::size_t(i)] = {index % width, index / width, r.value, r.errorEstimate};
+        evaluations[std::size_t(i)] = r.evaluations;
+      });
+  for (uint64_t e : evaluations)
+  {
+    image.evaluations += e;
+  }
+  image.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  image.relativeErrorBound = errorBound(image.pixels);
+  if (!path.empty())
+  {
+    writeCache(path, key, image);
+  }
+  return image;
+}
+
+ImageError compareToReference(const Image& render, const ReferenceImage& reference)
+{
+  if (render.width != reference.width || render.height != reference.height || render.channels < 4)
+  {
+    throw errorAbout("render", "image size or channels differ from the reference");
+  }
+  ImageError e;
+  double error = 0.0;
+  double norm = 0.0;
+  std::vector<double> pixelErrors;
+  pixelErrors.reserve(reference.pixels.size());
+  for (const ReferencePixel& p : reference.pixels)
+  {
+    const glm::dvec3 value(render.at(p.x, p.y, 0), render.at(p.x, p.y, 1), render.at(p.x, p.y, 2));
+    if (!std::isfinite(value.x) || !std::isfinite(value.y) || !std::isfinite(value.z))
+    {
+      ++e.nonFinite;
+      continue;
+    }
+    e.uncovered += render.at(p.x, p.y, 3) < 1.0f ? 1 : 0;
+    const glm::dvec3 d = value - p.value;
+    error += glm::dot(d, d);
+    norm += glm::dot(p.value, p.value);
+    pixelErrors.push_back(glm::length(d));
+  }
+  if (e.nonFinite > 0)
+  {
+    e.relativeL2 = e.percentile99 = std::numeric_limits<double>::infinity();
+    return e;
+  }
+  if (norm <= 0.0 || pixelErrors.empty())
+  {
+    e.relativeL2 = e.percentile99 = std::numeric_limits<double>::quiet_NaN();
+    return e;
+  }
+  e.relativeL2 = std::sqrt(error / norm);
+  const double rms = std::sqrt(norm / double(pixelErrors.size()));
+  const std::size_t rank =
+      static_cast<std::size_t>(std::ceil(0.99 * double(pixelErrors.size()))) - 1;
+  std::nth_element(pixelErrors.begin(), pixelErrors.begin() + static_cast<std::ptrdiff_t>(rank),
+                   pixelErrors.end());
+  e.percentile99 = pixelErrors[rank] / rms;
+  return e;
+}
+} // namespace aniso::bench

@@ -1,0 +1,80 @@
+#pragma once
+// Converged reference radiance of a render, per pixel, from the CPU reference integrator
+// (core/reference): on a regular subset of the pixels the render covers, with the frames the
+// shader shades there (pixel_geometry.h). References are expensive (milliseconds to a tenth of
+// a second per pixel), so they are cached on disk, keyed by everything they depend on.
+// GL-free.
+#include "brdf/ashikhmin_shirley.h"
+#include "brdf/ggx.h"
+#include "env/environment.h"
+#include "image/image.h"
+#include "pixel_geometry.h"
+#include "reference/reference_integrator.h"
+
+#include <cstdint>
+#include <glm/vec3.hpp>
+#include <string>
+#include <vector>
+
+namespace aniso::bench
+{
+// The model a reference integrates: Ashikhmin-Shirley (the project's renders) or GGX (VTK's
+// own physically based shading, its lobe from ggxLobeFromVtk). GGX's anisotropy direction is
+// the pixel tangent turned about the normal by tangentRotation radians (towards b).
+struct ReferenceModel
+{
+  bool ggx = false;
+  AsLobe asLobe;
+  GgxLobe ggxLobe;
+  double tangentRotation = 0.0;
+  glm::dvec3 f0{1.0};
+};
+
+struct ReferencePixel
+{
+  int x = 0;
+  int y = 0;
+  glm::dvec3 value{0.0};
+  double errorEstimate = 0.0; // the integrator's estimate, on luminance
+};
+
+struct ReferenceImage
+{
+  int width = 0;
+  int height = 0;
+  std::vector<ReferencePixel> pixels;
+  // Relative L2 of the integrator's own error estimates over the pixels (each pixel's relative
+  // estimate applied to its RGB value): how far the reference itself may be from the truth.
+  double relativeErrorBound = 0.0;
+  uint64_t evaluations = 0;
+  double seconds = 0.0; // computing it (0 when read from the cache)
+  bool fromCache = false;
+};
+
+// Pixels to compare: hit pixels whose 3x3 neighbourhood is hit too (the rasteriser and the ray
+// caster may disagree right at a silhouette) and that face the viewer (n.v > 0), on a grid of
+// stride s chosen so that about `count` pixels remain. Row-major indices into GEOMETRY.
+std::vector<int> selectPixels(const std::vector<PixelSample>& geometry, int width, int height,
+                              int count);
+
+// The reference at the selected pixels, from DIRECTORY's cache when present (an empty
+// directory disables the cache). Runs on all hardware threads.
+ReferenceImage computeReference(const std::vector<PixelSample>& geometry, int width, int height,
+                                const std::vector<int>& selected, const ReferenceModel& model,
+                                const Environment& environment, const ReferenceOptions& options,
+                                const std::string& directory);
+
+struct ImageError
+{
+  // sqrt(sum |render - ref|^2 / sum |ref|^2) over the compared pixels and RGB.
+  double relativeL2 = 0.0;
+  // 99th percentile of |render - ref| / rms(ref), per pixel (RGB length), where rms(ref) is the
+  // root mean square of |ref| over the compared pixels: a pixel error relative to the image's
+  // brightness, so dark pixels do not dominate it.
+  double percentile99 = 0.0;
+  int64_t uncovered = 0; // compared pixels the render did not cover (coverage < 1)
+  int64_t nonFinite = 0; // compared pixels with NaN or Inf
+};
+
+ImageError compareToReference(const Image& render, const ReferenceImage& reference);
+} // namespace aniso::bench

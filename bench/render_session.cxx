@@ -1,0 +1,334 @@
+#include "render_session.h"
+
+#include "AnisoMaterial.h"
+#include "RendererMatrices.h"
+#include "TextureUpload.h"
+#include "error.h"
+#include "lut/lut_cache.h"
+#include "vtkAnisoAccumulationPass.h"
+
+#include <X11/Xlib.h>
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdlib>
+#include <glm/geometric.hpp>
+#include <set>
+#include <vtkActor.h>
+#include <vtkCamera.h>
+#include <vtkCommand.h>
+#include <vtkFloatArray.h>
+#include <vtkImageData.h>
+#include <vtkNew.h>
+#include <vtkOpenGLPolyDataMapper.h>
+#include <vtkOpenGLRenderWindow.h>
+#include <vtkOpenGLRenderer.h>
+#include <vtkPointData.h>
+#include <vtkPolyData.h>
+#include <vtkProperty.h>
+#include <vtkRenderStepsPass.h>
+#include <vtkTexture.h>
+#include <vtk_glew.h>
+
+namespace aniso::bench
+{
+namespace
+{
+// The equirectangular image VTK's image-based lighting is given: the environment's own image
+// when it has one, else the environment sampled at this size (VTK filters it itself).
+constexpr int kVtkEquirectWidth = 1024;
+
+vtkSmartPointer<vtkTexture> vtkEnvironmentTexture(const Environment& environment)
+{
+  Image equirect;
+  if (auto* image = dynamic_cast<const EquirectEnvironment*>(&environment))
+  {
+    equirect = image->image();
+  }
+  else
+  {
+    equirect = renderEquirect(environment, kVtkEquirectWidth, kVtkEquirectWidth / 2);
+  }
+  vtkNew<vtkImageData> data;
+  data->SetDimensions(equirect.width, equirect.height, 1);
+  vtkNew<vtkFloatArray> scalars;
+  scalars->SetNumberOfComponents(3);
+  scalars->SetNumberOfTuples(vtkIdType(equirect.width) * equirect.height);
+  // vtkImageData's first row is the bottom one (v = 0), the image's first row the top one.
+  for (int y = 0; y < equirect.height; ++y)
+  {
+    for (int x = 0; x < equirect.width; ++x)
+    {
+      const vtkIdType tuple = vtkIdType(equirect.height - 1 - y) * equirect.width + x;
+      for (int c = 0; c < 3; ++c)
+      {
+        scalars->SetComponent(tuple, c, equirect.at(x, y, std::min(c, equirect.channels - 1)));
+      }
+    }
+  }
+  data->GetPointData()->SetScalars(scalars);
+  auto texture = vtkSmartPointer<vtkTexture>::New();
+  texture->SetInputData(data);
+  texture->SetColorModeToDirectScalars();
+  texture->MipmapOn();
+  texture->InterpolateOn();
+  return texture;
+}
+
+void boundingSphere(vtkPolyData* surface, glm::dvec3& centre, double& radius)
+{
+  double bounds[6];
+  surface->GetBounds(bounds);
+  centre = {0.5 * (bounds[0] + bounds[1]), 0.5 * (bounds[2] + bounds[3]),
+            0.5 * (bounds[4] + bounds[5])};
+  double r2 = 0.0;
+  for (vtkIdType i = 0; i < surface->GetNumberOfPoints(); ++i)
+  {
+    double p[3];
+    surface->GetPoint(i, p);
+    const glm::dvec3 d = glm::dvec3(p[0], p[1], p[2]) - centre;
+    r2 = std::max(r2, glm::dot(d, d));
+  }
+  radius = std::sqrt(r2);
+}
+} // namespace
+
+class RenderSession::Impl
+{
+public:
+  Display* display = nullptr;
+  vtkNew<vtkRenderWindow> window;
+  vtkNew<vtkOpenGLRenderer> renderer;
+  vtkNew<vtkOpenGLPolyDataMapper> mapper;
+  vtkNew<vtkActor> actor;
+  vtkNew<vtkRenderStepsPass> steps;
+  vtkNew<vtkAnisoAccumulationPass> pass;
+  std::shared_ptr<EnvironmentLighting> lighting;
+  vtkSmartPointer<vtkTexture> vtkEnvironment;
+  std::unique_ptr<AnisoMaterial> material;
+  bool materialAttached = false;
+  std::set<vtkObject*> programs;
+  uint64_t environmentBakes = 0;
+  uint64_t uploadsAtStart = 0;
+  uint64_t bakesAtStart = 0;
+
+  void onUpdateShader(vtkObject*, unsigned long, void* program)
+  {
+    programs.insert(static_cast<vtkObject*>(program));
+  }
+
+  std::vector<double> draw(int frames)
+  {
+    std::vector<double> seconds;
+    seconds.reserve(static_cast<std::size_t>(std::max(frames, 0)));
+    const int before = pass->GetAccumulatedFrames();
+    for (int frame = 0; frame < frames; ++frame)
+    {
+      const auto start = std::chrono::steady_clock::now();
+      window->Render();
+      window->WaitForCompletion();
+      const auto end = std::chrono::steady_clock::now();
+      seconds.push_back(std::chrono::duration<double>(end - start).count());
+    }
+    if (pass->GetAccumulatedFrames() != before + frames)
+    {
+      throw errorAbout("render", "the OpenGL context could not render the frames");
+    }
+    return seconds;
+  }
+};
+
+RenderSession::RenderSession(int width, int height)
+    : impl_(std::make_unique<Impl>()), width_(width), height_(height)
+{
+  const char* name = std::getenv("DISPLAY");
+  if (!name || !*name)
+  {
+    throw errorAbout("render", "no X display (DISPLAY is not set); run under xvfb-run");
+  }
+  // Kept open for the session: an X server resets when its last client leaves.
+  impl_->display = XOpenDisplay(nullptr);
+  if (!impl_->display)
+  {
+    throw errorAbout("render", std::string("cannot open the X display ") + name);
+  }
+  Impl& s = *impl_;
+  s.mapper->ScalarVisibilityOff();
+  s.actor->SetMapper(s.mapper);
+  s.renderer->AddActor(s.actor);
+  // Image-based lighting only: no headlight or light kit adds to VTK's shading.
+  s.renderer->AutomaticLightCreationOff();
+  s.renderer->RemoveAllLights();
+  s.window->SetOffScreenRendering(1);
+  s.window->SetMultiSamples(0);
+  s.window->SetAlphaBitPlanes(1);
+  s.window->SetSize(width, height);
+  s.window->AddRenderer(s.renderer);
+  s.pass->SetDelegatePass(s.steps);
+  DisplaySettings display;
+  display.background = BackgroundMode::Transparent;
+  s.pass->SetDisplaySettings(display);
+  s.pass->SetJitter(false);
+  s.pass->SetTargetFrames(0);
+  s.renderer->SetPass(s.pass);
+  s.mapper->AddObserver(vtkCommand::UpdateShaderEvent, impl_.get(), &Impl::onUpdateShader);
+  s.uploadsAtStart = textureUploadCount();
+  s.bakesAtStart = LutCache::shared().stats().bakes;
+}
+
+RenderSession::~RenderSession()
+{
+  impl_->material.reset();
+  impl_->renderer->SetPass(nullptr);
+  impl_->window->Finalize();
+  if (impl_->display)
+  {
+    XCloseDisplay(impl_->display);
+  }
+}
+
+void RenderSession::setSurface(vtkSmartPointer<vtkPolyData> surface, const ViewSettings& view)
+{
+  if (!surface || surface->GetNumberOfCells() == 0)
+  {
+    throw errorAbout("mesh", "no surface to render");
+  }
+  impl_->mapper->SetInputData(surface);
+  glm::dvec3 centre;
+  double radius = 0.0;
+  boundingSphere(surface, centre, radius);
+  const CameraPlacement placement = placeCamera(view, centre, radius);
+  vtkCamera* camera = impl_->renderer->GetActiveCamera();
+  camera->SetFocalPoint(placement.focalPoint.x, placement.focalPoint.y, placement.focalPoint.z);
+  camera->SetPosition(placement.position.x, placement.position.y, placement.position.z);
+  camera->SetViewUp(placement.viewUp.x, placement.viewUp.y, placement.viewUp.z);
+  camera->SetViewAngle(placement.viewAngleDegrees);
+  camera->SetParallelScale(placement.parallelScale);
+  camera->SetParallelProjection(placement.parallel);
+  impl_->renderer->ResetCameraClippingRange();
+}
+
+glm::dmat4 RenderSession::clipToWorld() const
+{
+  return aniso::clipToWorld(impl_->renderer);
+}
+
+void RenderSession::setEnvironment(std::shared_ptr<const Environment> environment, int cubeSize)
+{
+  impl_->lighting = std::make_shared<EnvironmentLighting>(std::move(environment), cubeSize);
+  ++impl_->environmentBakes;
+  impl_->vtkEnvironment = nullptr;
+  impl_->pass->SetLighting(impl_->lighting);
+  if (impl_->material)
+  {
+    impl_->material->setLighting(impl_->lighting);
+  }
+  if (impl_->renderer->GetUseImageBasedLighting())
+  {
+    impl_->vtkEnvironment = vtkEnvironmentTexture(impl_->lighting->environment());
+    impl_->renderer->SetEnvironmentTexture(impl_->vtkEnvironment);
+  }
+}
+
+void RenderSession::useMaterial(const MaterialSettings& settings)
+{
+  Impl& s = *impl_;
+  if (!s.lighting)
+  {
+    throw errorAbout("environment", "set an environment before a material");
+  }
+  s.renderer->UseImageBasedLightingOff();
+  s.actor->GetProperty()->SetInterpolationToPhong();
+  if (!s.material)
+  {
+    s.material = std::make_unique<AnisoMaterial>(s.lighting, settings);
+  }
+  else
+  {
+    s.material->setSettings(settings);
+  }
+  if (s.material->lighting() != s.lighting)
+  {
+    s.material->setLighting(s.lighting);
+  }
+  if (!s.materialAttached)
+  {
+    s.material->apply(s.actor, s.renderer);
+    s.materialAttached = true;
+  }
+}
+
+void RenderSession::useVtkPbr(const VtkPbrMaterial& m)
+{
+  Impl& s = *impl_;
+  if (!s.lighting)
+  {
+    throw errorAbout("environment", "set an environment before a material");
+  }
+  if (s.material)
+  {
+    s.material->detach();
+    s.materialAttached = false;
+  }
+  vtkProperty* property = s.actor->GetProperty();
+  property->SetInterpolationToPBR();
+  property->SetMetallic(1.0);
+  property->SetColor(m.baseColor.x, m.baseColor.y, m.baseColor.z);
+  property->SetRoughness(m.roughness);
+  property->SetAnisotropy(m.anisotropy);
+  property->SetAnisotropyRotation(m.rotation);
+  if (!s.vtkEnvironment)
+  {
+    s.vtkEnvironment = vtkEnvironmentTexture(s.lighting->environment());
+    s.renderer->SetEnvironmentTexture(s.vtkEnvironment);
+  }
+  s.renderer->UseImageBasedLightingOn();
+  // Z is up in the project's world; VTK's environment defaults to Y up.
+  s.renderer->SetEnvironmentUp(0.0, 0.0, 1.0);
+  s.renderer->SetEnvironmentRight(1.0, 0.0, 0.0);
+}
+
+std::vector<double> RenderSession::render(int frames)
+{
+  impl_->pass->Reset();
+  return impl_->draw(frames);
+}
+
+std::vector<double> RenderSession::renderMore(int frames)
+{
+  return impl_->draw(frames);
+}
+
+int RenderSession::accumulatedFrames() const
+{
+  return impl_->pass->GetAccumulatedFrames();
+}
+
+Image RenderSession::read()
+{
+  Image image = impl_->pass->ReadAccumulation();
+  if (image.empty())
+  {
+    throw errorAbout("render", "no image was rendered");
+  }
+  return image;
+}
+
+SessionCounters RenderSession::counters() const
+{
+  SessionCounters c;
+  c.shaderPrograms = impl_->programs.size();
+  c.textureUploads = textureUploadCount() - impl_->uploadsAtStart;
+  c.lutBakes = LutCache::shared().stats().bakes - impl_->bakesAtStart;
+  c.environmentBakes = impl_->environmentBakes;
+  return c;
+}
+
+std::string RenderSession::rendererName()
+{
+  auto* glWindow = vtkOpenGLRenderWindow::SafeDownCast(impl_->window);
+  glWindow->MakeCurrent();
+  const GLubyte* name = glGetString(GL_RENDERER);
+  return name ? reinterpret_cast<const char*>(name) : std::string();
+}
+} // namespace aniso::bench

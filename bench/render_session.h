@@ -1,0 +1,89 @@
+#pragma once
+// One off-screen window kept for a whole benchmark run. renderOffscreen (OffscreenRenderer.h)
+// opens a window, bakes the environment and compiles the shaders on every call; a run of
+// hundreds of renders reuses them here instead: one X connection, one GL context, one cubemap
+// per environment, one compile per shader variant. The same window draws the actor with the
+// anisotropic material or with VTK's own physically based shading (image-based lighting and
+// anisotropy), both through the accumulation pass, so both read back as linear float radiance.
+#include "EnvironmentLighting.h"
+#include "MaterialSettings.h"
+#include "ViewSettings.h"
+#include "env/environment.h"
+#include "image/image.h"
+
+#include <cstdint>
+#include <glm/mat4x4.hpp>
+#include <glm/vec3.hpp>
+#include <memory>
+#include <string>
+#include <vector>
+#include <vtkSmartPointer.h>
+
+class vtkPolyData;
+
+namespace aniso::bench
+{
+// VTK's physically based material (vtkProperty with PBR interpolation): metallic, base colour
+// = F0, roughness and anisotropy in [0, 1], the anisotropy direction turned about the normal by
+// rotation x 2 pi from the mesh tangent.
+struct VtkPbrMaterial
+{
+  double roughness = 0.5;
+  double anisotropy = 0.0;
+  double rotation = 0.0;
+  glm::dvec3 baseColor{1.0};
+};
+
+// What the session did, for showing that nothing is redone when nothing changed.
+struct SessionCounters
+{
+  uint64_t shaderPrograms = 0;   // distinct shader programs the actor was drawn with (compiles)
+  uint64_t textureUploads = 0;   // textures the project uploaded (TextureUpload.h)
+  uint64_t lutBakes = 0;         // lookup tables baked by the shared LutCache
+  uint64_t environmentBakes = 0; // cubemaps and SH9 projections (one per setEnvironment)
+};
+
+class RenderSession
+{
+public:
+  // Throws aniso::Error "render: reason" without an X display.
+  RenderSession(int width, int height);
+  ~RenderSession();
+  RenderSession(const RenderSession&) = delete;
+  RenderSession& operator=(const RenderSession&) = delete;
+
+  int width() const { return width_; }
+  int height() const { return height_; }
+
+  // The surface (prepared: "Normals", "Tangents") and the camera placed as ViewSettings says.
+  void setSurface(vtkSmartPointer<vtkPolyData> surface, const ViewSettings& view);
+  // Clip to world of the camera the mappers draw with (for CPU rays through the pixels).
+  glm::dmat4 clipToWorld() const;
+
+  // Bakes the cubemap (cubeSize) and the irradiance of ENVIRONMENT; VTK's own environment
+  // texture is made when VTK's shading first needs it.
+  void setEnvironment(std::shared_ptr<const Environment> environment, int cubeSize);
+
+  void useMaterial(const MaterialSettings& settings);
+  void useVtkPbr(const VtkPbrMaterial& material);
+
+  // Starts a new accumulation and draws FRAMES progressive frames (each with its sample-set
+  // shift, no jitter: every frame samples the pixel centres); returns the wall time of each,
+  // GPU work included.
+  std::vector<double> render(int frames);
+  // Draws FRAMES more frames into the same accumulation.
+  std::vector<double> renderMore(int frames);
+  int accumulatedFrames() const;
+  // The accumulated mean: RGBA float, linear radiance, alpha = coverage, row 0 at the top.
+  Image read();
+
+  SessionCounters counters() const;
+  std::string rendererName();
+
+private:
+  class Impl;
+  std::unique_ptr<Impl> impl_;
+  int width_;
+  int height_;
+};
+} // namespace aniso::bench
