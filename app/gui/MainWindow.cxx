@@ -110,6 +110,19 @@ MainWindow::MainWindow(QWidget* parent)
   connect(view_, &SceneView::noteAdded, this,
           [this](const QString& note) { statusBar()->showMessage(note, 8000); });
   connect(view_, &SceneView::frameRendered, this, &MainWindow::showSamples);
+  connect(view_, &SceneView::lightingBusyChanged, this,
+          [this](bool busy)
+          {
+            const QString baking = tr("Baking the environment…");
+            if (busy)
+            {
+              statusBar()->showMessage(baking);
+            }
+            else if (statusBar()->currentMessage() == baking)
+            {
+              statusBar()->clearMessage();
+            }
+          });
   connect(luts_, &LutScheduler::busyChanged, this,
           [this](bool busy)
           { lutLabel_->setText(busy ? tr("Baking lookup tables…") : tr("Lookup tables ready")); });

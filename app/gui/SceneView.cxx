@@ -8,25 +8,64 @@
 #include "error.h"
 #include "vtkAnisoAccumulationPass.h"
 
+#include <QThreadPool>
 #include <QTimer>
 #include <algorithm>
+#include <cctype>
 #include <cmath>
+#include <functional>
 #include <glm/geometric.hpp>
+#include <new>
+#include <sstream>
 #include <vtkActor.h>
 #include <vtkCallbackCommand.h>
 #include <vtkCamera.h>
 #include <vtkCommand.h>
 #include <vtkInteractorObserver.h>
+#include <vtkObjectFactory.h>
 #include <vtkOpenGLPolyDataMapper.h>
+#include <vtkOpenGLRenderWindow.h>
 #include <vtkOpenGLRenderer.h>
+#include <vtkOutputWindow.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtkRenderStepsPass.h>
 #include <vtkRenderWindow.h>
 #include <vtkRenderWindowInteractor.h>
+#include <vtk_glew.h> // before any other GL header
 
 namespace aniso
 {
+// VTK's error text (a shader that does not compile, a failed GL call) goes to SINK while the
+// view draws; everything else goes where it went before.
+class ErrorForwardingWindow : public vtkOutputWindow
+{
+public:
+  static ErrorForwardingWindow* New();
+  vtkTypeMacro(ErrorForwardingWindow, vtkOutputWindow)
+
+  vtkSmartPointer<vtkOutputWindow> previous;
+  std::function<void(const std::string&)> sink;
+  bool drawing = false;
+
+  void DisplayText(const char* text) override { previous->DisplayText(text); }
+  void DisplayErrorText(const char* text) override
+  {
+    previous->DisplayErrorText(text);
+    if (drawing && sink && text)
+    {
+      sink(text);
+    }
+  }
+  void DisplayWarningText(const char* text) override { previous->DisplayWarningText(text); }
+  void DisplayGenericWarningText(const char* text) override
+  {
+    previous->DisplayGenericWarningText(text);
+  }
+  void DisplayDebugText(const char* text) override { previous->DisplayDebugText(text); }
+};
+vtkStandardNewMacro(ErrorForwardingWindow);
+
 namespace
 {
 bool isMaterialKey(const std::string& key)
@@ -50,6 +89,25 @@ bool needsLuts(const MaterialSettings& s)
   return s.method == SpecularMethod::SplitSum || s.halfVectors == HalfVectorSource::Lut;
 }
 
+// "ERROR: In FILE, line N\nvtkClass (0x...): what\n" -> "what": the words, not the source.
+std::string plainVtkError(std::string text)
+{
+  if (text.rfind("ERROR: In ", 0) == 0 && text.find('\n') != std::string::npos)
+  {
+    text = text.substr(text.find('\n') + 1);
+  }
+  const std::size_t object = text.find("): ");
+  if (text.rfind("vtk", 0) == 0 && object != std::string::npos)
+  {
+    text = text.substr(object + 3);
+  }
+  while (!text.empty() && std::isspace(static_cast<unsigned char>(text.back())))
+  {
+    text.pop_back();
+  }
+  return text;
+}
+
 // Default view: a three-quarter view from the front, slightly above (Z up).
 glm::dvec3 defaultViewDirection()
 {
@@ -60,8 +118,16 @@ glm::dvec3 defaultViewDirection()
 SceneView::SceneView(SceneModel* model, SceneAssets* assets, LutScheduler* luts,
                      vtkRenderWindow* window, QObject* parent)
     : QObject(parent), model_(model), assets_(assets), luts_(luts), window_(window),
-      settle_(new QTimer(this)), frame_(new QTimer(this))
+      settle_(new QTimer(this)), frame_(new QTimer(this)), lightingPool_(new QThreadPool(this)),
+      errorOutput_(vtkSmartPointer<ErrorForwardingWindow>::New())
 {
+  errorOutput_->previous = vtkOutputWindow::GetInstance();
+  errorOutput_->sink = [this](const std::string& text)
+  { reportRenderError("OpenGL: " + plainVtkError(text)); };
+  vtkOutputWindow::SetInstance(errorOutput_);
+
+  // One lighting bake at a time: a second would only compete for the cores with the first.
+  lightingPool_->setMaxThreadCount(1);
   mapper_->ScalarVisibilityOff();
   actor_->SetMapper(mapper_);
   renderer_->AddActor(actor_);
@@ -124,6 +190,8 @@ SceneView::SceneView(SceneModel* model, SceneAssets* assets, LutScheduler* luts,
 
 SceneView::~SceneView()
 {
+  // A bake in flight refers to this view; its queued result dies with it.
+  lightingPool_->waitForDone();
   if (vtkRenderWindowInteractor* interactor = window_->GetInteractor())
   {
     if (vtkInteractorObserver* style = interactor->GetInteractorStyle())
@@ -133,6 +201,20 @@ SceneView::~SceneView()
   }
   material_.reset();
   window_->RemoveRenderer(renderer_);
+  vtkOutputWindow::SetInstance(errorOutput_->previous);
+}
+
+void SceneView::reportRenderError(const std::string& message)
+{
+  // A failure repeats with every frame: the user hears of it once.
+  if (!reportedRenderErrors_.insert(message).second)
+  {
+    return;
+  }
+  // Queued: never re-enter the window from inside its own rendering.
+  QMetaObject::invokeMethod(
+      this, [this, message] { emit errorOccurred(QString::fromStdString(message)); },
+      Qt::QueuedConnection);
 }
 
 vtkOpenGLRenderer* SceneView::renderer() const
@@ -156,8 +238,7 @@ void SceneView::modelChanged(const QString& qkey)
     }
     else if (key == "env" || key == "cube-size")
     {
-      applyLighting();
-      material_->setLighting(lighting_);
+      requestLighting();
     }
     else if (key == "env-rotation")
     {
@@ -228,6 +309,102 @@ void SceneView::applyLighting()
                                                     model_->integer("cube-size"));
   lighting_->setRotationDegrees(model_->real("env-rotation"));
   pass_->SetLighting(lighting_);
+}
+
+void SceneView::requestLighting()
+{
+  ++lightingRequest_;
+  if (lightingInFlight_)
+  {
+    lightingPending_ = true;
+  }
+  else
+  {
+    startLightingBake();
+  }
+  if (lightingBusy() && !lightingBusyShown_)
+  {
+    lightingBusyShown_ = true;
+    emit lightingBusyChanged(true);
+  }
+}
+
+void SceneView::startLightingBake()
+{
+  lightingPending_ = false;
+  const int id = lightingRequest_;
+  const int cubeSize = model_->integer("cube-size");
+  std::shared_ptr<const Environment> environment;
+  try
+  {
+    // The model's validator loaded and checked it already: a hit of the assets' cache.
+    environment = assets_->environment(model_->text("env"));
+  }
+  catch (const Error& e)
+  {
+    lightingBaked(id, nullptr, QString::fromStdString(e.what()));
+    return;
+  }
+  if (lighting_ && &lighting_->environment() == environment.get() &&
+      lighting_->cubeSize() == cubeSize)
+  {
+    // Back to what is on screen (an undo, or a change reverted while a bake ran).
+    lightingBaked(id, lighting_, QString());
+    return;
+  }
+  lightingInFlight_ = true;
+  lightingPool_->start(
+      [this, id, environment, cubeSize]
+      {
+        std::shared_ptr<EnvironmentLighting> baked;
+        QString message;
+        try
+        {
+          baked = std::make_shared<EnvironmentLighting>(environment, cubeSize);
+        }
+        catch (const Error& e)
+        {
+          message = QString::fromStdString(e.what());
+        }
+        catch (const std::bad_alloc&)
+        {
+          message = tr("cube-size: %1 is too large for the memory available").arg(cubeSize);
+        }
+        // Delivered on the UI thread; dropped with the view if it is gone by then.
+        QMetaObject::invokeMethod(
+            this, [this, id, baked, message] { lightingBaked(id, baked, message); },
+            Qt::QueuedConnection);
+      });
+}
+
+void SceneView::lightingBaked(int id, std::shared_ptr<EnvironmentLighting> baked,
+                              const QString& error)
+{
+  lightingInFlight_ = false;
+  if (id != lightingRequest_)
+  {
+    // Stale: the latest request bakes next.
+    startLightingBake();
+    return;
+  }
+  if (!error.isEmpty())
+  {
+    // The lighting on screen stays.
+    emit errorOccurred(error);
+  }
+  else if (baked != lighting_)
+  {
+    baked->setRotationDegrees(model_->real("env-rotation"));
+    lighting_ = std::move(baked);
+    pass_->SetLighting(lighting_);
+    material_->setLighting(lighting_);
+    requestRender();
+  }
+  if (!lightingBusy() && lightingBusyShown_)
+  {
+    lightingBusyShown_ = false;
+    emit lightingBusyChanged(false);
+  }
 }
 
 void SceneView::applyMaterial()
@@ -380,7 +557,7 @@ int SceneView::targetSamples() const
 
 bool SceneView::converged() const
 {
-  return !interacting_ && pass_->IsConverged();
+  return !interacting_ && !lightingBusy() && pass_->IsConverged();
 }
 
 void SceneView::requestRender()
@@ -393,7 +570,27 @@ void SceneView::requestRender()
 
 void SceneView::renderNow()
 {
+  errorOutput_->drawing = true;
   window_->Render();
+  errorOutput_->drawing = false;
+  auto* gl = vtkOpenGLRenderWindow::SafeDownCast(window_);
+  if (gl && gl->IsCurrent())
+  {
+    // Errors VTK did not report itself (it checks only in debug builds); a few at most, as
+    // glGetError returns one per call.
+    for (int i = 0; i < 4; ++i)
+    {
+      const GLenum code = glGetError();
+      if (code == GL_NO_ERROR)
+      {
+        break;
+      }
+      std::ostringstream message;
+      message << "OpenGL: error 0x" << std::hex << code
+              << " while drawing the view (the image may be wrong)";
+      reportRenderError(message.str());
+    }
+  }
   emit frameRendered(accumulatedSamples(), targetSamples());
   // Progressive refinement: one more frame once pending events are handled, so the window
   // stays responsive between frames.

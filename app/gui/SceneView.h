@@ -5,7 +5,9 @@
 // moment, frames accumulate (progressive refinement) until the quality's sample count is
 // reached, then nothing is drawn until something changes. Lookup tables come from the
 // LutScheduler's bakes, so a new n_u, n_v never bakes on the UI thread: until its tables are
-// ready the material keeps the previous exponents.
+// ready the material keeps the previous exponents. Likewise a new environment or cube size is
+// baked (cubemap, SH9) on a worker thread: the latest request wins, the previous lighting stays
+// on screen until the new one is ready, and a failed bake is reported once and changes nothing.
 #include "DisplaySettings.h"
 #include "MaterialSettings.h"
 #include "OffscreenRenderer.h"
@@ -14,9 +16,12 @@
 #include <QObject>
 #include <QString>
 #include <memory>
+#include <set>
+#include <string>
 #include <vtkNew.h>
 #include <vtkSmartPointer.h>
 
+class QThreadPool;
 class QTimer;
 class vtkActor;
 class vtkAnisoAccumulationPass;
@@ -30,6 +35,7 @@ namespace aniso
 {
 class AnisoMaterial;
 class EnvironmentLighting;
+class ErrorForwardingWindow;
 class LutScheduler;
 class SceneAssets;
 
@@ -61,6 +67,11 @@ public:
   bool converged() const;
   bool interacting() const { return interacting_; }
   void setSettleMs(int ms);
+  // True from a change of the environment or cube size until its lighting is on screen (or
+  // its bake failed).
+  bool lightingBusy() const { return lightingInFlight_ || lightingPending_; }
+  // The lighting the view draws with.
+  const std::shared_ptr<EnvironmentLighting>& lighting() const { return lighting_; }
 
 public slots:
   // One frame soon (several requests before it make one frame).
@@ -70,11 +81,20 @@ signals:
   void frameRendered(int samples, int targetSamples);
   void errorOccurred(const QString& message);
   void noteAdded(const QString& note);
+  void lightingBusyChanged(bool busy);
 
 private:
   void modelChanged(const QString& key);
   void applySurface();
   void applyLighting();
+  // Bakes the model's environment at its cube size on the worker (one bake at a time; a request
+  // made meanwhile runs next, and the finished stale one is dropped).
+  void requestLighting();
+  void startLightingBake();
+  void lightingBaked(int id, std::shared_ptr<EnvironmentLighting> lighting, const QString& error);
+  // Errors of the renderer (VTK's error output while drawing, glGetError after a frame), each
+  // distinct message reported once.
+  void reportRenderError(const std::string& message);
   void applyMaterial();
   void applyDisplay();
   void applyCameraFromModel();
@@ -102,5 +122,12 @@ private:
   bool interacting_ = false;
   bool applyingCamera_ = false;
   bool cameraMoved_ = false;
+  QThreadPool* lightingPool_;
+  int lightingRequest_ = 0; // sequence number of the latest lighting request
+  bool lightingInFlight_ = false;
+  bool lightingPending_ = false;   // a request arrived while a bake ran
+  bool lightingBusyShown_ = false; // lightingBusyChanged(true) was the last sent
+  std::set<std::string> reportedRenderErrors_;
+  vtkSmartPointer<ErrorForwardingWindow> errorOutput_;
 };
 } // namespace aniso
