@@ -42,7 +42,10 @@ class ErrorForwardingWindow : public vtkOutputWindow
 {
 public:
   static ErrorForwardingWindow* New();
+  // The macro takes no semicolon, which clang-format does not know.
+  // clang-format off
   vtkTypeMacro(ErrorForwardingWindow, vtkOutputWindow)
+  // clang-format on
 
   vtkSmartPointer<vtkOutputWindow> previous;
   std::function<void(const std::string&)> sink;
