@@ -42,11 +42,6 @@ class ErrorForwardingWindow : public vtkOutputWindow
 {
 public:
   static ErrorForwardingWindow* New();
-  // The macro takes no semicolon, which clang-format does not know.
-  // clang-format off
-  vtkTypeMacro(ErrorForwardingWindow, vtkOutputWindow)
-  // clang-format on
-
   vtkSmartPointer<vtkOutputWindow> previous;
   std::function<void(const std::string&)> sink;
   bool drawing = false;
@@ -66,6 +61,8 @@ public:
     previous->DisplayGenericWarningText(text);
   }
   void DisplayDebugText(const char* text) override { previous->DisplayDebugText(text); }
+
+  vtkTypeMacro(ErrorForwardingWindow, vtkOutputWindow)
 };
 vtkStandardNewMacro(ErrorForwardingWindow);
 
