@@ -363,7 +363,8 @@ int runRender(const std::vector<std::string>& args, std::ostream& out)
     throw errorAbout(source, "has no texture coordinates, which the maps need");
   }
 
-  const RenderResult result = renderOffscreen(settings);
+  const RenderResult result =
+      a.has("--compare") ? renderComparison(a, settings) : renderOffscreen(settings);
 
   const bool exr = lowercaseExtension(output) == ".exr";
   if (exr)

@@ -33,6 +33,52 @@ std::string litModelNames()
   }
   return names;
 }
+// The installer of lit model MODEL with the command line's lights and material.
+MaterialInstaller litInstaller(LitModel model, const Arguments& a, const RenderSettings& settings)
+{
+  LitModelSettings lit;
+  lit.model = model;
+  lit.lights = lightsFromOptions(a);
+  lit.maps = a.has("--sample-material")
+                 ? std::make_shared<const SvMaps>(
+                       makeSampleMaterial(a.text("--sample-material"), "--sample-material"))
+                 : std::make_shared<const SvMaps>(uniformSvMaps(uniformTexel(
+                       settings.material.lobe, settings.material.f0, settings.material.albedo)));
+  return litModelInstaller(lit);
+}
+
+constexpr std::size_t kMaxCompared = 8;
+
+// The models of --compare, each as-env or a lit model.
+std::vector<std::string> comparedModels(const Arguments& a)
+{
+  std::vector<std::string> names;
+  const std::string& list = a.text("--compare");
+  std::string::size_type start = 0;
+  for (;;)
+  {
+    const std::string::size_type end = list.find(',', start);
+    names.push_back(list.substr(start, end - start));
+    if (end == std::string::npos)
+    {
+      break;
+    }
+    start = end + 1;
+  }
+  if (names.size() > kMaxCompared)
+  {
+    throw usageError("--compare", "at most " + std::to_string(kMaxCompared) + " models");
+  }
+  for (const std::string& name : names)
+  {
+    LitModel lit;
+    if (name != kEnvironmentModel && !litModelFromName(name, lit))
+    {
+      throw usageError("--compare", "'" + name + "' is not one of as-env, " + litModelNames());
+    }
+  }
+  return names;
+}
 } // namespace
 
 void addModelOptions(Command& command)
@@ -66,6 +112,11 @@ void addModelOptions(Command& command)
     sample.choices.emplace_back(info.name);
   }
   command.options.push_back(sample);
+  static const std::string compareHelp =
+      "render several models side by side, one tile of --size each, left to right, with the same "
+      "mesh, camera, lights and material: a comma-separated list of as-env and " +
+      litModelNames();
+  command.options.push_back(textOption("--compare", "M1,M2,...", compareHelp));
   addSurfaceModelOptions(command);
 }
 
@@ -98,6 +149,16 @@ std::vector<Light> lightsFromOptions(const Arguments& a)
 
 void applyModelOptions(const Arguments& a, RenderSettings& settings)
 {
+  if (a.has("--compare"))
+  {
+    if (a.has("--model"))
+    {
+      throw usageError("--compare", "give either --model or --compare");
+    }
+    comparedModels(a);
+    lightsFromOptions(a);
+    return;
+  }
   const std::string name = a.text("--model");
   const ShadingModelInfo& info = shadingModel(name, "--model");
   if (a.has("--light") && !info.lights)
@@ -121,19 +182,49 @@ void applyModelOptions(const Arguments& a, RenderSettings& settings)
     }
     return;
   }
-  LitModelSettings lit;
-  lit.model = model;
-  lit.lights = lightsFromOptions(a);
-  lit.maps = a.has("--sample-material")
-                 ? std::make_shared<const SvMaps>(
-                       makeSampleMaterial(a.text("--sample-material"), "--sample-material"))
-                 : std::make_shared<const SvMaps>(uniformSvMaps(uniformTexel(
-                       settings.material.lobe, settings.material.f0, settings.material.albedo)));
-  settings.installMaterial = litModelInstaller(lit);
+  settings.installMaterial = litInstaller(model, a, settings);
+}
+
+RenderResult renderComparison(const Arguments& a, RenderSettings& settings)
+{
+  const std::vector<std::string> names = comparedModels(a);
+  const int tile = settings.width;
+  RenderResult mosaic;
+  mosaic.linear = Image(tile * int(names.size()), settings.height, 4);
+  mosaic.display = Image(mosaic.linear.width, settings.height, 4);
+  for (std::size_t i = 0; i < names.size(); ++i)
+  {
+    RenderSettings one = settings;
+    LitModel lit;
+    one.installMaterial =
+        litModelFromName(names[i], lit) ? litInstaller(lit, a, settings) : MaterialInstaller{};
+    const RenderResult result = renderOffscreen(one);
+    for (int y = 0; y < settings.height; ++y)
+    {
+      for (int x = 0; x < tile; ++x)
+      {
+        for (int c = 0; c < 4; ++c)
+        {
+          mosaic.linear.at(int(i) * tile + x, y, c) = result.linear.at(x, y, c);
+          mosaic.display.at(int(i) * tile + x, y, c) = result.display.at(x, y, c);
+        }
+      }
+    }
+    mosaic.frameSeconds.insert(mosaic.frameSeconds.end(), result.frameSeconds.begin(),
+                               result.frameSeconds.end());
+    mosaic.coveredPixels += result.coveredPixels;
+    mosaic.renderer = result.renderer;
+  }
+  settings.width = mosaic.linear.width;
+  return mosaic;
 }
 
 std::string modelSummary(const Arguments& a)
 {
+  if (a.has("--compare"))
+  {
+    return "models " + a.text("--compare") + " left to right";
+  }
   const std::string name = a.text("--model");
   if (!isLit(name))
   {

@@ -11,7 +11,7 @@
 
 namespace aniso::cli
 {
-// Adds --model, --light and --sample-material to COMMAND.
+// Adds --model, --light, --sample-material and --compare to COMMAND.
 void addModelOptions(Command& command);
 
 // The lights of the command line (--light, in order), or the default pair when none is given.
@@ -22,6 +22,11 @@ std::vector<Light> lightsFromOptions(const Arguments& arguments);
 // uniform material made from settings.material (n_u, n_v, F0, albedo: see uniformTexel) unless
 // --sample-material names one. Throws UsageError for options that do not apply to the model.
 void applyModelOptions(const Arguments& arguments, RenderSettings& settings);
+
+// --compare M1,M2,...: renders each model (as-env or a lit model) with SETTINGS and the model
+// options, and puts the images side by side, left to right, each SETTINGS.width wide; then
+// SETTINGS.width is the mosaic's. Frame times and covered pixels are those of all renders.
+RenderResult renderComparison(const Arguments& arguments, RenderSettings& settings);
 
 // What the summary line says about the model: "model banks, 2 light(s), material marble".
 std::string modelSummary(const Arguments& arguments);

@@ -7,6 +7,8 @@
 //    material from --nu/--nv/--f0/--albedo and one light, the covered pixels agree with the
 //    core's CPU evaluation (materials/models.h) of the same material, frame and light
 //    (relative L2 below 5e-3, measured 7.6e-4: float shading on the default, coarser sphere mesh).
+//  - --compare M1,M2 writes the models' images side by side, each tile the same agreement with
+//    its own model; --compare with --model, or with a model it cannot show, is a usage error.
 #include "../app/cli_runner.h"
 #include "image/image.h"
 #include "materials/models.h"
@@ -72,44 +74,16 @@ TEST_F(RenderModelsCli, BadModelOptionsNameTheArgument)
   EXPECT_TRUE(files().empty());
 }
 
-TEST_F(RenderModelsCli, ExrHoldsTheModelRadiance)
-{
-  ANISO_REQUIRE_DISPLAY();
-  constexpr int kSize = 48;
-  const std::string exr = path("ward.exr").string();
-  const Outcome r = run({"render",
-                         "--builtin",
-                         "sphere",
-                         "--model",
-                         "ward",
-                         "--nu",
-                         "30",
-                         "--nv",
-                         "8",
-                         "--f0",
-                         "0.6",
-                         "--albedo",
-                         "0.2,0.3,0.4",
-                         "--light",
-                         "point:-1,-3,2:8",
-                         "--size",
-                         std::to_string(kSize),
-                         "--frames",
-                         "1",
-                         "--jitter",
-                         "off",
-                         "--background",
-                         "none",
-                         "-o",
-                         exr});
-  ASSERT_EQ(r.exitCode, 0) << r.err;
-  const aniso::Image image = aniso::readImage(exr);
-  ASSERT_EQ(image.width, kSize);
-  EXPECT_EQ(aniso::test::nonFiniteValues(image), 0);
+constexpr int kSize = 48;
+const char* const kLight = "point:-1,-3,2:8";
 
+// Relative L2 between the tile of IMAGE starting at column X0 and the CPU evaluation of MODEL
+// for the uniform material of --nu 30 --nv 8 --f0 0.6 --albedo 0.2,0.3,0.4 under kLight.
+double tileError(const aniso::Image& image, int x0, aniso::LitModel model)
+{
   const aniso::SvTexel texel =
       aniso::uniformTexel({30.0, 8.0}, glm::dvec3(0.6), glm::dvec3(0.2, 0.3, 0.4));
-  const std::vector<aniso::Light> lights = {aniso::parseLight("point:-1,-3,2:8")};
+  const std::vector<aniso::Light> lights = {aniso::parseLight(kLight)};
   const aniso::CameraPlacement camera =
       aniso::placeCamera(aniso::ViewSettings{}, glm::dvec3(0.0), 1.0);
   double diff = 0.0;
@@ -129,19 +103,74 @@ TEST_F(RenderModelsCli, ExrHoldsTheModelRadiance)
       const aniso::Frame frame =
           aniso::svShadingFrame(n, glm::normalize(glm::dvec3(-n.y, n.x, 0.0)), texel);
       const glm::dvec3 expected =
-          aniso::shadeLitModel(aniso::LitModel::Ward, texel, frame, n, -ray.direction, lights);
+          aniso::shadeLitModel(model, texel, frame, n, -ray.direction, lights);
       for (int c = 0; c < 3; ++c)
       {
-        const double d = image.at(x, y, c) - expected[c];
+        const double d = image.at(x0 + x, y, c) - expected[c];
         diff += d * d;
         norm += expected[c] * expected[c];
       }
       ++pixels;
     }
   }
-  ASSERT_GT(pixels, kSize * kSize / 4);
+  EXPECT_GT(pixels, kSize * kSize / 4);
   const double error = std::sqrt(diff / norm);
-  std::printf("ward through the CLI: relative L2 %.2e over %d pixels\n", error, pixels);
-  EXPECT_LT(error, 5e-3);
+  std::printf("%s through the CLI: relative L2 %.2e over %d pixels\n",
+              std::string(aniso::litModelName(model)).c_str(), error, pixels);
+  return error;
+}
+
+std::vector<std::string> litArguments(const std::string& output)
+{
+  return {"--builtin",    "sphere",
+          "--nu",         "30",
+          "--nv",         "8",
+          "--f0",         "0.6",
+          "--albedo",     "0.2,0.3,0.4",
+          "--light",      kLight,
+          "--size",       std::to_string(kSize),
+          "--frames",     "1",
+          "--jitter",     "off",
+          "--background", "none",
+          "-o",           output};
+}
+
+TEST_F(RenderModelsCli, ExrHoldsTheModelRadiance)
+{
+  ANISO_REQUIRE_DISPLAY();
+  const std::string exr = path("ward.exr").string();
+  std::vector<std::string> args = {"render", "--model", "ward"};
+  const std::vector<std::string> rest = litArguments(exr);
+  args.insert(args.end(), rest.begin(), rest.end());
+  const Outcome r = run(args);
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const aniso::Image image = aniso::readImage(exr);
+  ASSERT_EQ(image.width, kSize);
+  EXPECT_EQ(aniso::test::nonFiniteValues(image), 0);
+  EXPECT_LT(tileError(image, 0, aniso::LitModel::Ward), 5e-3);
+}
+
+// --compare puts one tile per model side by side, each the radiance of its model.
+TEST_F(RenderModelsCli, CompareTilesHoldEachModel)
+{
+  ANISO_REQUIRE_DISPLAY();
+  const std::string out = path("a.png").string();
+  expectOneLineError(run({"render", "--builtin", "sphere", "--model", "ward", "--compare",
+                          "ward,banks", "-o", out}),
+                     "--compare");
+  expectOneLineError(run({"render", "--builtin", "sphere", "--compare", "ward,phong", "-o", out}),
+                     "--compare");
+  const std::string exr = path("compare.exr").string();
+  std::vector<std::string> args = {"render", "--compare", "banks,blinn-phong"};
+  const std::vector<std::string> rest = litArguments(exr);
+  args.insert(args.end(), rest.begin(), rest.end());
+  const Outcome r = run(args);
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const aniso::Image image = aniso::readImage(exr);
+  ASSERT_EQ(image.width, 2 * kSize);
+  ASSERT_EQ(image.height, kSize);
+  EXPECT_EQ(aniso::test::nonFiniteValues(image), 0);
+  EXPECT_LT(tileError(image, 0, aniso::LitModel::Banks), 5e-3);
+  EXPECT_LT(tileError(image, kSize, aniso::LitModel::BlinnPhong), 5e-3);
 }
 } // namespace
