@@ -49,7 +49,8 @@ mat3 litPerturbedFrame(mat3 base, vec3 mapNormal, vec2 mapTangent)
 {
   float rxy = length(mapNormal.xy);
   float a = sqrt(max(0.5 * (mapNormal.z + 1.0), 0.0));
-  vec2 bc = rxy > 0.0 ? vec2(mapNormal.y, -mapNormal.x) / rxy * sqrt(max(0.5 * (1.0 - mapNormal.z), 0.0))
+  float halfSine = sqrt(max(0.5 * (1.0 - mapNormal.z), 0.0));
+  vec2 bc = rxy > 0.0 ? vec2(mapNormal.y, -mapNormal.x) / rxy * halfSine
                       : (mapNormal.z < 0.0 ? vec2(1.0, 0.0) : vec2(0.0));
   float b = bc.x;
   float c = bc.y;
