@@ -38,7 +38,14 @@ aniso::ParameterValue unusualValue(const aniso::SceneKey& key, const QDir& dir)
   }
   if (!s.choices.empty())
   {
-    return aniso::textValue(std::string(s.choices.back()));
+    // The last choice that is not the default, whichever the declaration's default is.
+    for (auto c = s.choices.rbegin(); c != s.choices.rend(); ++c)
+    {
+      if (!(aniso::textValue(std::string(*c)) == aniso::defaultParameterValue(s)))
+      {
+        return aniso::textValue(std::string(*c));
+      }
+    }
   }
   if (name == "env")
   {
