@@ -2,6 +2,7 @@
 
 #include "MaterialShaderSource.h"
 #include "RendererMatrices.h"
+#include "ShaderHook.h"
 #include "TextureUpload.h"
 #include "aniso_shaders.h"
 #include "error.h"
@@ -12,16 +13,12 @@
 #include <glm/matrix.hpp>
 #include <optional>
 #include <vtkActor.h>
-#include <vtkCommand.h>
 #include <vtkDataArray.h>
-#include <vtkDataObject.h>
-#include <vtkOpenGLPolyDataMapper.h>
 #include <vtkOpenGLRenderWindow.h>
 #include <vtkPointData.h>
 #include <vtkPolyData.h>
 #include <vtkRenderer.h>
 #include <vtkShaderProgram.h>
-#include <vtkShaderProperty.h>
 #include <vtkSmartPointer.h>
 #include <vtkTextureObject.h>
 #include <vtkWeakPointer.h>
@@ -62,17 +59,6 @@ bool hasArray(vtkPolyData* poly, const char* name, int components)
          array->GetNumberOfTuples() == poly->GetNumberOfPoints();
 }
 
-void checkMap(const Image& image, int channels, const char* name)
-{
-  if (image.width <= 0 || image.height <= 0 || image.channels < channels ||
-      image.data.size() != std::size_t(image.width) * image.height * image.channels)
-  {
-    throw errorAbout("material maps", std::string(name) +
-                                          " must be a non-empty image with at least " +
-                                          std::to_string(channels) + " channels");
-  }
-}
-
 std::shared_ptr<const SvMaps> defaultMaps()
 {
   static const auto maps = std::make_shared<const SvMaps>(uniformSvMaps(SvTexel{}));
@@ -103,11 +89,7 @@ class LitModelMaterial::Impl
 {
 public:
   LitModelSettings settings;
-  vtkWeakPointer<vtkActor> actor;
-  vtkWeakPointer<vtkRenderer> renderer;
-  vtkWeakPointer<vtkOpenGLPolyDataMapper> mapper;
-  unsigned long updateShaderTag = 0;
-  unsigned long mapperEndTag = 0;
+  ShaderHook hook;
   std::optional<LitModelVariant> installed;
   bool normals = false;
   bool tangents = false;
@@ -119,47 +101,8 @@ public:
   std::shared_ptr<const SvMaps> uploadedMaps;
   std::array<vtkSmartPointer<vtkTextureObject>, 3> textures;
 
-  ~Impl() { detach(); }
-
-  void clearReplacements()
+  void onMesh(vtkPolyData* poly)
   {
-    vtkShaderProperty* sp = actor->GetShaderProperty();
-    sp->ClearVertexShaderReplacement(kVertexDecTag, true);
-    sp->ClearVertexShaderReplacement(kVertexImplTag, true);
-    sp->ClearFragmentShaderReplacement(kFragmentDecTag, true);
-    sp->ClearFragmentShaderReplacement(kFragmentUniformFlowTag, true);
-    sp->ClearFragmentShaderReplacement(kFragmentImplTag, true);
-  }
-
-  void detach()
-  {
-    if (mapper)
-    {
-      mapper->RemoveObserver(updateShaderTag);
-      mapper->RemoveObserver(mapperEndTag);
-      for (const char* attribute : {"litNormalMC", "litTangentMC", "litTCoordMC"})
-      {
-        mapper->RemoveVertexAttributeMapping(attribute);
-      }
-    }
-    if (actor)
-    {
-      clearReplacements();
-      actor->Modified();
-    }
-    mapper = nullptr;
-    actor = nullptr;
-    renderer = nullptr;
-    installed.reset();
-  }
-
-  void onMapperEnd(vtkObject*, unsigned long, void*)
-  {
-    vtkPolyData* poly = mapper ? mapper->GetInput() : nullptr;
-    if (!poly)
-    {
-      return;
-    }
     normals = hasArray(poly, kNormalsArray, 3);
     tangents = hasArray(poly, kTangentsArray, 3);
     tcoords = hasArray(poly, kTCoordsArray, 2);
@@ -169,49 +112,29 @@ public:
   void updateVariant()
   {
     const LitModelVariant v{settings.model, normals, tangents, tcoords};
-    if (!installed || *installed != v)
-    {
-      install(v);
-    }
-  }
-
-  void install(const LitModelVariant& v)
-  {
-    if (!actor || !mapper)
+    if (installed && *installed == v)
     {
       return;
     }
     const std::string defines = litVariantDefines(v);
-    auto after = [](const char* tag, const std::string& text)
-    { return std::string(tag) + "\n" + text; };
-    clearReplacements();
-    vtkShaderProperty* sp = actor->GetShaderProperty();
-    sp->AddVertexShaderReplacement(kVertexDecTag, true,
-                                   after(kVertexDecTag, defines + shaders::kLitVsDec), false);
-    sp->AddVertexShaderReplacement(kVertexImplTag, true, after(kVertexImplTag, shaders::kLitVsImpl),
-                                   false);
-    sp->AddFragmentShaderReplacement(kFragmentDecTag, true,
-                                     after(kFragmentDecTag, defines + shaders::kLitFsDec), false);
-    sp->AddFragmentShaderReplacement(kFragmentUniformFlowTag, true,
-                                     after(kFragmentUniformFlowTag, shaders::kLitFsUniformFlow),
-                                     false);
-    sp->AddFragmentShaderReplacement(kFragmentImplTag, true,
-                                     after(kFragmentImplTag, shaders::kLitFsImpl), false);
-    auto map = [this](bool on, const char* attribute, const char* array)
+    ShaderCode code;
+    code.vertex = {{kVertexDecTag, defines + shaders::kLitVsDec},
+                   {kVertexImplTag, shaders::kLitVsImpl}};
+    code.fragment = {{kFragmentDecTag, defines + shaders::kLitFsDec},
+                     {kFragmentUniformFlowTag, shaders::kLitFsUniformFlow},
+                     {kFragmentImplTag, shaders::kLitFsImpl}};
+    const std::pair<bool, std::pair<std::string, std::string>> attributes[] = {
+        {v.normals, {"litNormalMC", kNormalsArray}},
+        {v.tangents, {"litTangentMC", kTangentsArray}},
+        {v.tcoords, {"litTCoordMC", kTCoordsArray}}};
+    for (const auto& [used, attribute] : attributes)
     {
-      if (on)
+      if (used)
       {
-        mapper->MapDataArrayToVertexAttribute(attribute, array,
-                                              vtkDataObject::FIELD_ASSOCIATION_POINTS, -1);
+        code.attributes.push_back(attribute);
       }
-      else
-      {
-        mapper->RemoveVertexAttributeMapping(attribute);
-      }
-    };
-    map(v.normals, "litNormalMC", kNormalsArray);
-    map(v.tangents, "litTangentMC", kTangentsArray);
-    map(v.tcoords, "litTCoordMC", kTCoordsArray);
+    }
+    hook.install(code);
     installed = v;
   }
 
@@ -229,10 +152,12 @@ public:
     uploadedMaps = maps;
   }
 
-  void onUpdateShader(vtkObject*, unsigned long, void* data)
+  // Uniforms and textures, every time the mapper draws: nothing here changes the shader.
+  void onShader(vtkShaderProgram* program)
   {
-    auto* program = static_cast<vtkShaderProgram*>(data);
-    if (!program || !installed || !actor || !renderer || !program->IsUniformUsed("litLightCount"))
+    vtkRenderer* renderer = hook.renderer();
+    vtkActor* actor = hook.actor();
+    if (!installed || !program->IsUniformUsed("litLightCount"))
     {
       return;
     }
@@ -241,20 +166,7 @@ public:
     {
       return;
     }
-    try
-    {
-      updateTextures(window);
-      setUniforms(program);
-    }
-    catch (const std::exception& e)
-    {
-      // Exceptions must not unwind through VTK's render loop; the draw goes on unshaded.
-      vtkGenericWarningMacro("lit material: " << e.what());
-    }
-  }
-
-  void setUniforms(vtkShaderProgram* program)
-  {
+    updateTextures(window);
     setUniformMatrix(program, "litClipToWorld", clipToWorld(renderer));
     const glm::dmat3 toWorld(toGlm(actor->GetMatrix()));
     const double det = glm::determinant(toWorld);
@@ -313,44 +225,23 @@ void LitModelMaterial::validate(const LitModelSettings& s)
   }
   if (s.maps)
   {
-    checkMap(s.maps->tangentAlpha, 4, "tangentAlpha");
-    checkMap(s.maps->albedoSpecular, 4, "albedoSpecular");
-    checkMap(s.maps->normal, 3, "normal");
+    sampleSvMaps(*s.maps, {0.0, 0.0}); // the core's checks: "material maps: reason"
   }
 }
 
 void LitModelMaterial::apply(vtkActor* actor, vtkRenderer* renderer)
 {
-  if (!actor || !renderer)
-  {
-    throw errorAbout("material", "needs an actor and a renderer");
-  }
-  auto* mapper = vtkOpenGLPolyDataMapper::SafeDownCast(actor->GetMapper());
-  if (!mapper)
-  {
-    throw errorAbout("material", "the actor's mapper is not an OpenGL polydata mapper");
-  }
-  impl_->detach();
-  impl_->actor = actor;
-  impl_->renderer = renderer;
-  impl_->mapper = mapper;
   Impl* impl = impl_.get();
-  impl_->updateShaderTag =
-      mapper->AddObserver(vtkCommand::UpdateShaderEvent, impl, &Impl::onUpdateShader);
-  impl_->mapperEndTag = mapper->AddObserver(vtkCommand::EndEvent, impl, &Impl::onMapperEnd);
-  if (vtkPolyData* poly = mapper->GetInput())
-  {
-    if (poly->GetNumberOfPoints() > 0)
-    {
-      impl_->onMapperEnd(nullptr, 0, nullptr);
-    }
-  }
-  actor->Modified();
+  impl->installed.reset();
+  impl->hook.attach(
+      actor, renderer, [impl](vtkPolyData* poly) { impl->onMesh(poly); },
+      [impl](vtkShaderProgram* program) { impl->onShader(program); });
 }
 
 void LitModelMaterial::detach()
 {
-  impl_->detach();
+  impl_->hook.detach();
+  impl_->installed.reset();
 }
 
 void LitModelMaterial::setSettings(const LitModelSettings& settings)
@@ -361,10 +252,10 @@ void LitModelMaterial::setSettings(const LitModelSettings& settings)
   {
     impl_->updateVariant();
   }
-  if (impl_->actor)
+  if (vtkActor* actor = impl_->hook.actor())
   {
     // Lights and maps live outside VTK's objects; this restarts progressive accumulation.
-    impl_->actor->Modified();
+    actor->Modified();
   }
 }
 
