@@ -165,21 +165,14 @@ void applyModelOptions(const Arguments& a, RenderSettings& settings)
   {
     throw usageError("--light", "model " + name + " is not lit by lights");
   }
-  if (applySurfaceModelOptions(a, settings))
-  {
-    if (a.has("--sample-material"))
-    {
-      throw usageError("--sample-material", "only applies to " + litModelNames());
-    }
-    return;
-  }
   LitModel model;
-  if (!litModelFromName(name, model))
+  const bool lit = litModelFromName(name, model);
+  if (!lit && a.has("--sample-material"))
   {
-    if (a.has("--sample-material"))
-    {
-      throw usageError("--sample-material", "only applies to " + litModelNames());
-    }
+    throw usageError("--sample-material", "only applies to " + litModelNames());
+  }
+  if (applySurfaceModelOptions(a, settings) || !lit)
+  {
     return;
   }
   settings.installMaterial = litInstaller(model, a, settings);
