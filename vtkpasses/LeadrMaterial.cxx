@@ -322,6 +322,15 @@ void SurfaceShaderMaterial::apply(vtkActor* actor, vtkRenderer* renderer)
   {
     throw errorAbout("material", "the actor's mapper is not an OpenGL polydata mapper");
   }
+  if (vtkPolyData* poly = mapper->GetInput())
+  {
+    if (poly->GetNumberOfPoints() > 0 &&
+        (!hasArray(poly, "Normals", 3) || !hasArray(poly, "Tangents", 3) ||
+         !hasArray(poly, "TCoords", 2)))
+    {
+      throw errorAbout("mesh", impl_->name + " needs normals, tangents and texture coordinates");
+    }
+  }
   impl_->detach();
   impl_->actor = actor;
   impl_->renderer = renderer;

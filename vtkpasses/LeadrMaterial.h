@@ -3,8 +3,8 @@
 // core/microstructure/microstructure.h) for any vtkActor drawn by a vtkOpenGLPolyDataMapper.
 // Like the anisotropic material, they inject GLSL through shader replacements and set their
 // values as uniforms each time the mapper draws. Both need the mesh's "Normals", "Tangents" and
-// "TCoords" point arrays (the built-in meshes have them); without them the actor is drawn with
-// VTK's own shading and a warning.
+// "TCoords" point arrays (the built-in meshes have them): apply() refuses a mesh without them,
+// and a mesh that loses them later is drawn with VTK's own shading and a warning.
 #include "OffscreenRenderer.h"
 #include "leadr/leadr.h"
 #include "lights/light.h"
@@ -36,7 +36,7 @@ public:
   SurfaceShaderMaterial& operator=(const SurfaceShaderMaterial&) = delete;
 
   // Gives the material to ACTOR, drawn by RENDERER. aniso::Error "material: reason" when the
-  // actor has no OpenGL polydata mapper.
+  // actor has no OpenGL polydata mapper, "mesh: reason" when its input lacks the arrays.
   void apply(vtkActor* actor, vtkRenderer* renderer);
   void detach();
 
