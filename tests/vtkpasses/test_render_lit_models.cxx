@@ -25,7 +25,9 @@
 #include <cmath>
 #include <cstdio>
 #include <gtest/gtest.h>
+#include <iterator>
 #include <memory>
+#include <string>
 #include <vector>
 #include <vtkPolyData.h>
 
@@ -255,6 +257,30 @@ TEST(RenderLitModels, ExtremeParametersStayFinite)
     EXPECT_EQ(nonFiniteValues(result.linear), 0) << litModelName(model);
     EXPECT_EQ(nonFiniteValues(result.display), 0) << litModelName(model);
     EXPECT_GT(result.coveredPixels, kSize * kSize / 2) << litModelName(model);
+  }
+}
+
+// The compiled variant: exactly one model define, the light array size, and a define per mesh
+// array present (GL-free).
+TEST(RenderLitModels, VariantDefinesFollowTheVariant)
+{
+  const char* const modelDefines[] = {"LIT_MODEL_ASHIKHMIN_SHIRLEY", "LIT_MODEL_BANKS",
+                                      "LIT_MODEL_BLINN_PHONG", "LIT_MODEL_WARD",
+                                      "LIT_MODEL_HEIDRICH_SEIDEL"};
+  for (std::size_t i = 0; i < std::size(kModels); ++i)
+  {
+    const std::string d = litVariantDefines({kModels[i], true, false, true});
+    for (std::size_t j = 0; j < std::size(kModels); ++j)
+    {
+      EXPECT_EQ(d.find(std::string("#define ") + modelDefines[j] + "\n") != std::string::npos,
+                i == j)
+          << d;
+    }
+    EXPECT_NE(d.find("#define LIT_MAX_LIGHTS " + std::to_string(LitModelMaterial::kMaxLights)),
+              std::string::npos);
+    EXPECT_NE(d.find("#define LIT_HAVE_NORMALS\n"), std::string::npos);
+    EXPECT_EQ(d.find("LIT_HAVE_TANGENTS"), std::string::npos);
+    EXPECT_NE(d.find("#define LIT_HAVE_TCOORDS\n"), std::string::npos);
   }
 }
 
