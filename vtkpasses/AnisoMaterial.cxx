@@ -22,6 +22,7 @@
 #include <vtkDataObject.h>
 #include <vtkInformation.h>
 #include <vtkInformationDoubleVectorKey.h>
+#include <vtkInformationIntegerKey.h>
 #include <vtkMatrix4x4.h>
 #include <vtkOpenGLPolyDataMapper.h>
 #include <vtkOpenGLRenderWindow.h>
@@ -385,6 +386,10 @@ public:
     }
     const float frameShift[2] = {static_cast<float>(shift[0]), static_cast<float>(shift[1])};
     program->SetUniform2f("anisoFrameShift", frameShift);
+    const int frameIndex = info && info->Has(vtkAnisoAccumulationPass::FRAME_INDEX())
+                               ? info->Get(vtkAnisoAccumulationPass::FRAME_INDEX())
+                               : 0;
+    program->SetUniformf("anisoLog2FrameCount", static_cast<float>(std::log2(frameIndex + 1.0)));
 
     // The environment: cube with seamless filtering across faces (VTK enables it only for
     // its own image-based lighting).

@@ -13,6 +13,7 @@
 #include <vtkDataObject.h>
 #include <vtkInformation.h>
 #include <vtkInformationDoubleVectorKey.h>
+#include <vtkInformationIntegerKey.h>
 #include <vtkMapper.h>
 #include <vtkObjectFactory.h>
 #include <vtkOpenGLFramebufferObject.h>
@@ -32,6 +33,7 @@
 vtkStandardNewMacro(vtkAnisoAccumulationPass);
 vtkCxxSetObjectMacro(vtkAnisoAccumulationPass, DelegatePass, vtkRenderPass);
 vtkInformationKeyRestrictedMacro(vtkAnisoAccumulationPass, FRAME_SHIFT, DoubleVector, 2);
+vtkInformationKeyMacro(vtkAnisoAccumulationPass, FRAME_INDEX, Integer);
 
 namespace
 {
@@ -299,6 +301,7 @@ void vtkAnisoAccumulationPass::RenderFrame(const vtkRenderState* s, vtkOpenGLRen
   const glm::dvec2 shift = aniso::frameShift(static_cast<uint32_t>(frame));
   const double shiftValues[2] = {shift.x, shift.y};
   renderer->GetInformation()->Set(FRAME_SHIFT(), shiftValues, 2);
+  renderer->GetInformation()->Set(FRAME_INDEX(), frame);
 
   ostate->PushFramebufferBindings();
   this->FrameBuffer->Bind();
@@ -330,6 +333,7 @@ void vtkAnisoAccumulationPass::RenderFrame(const vtkRenderState* s, vtkOpenGLRen
   ostate->PopFramebufferBindings();
 
   renderer->GetInformation()->Remove(FRAME_SHIFT());
+  renderer->GetInformation()->Remove(FRAME_INDEX());
   camera->SetWindowCenter(center[0], center[1]);
 }
 

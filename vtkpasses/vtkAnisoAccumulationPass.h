@@ -24,6 +24,7 @@
 #include <vtkWeakPointer.h>
 
 class vtkInformationDoubleVectorKey;
+class vtkInformationIntegerKey;
 class vtkOpenGLFramebufferObject;
 class vtkOpenGLQuadHelper;
 class vtkOpenGLRenderWindow;
@@ -52,6 +53,9 @@ public:
   // Shift of the sample set for the frame being drawn (2 doubles), set on the renderer's
   // information during the delegate's render; absent = (0, 0).
   static vtkInformationDoubleVectorKey* FRAME_SHIFT();
+  // Index k of that frame (0 for the first after a reset), set alongside FRAME_SHIFT: filtered
+  // importance sampling blurs less as the mean gathers more samples.
+  static vtkInformationIntegerKey* FRAME_INDEX();
 
   void SetDisplaySettings(const aniso::DisplaySettings& settings);
   const aniso::DisplaySettings& GetDisplaySettings() const { return this->Display; }

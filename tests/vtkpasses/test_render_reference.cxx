@@ -6,7 +6,8 @@
 // frame n = p, t = (-y, x, 0)/|.| (the parallels, as the built-in sphere's UV tangents).
 // Metric: relative L2 over the compared pixels, sqrt(sum |gpu - ref|^2 / sum |ref|^2) over RGB.
 // `split-sum` is rendered the same way and its bias against the reference is measured and
-// printed (it is an approximation: no bound). No output may hold NaN or Inf.
+// printed (it is an approximation: no bound). Filtered importance sampling must converge too:
+// its blur narrows as progressive frames accumulate samples. No output may hold NaN or Inf.
 #include "BuiltinMeshes.h"
 #include "OffscreenRenderer.h"
 #include "env/environment.h"
@@ -200,12 +201,15 @@ TEST_P(RenderReference, ExactConvergesAndSplitSumBiasIsMeasured)
   const double lutError = relativeL2(measure(lut, "exact, LUT").linear, pixels);
   EXPECT_LT(lutError, c.bound);
 
-  // Measured, not bounded: the split sum's bias and that of filtered importance sampling.
+  // Measured, not bounded: the split sum's bias. Filtered importance sampling is bounded like
+  // `exact` (measured: 0.011, 0.0023, 0.0017; with the blur of one frame kept for all 64 it
+  // was 0.095, 0.020, 0.0037).
   const RenderResult splitSum =
       measure(sphereSettings(c.lobe, SpecularMethod::SplitSum, samples, frames), "split-sum");
   RenderSettings filtered = exactSettings;
   filtered.material.filtered = true;
   const RenderResult filteredResult = measure(filtered, "exact, filtered");
+  EXPECT_LT(relativeL2(filteredResult.linear, pixels), c.bound);
 
   std::printf("n_u %g, n_v %g, %zu pixels, %d x %d samples, relative L2 (mean bias):\n"
               "  exact %.4f (%+.4f) [bound %.3f; 4 frames: %.4f]; exact with LUT %.4f\n"

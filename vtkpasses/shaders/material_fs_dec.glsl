@@ -17,6 +17,7 @@ uniform vec3 anisoF0;                // Schlick reflectance at normal incidence,
 uniform vec3 anisoAlbedo;            // Lambert albedo, linear RGB
 uniform int anisoSampleCount;        // N, importance samples per fragment and frame
 uniform vec2 anisoFrameShift;        // Cranley-Patterson shift of this progressive frame
+uniform float anisoLog2FrameCount;   // log2(k + 1) for progressive frame k
 uniform mat3 anisoWorldToEnvironment; // undoes the environment rotation about Z
 uniform samplerCube anisoEnvironment;
 uniform float anisoLog2TexelSolidAngle; // log2(4 pi / (6 size^2)) of mip level 0
@@ -165,10 +166,12 @@ vec3 anisoEnvironmentRadiance(vec3 directionWorld, float lod)
 // ellipse whose short side, sqrt(Omega_s / r) with r = sqrt((n_max + 1) / (n_min + 1)) the
 // ratio of the lobe's widths, is the extent a texel must not exceed, hence the
 // anisoLodAnisotropy = 0.5 log2 r term (an isotropic footprint blurs the sharp axis).
+// Progressive frame k counts the N (k + 1) samples the mean then holds, so the blur (a bias)
+// fades as the view converges instead of staying at the first frame's.
 float anisoSampleLod(float log2PdfLight, int count)
 {
 #ifdef ANISO_FILTERED
-  float log2SampleSolidAngle = -log2PdfLight - log2(float(count));
+  float log2SampleSolidAngle = -log2PdfLight - log2(float(count)) - anisoLog2FrameCount;
   float lod = 0.5 * (log2SampleSolidAngle - anisoLog2TexelSolidAngle) - anisoLodAnisotropy;
   return clamp(lod + anisoLodBias, 0.0, anisoMaxLod);
 #else
