@@ -14,6 +14,7 @@
 // Finiteness: each model over a map holding the extremes of its parameter ranges, under
 // grazing, overhead and very close point lights, must give no NaN or Inf.
 #include "BuiltinMeshes.h"
+#include "EnvironmentLighting.h"
 #include "LitModelMaterial.h"
 #include "OffscreenRenderer.h"
 #include "env/environment.h"
@@ -209,6 +210,39 @@ TEST(RenderLitModels, TexturedMaterialMatchesCpu)
     lit.maps = maps;
     expectMatchesCpu(lit, std::string(litModelName(model)) + "_textured");
   }
+}
+
+// A material applied with one model and lights, then detached, applied again and given another
+// model, other lights and other maps, renders the new settings (the variant is reinstalled, the
+// light uniforms and textures follow).
+TEST(RenderLitModels, SettingsChangedAfterApplyAreRendered)
+{
+  ANISO_REQUIRE_DISPLAY();
+  LitModelSettings first;
+  first.model = LitModel::Banks;
+  first.lights = {parseLight("dir:1,-1,1:2")};
+  LitModelSettings second;
+  second.model = LitModel::Ward;
+  second.lights = testLights();
+  second.maps = std::make_shared<const SvMaps>(variedMaps());
+  RenderSettings s = sphereSettings(first);
+  std::shared_ptr<LitModelMaterial> material;
+  s.installMaterial = [&](vtkActor* actor, vtkRenderer* renderer,
+                          const std::shared_ptr<EnvironmentLighting>&) -> std::shared_ptr<void>
+  {
+    material = std::make_shared<LitModelMaterial>(first);
+    material->apply(actor, renderer);
+    material->detach();
+    material->apply(actor, renderer);
+    material->setSettings(second);
+    return material;
+  };
+  const RenderResult result = renderOffscreen(s);
+  ASSERT_TRUE(material);
+  EXPECT_EQ(material->settings().model, LitModel::Ward);
+  const Comparison c = compare(result.linear, second);
+  std::printf("%-40s relative L2 %.2e over %d pixels\n", "ward after a change", c.error, c.pixels);
+  EXPECT_LT(c.error, kBound);
 }
 
 TEST(RenderLitModels, ExtremeParametersStayFinite)
