@@ -30,6 +30,7 @@
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QMimeData>
+#include <QResizeEvent>
 #include <QScreen>
 #include <QSettings>
 #include <QSpinBox>
@@ -40,6 +41,7 @@
 #include <QUrl>
 #include <QVTKOpenGLNativeWidget.h>
 #include <algorithm>
+#include <cmath>
 #include <vtkGenericOpenGLRenderWindow.h>
 #include <vtkInteractorStyleTrackballCamera.h>
 #include <vtkRenderWindowInteractor.h>
@@ -110,6 +112,7 @@ MainWindow::MainWindow(QWidget* parent)
   connect(view_, &SceneView::noteAdded, this,
           [this](const QString& note) { statusBar()->showMessage(note, 8000); });
   connect(view_, &SceneView::frameRendered, this, &MainWindow::showSamples);
+  connect(view_, &SceneView::interactionChanged, this, &MainWindow::setInteractiveResolution);
   connect(view_, &SceneView::lightingBusyChanged, this,
           [this](bool busy)
           {
@@ -500,6 +503,24 @@ void MainWindow::rebuildRecentMenu()
         ->setToolTip(path);
   }
   recentMenu_->setEnabled(!files.isEmpty());
+}
+
+void MainWindow::setInteractiveResolution(bool interacting)
+{
+  // While things move, frames at half the resolution (a quarter of the pixels, scaled up by the
+  // widget): on a CPU rasteriser most of a frame's cost is per pixel.
+  const double before = vtkWidget_->effectiveDevicePixelRatio();
+  vtkWidget_->setCustomDevicePixelRatio(interacting ? 0.5 * vtkWidget_->devicePixelRatioF() : 0.0);
+  // The widget sizes its render window by the ratio on a resize only.
+  QResizeEvent resize(vtkWidget_->size(), vtkWidget_->size());
+  QCoreApplication::sendEvent(vtkWidget_, &resize);
+  const double ratio = vtkWidget_->effectiveDevicePixelRatio() / before;
+  // A drag in progress continues from where the pointer is in the new pixel units, so the
+  // camera does not jump.
+  vtkRenderWindowInteractor* interactor = renderWindow_->GetInteractor();
+  const int* p = interactor->GetEventPosition();
+  interactor->SetEventPosition(static_cast<int>(std::lround(p[0] * ratio)),
+                               static_cast<int>(std::lround(p[1] * ratio)));
 }
 
 void MainWindow::showSamples(int samples, int target)

@@ -85,6 +85,7 @@ private:
   void addRecent(const QString& path);
   void rebuildRecentMenu();
   void showSamples(int samples, int target);
+  void setInteractiveResolution(bool interacting);
   void chooseAndExportScreenshot();
 
   SceneModel model_;

@@ -606,6 +606,7 @@ void SceneView::beginInteraction()
   if (!interacting_)
   {
     interacting_ = true;
+    emit interactionChanged(true);
     try
     {
       applyMaterial();
@@ -620,6 +621,7 @@ void SceneView::beginInteraction()
 void SceneView::settle()
 {
   interacting_ = false;
+  emit interactionChanged(false);
   if (cameraMoved_)
   {
     // The camera the user left is part of the scene (sessions save it).

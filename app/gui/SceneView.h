@@ -1,7 +1,8 @@
 #pragma once
 // Draws the scene of a SceneModel in a VTK render window with the anisotropic material, on
 // demand only: a change of the model or the camera asks for one frame; while things move
-// (a drag, a camera interaction) frames are cheap (one sample per pixel); once still for a
+// (a drag, a camera interaction) frames are cheap (one sample per pixel; the window draws them
+// at reduced resolution, see interactionChanged); once still for a
 // moment, frames accumulate (progressive refinement) until the quality's sample count is
 // reached, then nothing is drawn until something changes. Lookup tables come from the
 // LutScheduler's bakes, so a new n_u, n_v never bakes on the UI thread: until its tables are
@@ -82,6 +83,8 @@ signals:
   void errorOccurred(const QString& message);
   void noteAdded(const QString& note);
   void lightingBusyChanged(bool busy);
+  // Something started moving (cheap frames from now on) or settled (refinement).
+  void interactionChanged(bool interacting);
 
 private:
   void modelChanged(const QString& key);
