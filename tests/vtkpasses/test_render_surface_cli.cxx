@@ -1,6 +1,7 @@
 // `aniso render --model leadr|microstructure` end to end (runs the built executable):
 //  - their options are refused with the wrong model, and LEADR takes one relief, each with one
-//    line "aniso: SUBJECT: reason" and exit code 2;
+//    line "aniso: SUBJECT: reason" and exit code 2; a mesh without texture coordinates is
+//    refused by both models (exit code 1, "aniso: mesh: ...") and nothing is written;
 //  - LEADR reads --height-map: on a flat map (no slope variance) plain normal mapping and LEADR
 //    are the same model and render the same image, on a bumpy one they differ;
 //  - the microstructure options reach the shader: the silk weave (crimson and gold threads)
@@ -11,6 +12,8 @@
 #include "render_test_helpers.h"
 
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 #include <gtest/gtest.h>
 #include <string>
 #include <vector>
@@ -75,6 +78,24 @@ TEST_F(SurfaceCli, OptionsBelongToTheirModel)
       run({"render", "--builtin", "plate", "--model", "leadr", "--height-map",
            path("h.exr").string(), "--normal-map", path("n.exr").string(), "-o", out}),
       "--normal-map");
+}
+
+TEST_F(SurfaceCli, MeshesWithoutTextureCoordinatesAreRefused)
+{
+  ANISO_REQUIRE_DISPLAY();
+  {
+    std::ofstream off(path("tetra.off"));
+    off << "OFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n";
+  }
+  for (const char* model : {"leadr", "microstructure"})
+  {
+    const std::string out = path(std::string(model) + ".png").string();
+    const Outcome r = run({"render", path("tetra.off").string(), "--model", model, "--size", "16",
+                           "--frames", "1", "-o", out});
+    EXPECT_EQ(r.exitCode, 1) << r.err;
+    EXPECT_EQ(r.err.rfind("aniso: mesh:", 0), 0u) << r.err;
+    EXPECT_FALSE(std::filesystem::exists(out)) << model;
+  }
 }
 
 TEST_F(SurfaceCli, LeadrReadsTheHeightMap)
