@@ -5,6 +5,7 @@
 // n = p, t = (-y, x, 0)/|.| (the parallels, as the built-in sphere's UV tangents). Metric: relative
 // L2 over the compared pixels, sqrt(sum |gpu - ref|^2 / sum |ref|^2) over RGB.
 #include "BuiltinMeshes.h"
+#include "MaterialShaderSource.h"
 #include "OffscreenRenderer.h"
 #include "env/environment.h"
 #include "env/sun_sky.h"
@@ -17,6 +18,7 @@
 #include <functional>
 #include <gtest/gtest.h>
 #include <memory>
+#include <string>
 #include <vector>
 #include <vtkPolyData.h>
 
@@ -148,6 +150,46 @@ double measure(const char* label, const RenderSettings& settings,
   const double error = renderError(settings, pixels, label);
   std::printf("  %-40s relative L2 %.4f\n", label, error);
   return error;
+}
+
+// GL-free: environment MIS is a shader variant of the exact method only (split-sum has no
+// per-sample weights to combine), and with sampling off none of its code is compiled.
+TEST(SamplingVariant, MisIsAnExactVariantCompiledOnlyWhenOn)
+{
+  MaterialSettings s;
+  s.method = SpecularMethod::Exact;
+  s.environmentSampling = EnvironmentSampling::Mis;
+  MaterialVariant v = materialVariant(s, true, true, true);
+  EXPECT_TRUE(v.environmentMis);
+  EXPECT_NE(composeMaterialShaders(v).fragmentDeclarations.find("#define ANISO_ENVIRONMENT_MIS"),
+            std::string::npos);
+  s.method = SpecularMethod::SplitSum;
+  EXPECT_FALSE(materialVariant(s, true, true, true).environmentMis);
+  s.method = SpecularMethod::Exact;
+  s.environmentSampling = EnvironmentSampling::Off;
+  v = materialVariant(s, true, true, true);
+  EXPECT_FALSE(v.environmentMis);
+  EXPECT_EQ(composeMaterialShaders(v).fragmentDeclarations.find("#define ANISO_ENVIRONMENT_MIS"),
+            std::string::npos);
+}
+
+// GL-free: the lobe share of MIS follows the CPU measurements (docs/BENCHMARKS.md): an equal
+// share for broad lobes, most samples on the lobe for sharp ones, never 0 or 1 (each technique
+// must keep a positive density), and never falling as the lobe sharpens.
+TEST(SamplingVariant, LobeShareFollowsRoughness)
+{
+  EXPECT_DOUBLE_EQ(misLobeFraction({10.0, 10.0}), 0.5);
+  EXPECT_GE(misLobeFraction({20000.0, 70.0}), 0.9);
+  EXPECT_DOUBLE_EQ(misLobeFraction({1e6, 1e6}), 15.0 / 16.0);
+  double previous = 0.0;
+  for (double n = 0.0; n <= 1e6; n = n * 2.0 + 1.0)
+  {
+    const double c = misLobeFraction({n, n / 4.0});
+    EXPECT_GE(c, previous) << n;
+    EXPECT_GE(c, 0.5);
+    EXPECT_LE(c, 15.0 / 16.0);
+    previous = c;
+  }
 }
 
 // A rough lobe next to a sun of 1e5: lobe samples almost never hit the sun (one in ~30,000 for
