@@ -1,6 +1,6 @@
 // The application window with its VTK view (needs an X server: run under Xvfb, serially).
-// Checks: a corrupt or missing mesh, image or environment is reported and leaves the scene as
-// it was; an idle window stops drawing once the view reaches its sample count and starts again
+// Checks: a corrupt or missing mesh, image, environment or session is reported and leaves the scene
+// as it was; an idle window stops drawing once the view reaches its sample count and starts again
 // on a change; screenshots are written in each format with the requested size and alpha
 // (sizes from the widget, alpha 0 on the background and 1 on the sphere's centre, which the
 // framed sphere covers); a session's camera reaches the view; the scripted command line writes
@@ -73,7 +73,8 @@ private slots:
     const QString mesh = dir.filePath("broken.stl");
     const QString image = dir.filePath("broken.png");
     const QString hdr = dir.filePath("broken.hdr");
-    for (const QString& path : {mesh, image, hdr})
+    const QString session = dir.filePath("broken.json");
+    for (const QString& path : {mesh, image, hdr, session})
     {
       writeGarbage(path);
     }
@@ -81,11 +82,13 @@ private slots:
     QVERIFY(!window.openMesh(dir.filePath("missing.obj")));
     QVERIFY(!window.openAny(image));
     QVERIFY(!window.openEnvironment(hdr));
-    QCOMPARE(errors.count(), 4);
+    QVERIFY(!window.openAny(session));
+    QCOMPARE(errors.count(), 5);
     QVERIFY(errors.at(0).at(0).toString().startsWith(mesh));
     QVERIFY(errors.at(1).at(0).toString().contains("missing.obj"));
     QVERIFY(errors.at(2).at(0).toString().startsWith(image));
     QVERIFY(errors.at(3).at(0).toString().startsWith(hdr));
+    QVERIFY(errors.at(4).at(0).toString().startsWith(session));
     QVERIFY(window.model()->values() == before);
     QCOMPARE(window.editor()->undoStack()->count(), 0);
   }

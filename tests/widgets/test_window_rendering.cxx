@@ -2,7 +2,8 @@
 // Checks: a new environment or cube size is baked off the UI thread (the previous lighting
 // stays until the latest request is in); new exponents reach the material only with tables
 // already baked off the UI thread; a renderer error reaches the user once; frames drawn while
-// things move are at half resolution and show the same picture.
+// things move are at half resolution and show the same picture; a camera drag across the
+// switch to half resolution turns at the trackball's rate.
 #include "EnvironmentLighting.h"
 #include "LutScheduler.h"
 #include "MainWindow.h"
@@ -14,6 +15,7 @@
 #include <QDateTime>
 #include <QElapsedTimer>
 #include <QImage>
+#include <QMouseEvent>
 #include <QSignalSpy>
 #include <QStandardPaths>
 #include <QSurfaceFormat>
@@ -23,7 +25,9 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <glm/geometric.hpp>
 #include <vtkCallbackCommand.h>
+#include <vtkCamera.h>
 #include <vtkCommand.h>
 #include <vtkNew.h>
 #include <vtkOpenGLRenderer.h>
@@ -205,6 +209,58 @@ private slots:
     QCOMPARE(renderWindow->GetSize()[0], fullWidth);
     QCOMPARE(renderWindow->GetSize()[1], fullHeight);
     QTRY_VERIFY_WITH_TIMEOUT(view->converged(), 60000);
+  }
+
+  // A camera drag rotates at the trackball's rate (azimuth = 200 degrees per view width:
+  // vtkInteractorStyleTrackballCamera's motion factor 10 times 20 / width) although the view
+  // switches to half resolution as the drag starts: the pointer's position carries over into
+  // the new pixel units, so the camera does not jump.
+  void dragRotatesWithoutAJump()
+  {
+    aniso::MainWindow window;
+    window.setErrorDialogs(false);
+    cheapScene(window, 1);
+    window.resize(1400, 900);
+    window.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&window));
+    aniso::SceneView* view = window.view();
+    QTRY_VERIFY_WITH_TIMEOUT(view->converged(), 60000);
+    vtkCamera* camera = view->renderer()->GetActiveCamera();
+    const glm::dvec3 focal(camera->GetFocalPoint()[0], camera->GetFocalPoint()[1],
+                           camera->GetFocalPoint()[2]);
+    const glm::dvec3 up(camera->GetViewUp()[0], camera->GetViewUp()[1], camera->GetViewUp()[2]);
+    const auto direction = [&]
+    {
+      const glm::dvec3 p(camera->GetPosition()[0], camera->GetPosition()[1],
+                         camera->GetPosition()[2]);
+      const glm::dvec3 d = p - focal;
+      return glm::normalize(d - glm::dot(d, up) * up); // in the plane the azimuth turns
+    };
+    const glm::dvec3 before = direction();
+
+    QWidget* widget = window.vtkWidget();
+    const QPoint start(widget->width() / 2, widget->height() / 2);
+    const int step = 10;
+    const int steps = 4;
+    QMouseEvent press(QEvent::MouseButtonPress, start, Qt::LeftButton, Qt::LeftButton,
+                      Qt::NoModifier);
+    QApplication::sendEvent(widget, &press);
+    for (int i = 1; i <= steps; ++i)
+    {
+      QMouseEvent move(QEvent::MouseMove, start + QPoint(step * i, 0), Qt::NoButton, Qt::LeftButton,
+                       Qt::NoModifier);
+      QApplication::sendEvent(widget, &move);
+    }
+    QVERIFY(view->interacting());
+    QMouseEvent release(QEvent::MouseButtonRelease, start + QPoint(step * steps, 0), Qt::LeftButton,
+                        Qt::NoButton, Qt::NoModifier);
+    QApplication::sendEvent(widget, &release);
+
+    const double turned =
+        std::acos(std::clamp(glm::dot(before, direction()), -1.0, 1.0)) * 180.0 / M_PI;
+    const double expected = 200.0 * step * steps / widget->width();
+    QVERIFY2(std::abs(turned - expected) < 0.1 * expected,
+             qPrintable(QString("turned %1 degrees, expected %2").arg(turned).arg(expected)));
   }
 
   // What VTK or OpenGL reports while the view draws (a shader that does not compile, a GL
