@@ -2,6 +2,7 @@
 
 #include "EnvironmentLighting.h"
 #include "RendererMatrices.h"
+#include "ShaderHook.h"
 #include "aniso_shaders.h"
 #include "error.h"
 
@@ -11,9 +12,7 @@
 #include <glm/gtc/type_ptr.hpp>
 #include <glm/matrix.hpp>
 #include <vtkActor.h>
-#include <vtkCommand.h>
 #include <vtkDataArray.h>
-#include <vtkDataObject.h>
 #include <vtkOpenGLPolyDataMapper.h>
 #include <vtkOpenGLRenderWindow.h>
 #include <vtkOpenGLState.h>
@@ -21,7 +20,6 @@
 #include <vtkPolyData.h>
 #include <vtkRenderer.h>
 #include <vtkShaderProgram.h>
-#include <vtkShaderProperty.h>
 #include <vtkSmartPointer.h>
 #include <vtkTextureObject.h>
 #include <vtkWeakPointer.h>
@@ -156,58 +154,17 @@ class SurfaceShaderMaterial::Impl
 {
 public:
   std::string name;
-  vtkWeakPointer<vtkActor> actor;
-  vtkWeakPointer<vtkRenderer> renderer;
-  vtkWeakPointer<vtkOpenGLPolyDataMapper> mapper;
-  unsigned long updateShaderTag = 0;
-  unsigned long mapperEndTag = 0;
+  ShaderHook hook;
   bool installed = false;
   std::vector<float> lightVectors;     // 4 per light
   std::vector<float> lightIntensities; // 3 per light
   int lightCount = 0;
   SurfaceShaderMaterial* owner = nullptr;
 
-  void clearReplacements()
+  // The code is the same for every mesh that has the arrays: install it once.
+  void onMesh(vtkPolyData* poly)
   {
-    if (!actor)
-    {
-      return;
-    }
-    vtkShaderProperty* sp = actor->GetShaderProperty();
-    sp->ClearVertexShaderReplacement(kVertexDecTag, true);
-    sp->ClearVertexShaderReplacement(kVertexImplTag, true);
-    sp->ClearFragmentShaderReplacement(kFragmentDecTag, true);
-    sp->ClearFragmentShaderReplacement(kFragmentUniformFlowTag, true);
-    sp->ClearFragmentShaderReplacement(kFragmentImplTag, true);
-  }
-
-  void detach()
-  {
-    if (mapper)
-    {
-      mapper->RemoveObserver(updateShaderTag);
-      mapper->RemoveObserver(mapperEndTag);
-      for (const char* attribute : {"leadrNormalMC", "leadrTangentMC", "leadrTCoordMC"})
-      {
-        mapper->RemoveVertexAttributeMapping(attribute);
-      }
-    }
-    clearReplacements();
-    if (actor)
-    {
-      actor->Modified();
-    }
-    mapper = nullptr;
-    actor = nullptr;
-    renderer = nullptr;
-    installed = false;
-  }
-
-  // The mesh is known at the mapper's EndEvent: install the code once it has the arrays.
-  void onMapperEnd(vtkObject*, unsigned long, void*)
-  {
-    vtkPolyData* poly = mapper ? mapper->GetInput() : nullptr;
-    if (!poly || installed)
+    if (installed || poly->GetNumberOfPoints() == 0)
     {
       return;
     }
@@ -218,49 +175,29 @@ public:
                              << ": the mesh needs Normals, Tangents and TCoords; drawn unshaded");
       return;
     }
-    install();
-  }
-
-  void install()
-  {
     std::string implementation = owner->fragmentImplementation();
     const std::size_t at = implementation.find(kFrameMarker);
     if (at != std::string::npos)
     {
       implementation.replace(at, std::string(kFrameMarker).size(), shaders::kLeadrFsFrame);
     }
-    auto replace = [](const char* tag, const std::string& text)
-    { return std::string(tag) + "\n" + text; };
-    clearReplacements();
-    vtkShaderProperty* sp = actor->GetShaderProperty();
-    sp->AddVertexShaderReplacement(kVertexDecTag, true,
-                                   replace(kVertexDecTag, shaders::kLeadrVsDec), false);
-    sp->AddVertexShaderReplacement(kVertexImplTag, true,
-                                   replace(kVertexImplTag, shaders::kLeadrVsImpl), false);
-    sp->AddFragmentShaderReplacement(kFragmentDecTag, true,
-                                     replace(kFragmentDecTag, std::string(shaders::kLeadrFsLights) +
-                                                                  owner->fragmentDeclarations()),
-                                     false);
-    sp->AddFragmentShaderReplacement(kFragmentUniformFlowTag, true,
-                                     replace(kFragmentUniformFlowTag, shaders::kLeadrFsUniformFlow),
-                                     false);
-    sp->AddFragmentShaderReplacement(kFragmentImplTag, true,
-                                     replace(kFragmentImplTag, implementation), false);
-    const std::pair<const char*, const char*> attributes[] = {
+    ShaderCode code;
+    code.vertex = {{kVertexDecTag, shaders::kLeadrVsDec}, {kVertexImplTag, shaders::kLeadrVsImpl}};
+    code.fragment = {
+        {kFragmentDecTag, std::string(shaders::kLeadrFsLights) + owner->fragmentDeclarations()},
+        {kFragmentUniformFlowTag, shaders::kLeadrFsUniformFlow},
+        {kFragmentImplTag, implementation}};
+    code.attributes = {
         {"leadrNormalMC", "Normals"}, {"leadrTangentMC", "Tangents"}, {"leadrTCoordMC", "TCoords"}};
-    for (const auto& [attribute, array] : attributes)
-    {
-      mapper->MapDataArrayToVertexAttribute(attribute, array,
-                                            vtkDataObject::FIELD_ASSOCIATION_POINTS, -1);
-    }
+    hook.install(code);
     installed = true;
   }
 
-  void onUpdateShader(vtkObject*, unsigned long, void* data)
+  void onShader(vtkShaderProgram* program)
   {
-    auto* program = static_cast<vtkShaderProgram*>(data);
-    if (!program || !installed || !actor || !renderer ||
-        !program->IsUniformUsed("leadrClipToWorld"))
+    vtkActor* actor = hook.actor();
+    vtkRenderer* renderer = hook.renderer();
+    if (!installed || !actor || !renderer || !program->IsUniformUsed("leadrClipToWorld"))
     {
       return;
     }
@@ -269,28 +206,20 @@ public:
     {
       return;
     }
-    try
+    setUniformMatrix(program, "leadrClipToWorld", clipToWorld(renderer));
+    const glm::dmat3 toWorld(toGlm(actor->GetMatrix()));
+    const double det = glm::determinant(toWorld);
+    setUniformMatrix(program, "leadrDirectionToWorld", toWorld);
+    setUniformMatrix(program, "leadrNormalToWorld",
+                     det != 0.0 && std::isfinite(det) ? glm::transpose(glm::inverse(toWorld))
+                                                      : toWorld);
+    program->SetUniformi("leadrLightCount", lightCount);
+    if (lightCount > 0)
     {
-      setUniformMatrix(program, "leadrClipToWorld", clipToWorld(renderer));
-      const glm::dmat3 toWorld(toGlm(actor->GetMatrix()));
-      const double det = glm::determinant(toWorld);
-      setUniformMatrix(program, "leadrDirectionToWorld", toWorld);
-      setUniformMatrix(program, "leadrNormalToWorld",
-                       det != 0.0 && std::isfinite(det) ? glm::transpose(glm::inverse(toWorld))
-                                                        : toWorld);
-      program->SetUniformi("leadrLightCount", lightCount);
-      if (lightCount > 0)
-      {
-        program->SetUniform4fv("leadrLightVector", lightCount, lightVectors.data());
-        program->SetUniform3fv("leadrLightIntensity", lightCount, lightIntensities.data());
-      }
-      owner->setModelUniforms(program, window);
+      program->SetUniform4fv("leadrLightVector", lightCount, lightVectors.data());
+      program->SetUniform3fv("leadrLightIntensity", lightCount, lightIntensities.data());
     }
-    catch (const std::exception& e)
-    {
-      // Exceptions must not unwind through VTK's render loop; the draw goes on unshaded.
-      vtkGenericWarningMacro(<< name << ": " << e.what());
-    }
+    owner->setModelUniforms(program, window);
   }
 };
 
@@ -308,21 +237,13 @@ SurfaceShaderMaterial::SurfaceShaderMaterial(std::shared_ptr<EnvironmentLighting
 
 SurfaceShaderMaterial::~SurfaceShaderMaterial()
 {
-  impl_->detach();
+  impl_->hook.detach();
 }
 
 void SurfaceShaderMaterial::apply(vtkActor* actor, vtkRenderer* renderer)
 {
-  if (!actor || !renderer)
-  {
-    throw errorAbout("material", "needs an actor and a renderer");
-  }
-  auto* mapper = vtkOpenGLPolyDataMapper::SafeDownCast(actor->GetMapper());
-  if (!mapper)
-  {
-    throw errorAbout("material", "the actor's mapper is not an OpenGL polydata mapper");
-  }
-  if (vtkPolyData* poly = mapper->GetInput())
+  auto* mapper = actor ? vtkOpenGLPolyDataMapper::SafeDownCast(actor->GetMapper()) : nullptr;
+  if (vtkPolyData* poly = mapper ? mapper->GetInput() : nullptr)
   {
     if (poly->GetNumberOfPoints() > 0 &&
         (!hasArray(poly, "Normals", 3) || !hasArray(poly, "Tangents", 3) ||
@@ -331,27 +252,17 @@ void SurfaceShaderMaterial::apply(vtkActor* actor, vtkRenderer* renderer)
       throw errorAbout("mesh", impl_->name + " needs normals, tangents and texture coordinates");
     }
   }
-  impl_->detach();
-  impl_->actor = actor;
-  impl_->renderer = renderer;
-  impl_->mapper = mapper;
+  impl_->installed = false;
   Impl* impl = impl_.get();
-  impl_->updateShaderTag =
-      mapper->AddObserver(vtkCommand::UpdateShaderEvent, impl, &Impl::onUpdateShader);
-  impl_->mapperEndTag = mapper->AddObserver(vtkCommand::EndEvent, impl, &Impl::onMapperEnd);
-  if (vtkPolyData* poly = mapper->GetInput())
-  {
-    if (poly->GetNumberOfPoints() > 0)
-    {
-      impl_->onMapperEnd(nullptr, 0, nullptr);
-    }
-  }
-  actor->Modified();
+  impl_->hook.attach(
+      actor, renderer, [impl](vtkPolyData* poly) { impl->onMesh(poly); },
+      [impl](vtkShaderProgram* program) { impl->onShader(program); });
 }
 
 void SurfaceShaderMaterial::detach()
 {
-  impl_->detach();
+  impl_->hook.detach();
+  impl_->installed = false;
 }
 
 void SurfaceShaderMaterial::setLights(const std::vector<Light>& lights)
@@ -375,14 +286,14 @@ void SurfaceShaderMaterial::setLights(const std::vector<Light>& lights)
 
 vtkRenderer* SurfaceShaderMaterial::renderer() const
 {
-  return impl_->renderer;
+  return impl_->hook.renderer();
 }
 
 void SurfaceShaderMaterial::changed()
 {
-  if (impl_->actor)
+  if (vtkActor* actor = impl_->hook.actor())
   {
-    impl_->actor->Modified();
+    actor->Modified();
   }
 }
 
