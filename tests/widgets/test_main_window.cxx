@@ -2,10 +2,10 @@
 // Checks: a corrupt or missing mesh, image, environment or session is reported and leaves the scene
 // as it was; an idle window stops drawing once the view reaches its sample count and starts again
 // on a change; screenshots are written in each format with the requested size and alpha
-// (sizes from the widget, alpha 0 on the background and 1 on the sphere's centre, which the
-// framed sphere covers); a session's camera reaches the view; the scripted command line writes
-// a screenshot or fails with the file's name; dropped files open by kind; screenshot file
-// names follow the mesh.
+// (sizes from the widget, the PNG as the view shows it, alpha 0 on the background and 1 on the
+// sphere's centre, which the framed sphere covers); a session's camera reaches the view; the
+// scripted command line writes a screenshot or fails with the file's name; dropped files open by
+// kind; screenshot file names follow the mesh.
 #include "LutScheduler.h"
 #include "MainWindow.h"
 #include "SceneView.h"
@@ -16,6 +16,7 @@
 #include <QEventLoop>
 #include <QFile>
 #include <QFileInfo>
+#include <QImage>
 #include <QMimeData>
 #include <QProcess>
 #include <QSignalSpy>
@@ -151,6 +152,26 @@ private slots:
     QCOMPARE(opaque.width, w);
     QCOMPARE(opaque.height, h);
     QCOMPARE(opaque.channels, 3);
+    // As displayed: the PNG's mean grey is the view's (the same scene through the same display
+    // transform; per-pixel noise of one sample differs, the mean hardly).
+    QTRY_VERIFY_WITH_TIMEOUT(window.view()->converged(), 60000);
+    const QImage shown =
+        window.vtkWidget()->grabFramebuffer().convertToFormat(QImage::Format_RGB32);
+    QCOMPARE(shown.width(), w);
+    double shownGrey = 0.0;
+    double pngGrey = 0.0;
+    for (int y = 0; y < h; ++y)
+    {
+      for (int x = 0; x < w; ++x)
+      {
+        shownGrey += qGray(shown.pixel(x, y));
+        pngGrey += qGray(static_cast<int>(std::lround(255.0f * opaque.at(x, y, 0))),
+                         static_cast<int>(std::lround(255.0f * opaque.at(x, y, 1))),
+                         static_cast<int>(std::lround(255.0f * opaque.at(x, y, 2))));
+      }
+    }
+    QVERIFY2(std::abs(shownGrey - pngGrey) / (w * h) < 2.0,
+             qPrintable(QString("%1 %2").arg(shownGrey / (w * h)).arg(pngGrey / (w * h))));
 
     const QString clear = dir.filePath("clear.png");
     window.exportScreenshot(clear, {2, true});
