@@ -1,5 +1,6 @@
 // The aniso executable: dispatches to its subcommands.
 #include "bake_command.h"
+#include "bench_command.h"
 #include "cli.h"
 #include "gui/run_gui.h"
 #include "render_command.h"
@@ -19,6 +20,7 @@ std::string mainHelp()
          "Commands:\n"
          "  bake KIND   bake lookup tables, maps and environment data to files, KIND one of:\n" +
          aniso::cli::bakeKindsSummary(6) + "  render      " + aniso::cli::renderSummary() + "\n" +
+         "  bench       " + aniso::cli::benchSummary() + "\n" +
          "\nOptions:\n"
          "  -h, --help  show this help and exit\n"
          "  --version   print the version and exit\n\n"
@@ -46,6 +48,11 @@ int run(const std::vector<std::string>& args)
   if (command == "bake")
   {
     return aniso::cli::runBake(std::vector<std::string>(args.begin() + 1, args.end()), std::cout);
+  }
+  if (command == "bench")
+  {
+    return aniso::cli::runBenchCommand(std::vector<std::string>(args.begin() + 1, args.end()),
+                                       std::cout);
   }
   if (command == "render")
   {

@@ -12,6 +12,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdlib>
+#include <ctime>
 #include <glm/geometric.hpp>
 #include <set>
 #include <vtkActor.h>
@@ -75,21 +76,11 @@ vtkSmartPointer<vtkTexture> vtkEnvironmentTexture(const Environment& environment
   return texture;
 }
 
-void boundingSphere(vtkPolyData* surface, glm::dvec3& centre, double& radius)
+double processCpuSeconds()
 {
-  double bounds[6];
-  surface->GetBounds(bounds);
-  centre = {0.5 * (bounds[0] + bounds[1]), 0.5 * (bounds[2] + bounds[3]),
-            0.5 * (bounds[4] + bounds[5])};
-  double r2 = 0.0;
-  for (vtkIdType i = 0; i < surface->GetNumberOfPoints(); ++i)
-  {
-    double p[3];
-    surface->GetPoint(i, p);
-    const glm::dvec3 d = glm::dvec3(p[0], p[1], p[2]) - centre;
-    r2 = std::max(r2, glm::dot(d, d));
-  }
-  radius = std::sqrt(r2);
+  timespec t{};
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+  return double(t.tv_sec) + 1e-9 * double(t.tv_nsec);
 }
 } // namespace
 
@@ -117,18 +108,20 @@ public:
     programs.insert(static_cast<vtkObject*>(program));
   }
 
-  std::vector<double> draw(int frames)
+  std::vector<FrameTime> draw(int frames)
   {
-    std::vector<double> seconds;
+    std::vector<FrameTime> seconds;
     seconds.reserve(static_cast<std::size_t>(std::max(frames, 0)));
     const int before = pass->GetAccumulatedFrames();
     for (int frame = 0; frame < frames; ++frame)
     {
+      const double cpuStart = processCpuSeconds();
       const auto start = std::chrono::steady_clock::now();
       window->Render();
       window->WaitForCompletion();
       const auto end = std::chrono::steady_clock::now();
-      seconds.push_back(std::chrono::duration<double>(end - start).count());
+      seconds.push_back(
+          {std::chrono::duration<double>(end - start).count(), processCpuSeconds() - cpuStart});
     }
     if (pass->GetAccumulatedFrames() != before + frames)
     {
@@ -288,13 +281,13 @@ void RenderSession::useVtkPbr(const VtkPbrMaterial& m)
   s.renderer->SetEnvironmentRight(1.0, 0.0, 0.0);
 }
 
-std::vector<double> RenderSession::render(int frames)
+std::vector<FrameTime> RenderSession::render(int frames)
 {
   impl_->pass->Reset();
   return impl_->draw(frames);
 }
 
-std::vector<double> RenderSession::renderMore(int frames)
+std::vector<FrameTime> RenderSession::renderMore(int frames)
 {
   return impl_->draw(frames);
 }

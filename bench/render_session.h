@@ -34,6 +34,14 @@ struct VtkPbrMaterial
   glm::dvec3 baseColor{1.0};
 };
 
+// One frame's cost: wall time, and the CPU time of the whole process meanwhile (the GL driver's
+// threads included: llvmpipe renders on the CPU), which a loaded machine changes less.
+struct FrameTime
+{
+  double wall = 0.0;
+  double cpu = 0.0;
+};
+
 // What the session did, for showing that nothing is redone when nothing changed.
 struct SessionCounters
 {
@@ -68,11 +76,11 @@ public:
   void useVtkPbr(const VtkPbrMaterial& material);
 
   // Starts a new accumulation and draws FRAMES progressive frames (each with its sample-set
-  // shift, no jitter: every frame samples the pixel centres); returns the wall time of each,
-  // GPU work included.
-  std::vector<double> render(int frames);
+  // shift, no jitter: every frame samples the pixel centres); returns the time of each, GPU
+  // work included.
+  std::vector<FrameTime> render(int frames);
   // Draws FRAMES more frames into the same accumulation.
-  std::vector<double> renderMore(int frames);
+  std::vector<FrameTime> renderMore(int frames);
   int accumulatedFrames() const;
   // The accumulated mean: RGBA float, linear radiance, alpha = coverage, row 0 at the top.
   Image read();

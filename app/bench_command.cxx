@@ -1,0 +1,91 @@
+#include "bench_command.h"
+
+#include "bench_run.h"
+#include "cli.h"
+
+#include <filesystem>
+
+namespace aniso::cli
+{
+namespace
+{
+constexpr int kMaxSize = 4096;
+
+Option flag(std::string name, std::string_view help)
+{
+  Option o;
+  o.name = std::move(name);
+  o.spec.type = ParameterType::Text;
+  o.spec.help = help;
+  return o;
+}
+
+Command benchCommand()
+{
+  Command c;
+  c.usage = "aniso bench [--quick] [--out DIR] [--size N]";
+  c.summary =
+      "Render the benchmark scene set (sphere, torus and a flange under the built-in studio and "
+      "the Blender HDRIs, four materials) with every specular method, filtering, half-vector "
+      "source and sample count, and VTK's own PBR anisotropy on the same scenes; time each and "
+      "measure its error against the converged CPU reference integrator. Needs an X display; "
+      "where there is none, run it under xvfb-run.";
+  c.options.push_back(flag("--quick", "the small set (sphere under the studio, 128x128): about "
+                                      "a minute"));
+  c.options.push_back(textOption(
+      "--out", "DIR", "where bench.csv, bench.md, bench.svg and bench.png go", "bench-out"));
+  c.options.push_back(textOption("--size", "N",
+                                 "image side in pixels (default 128 with --quick, "
+                                 "else 512)"));
+  c.options.push_back(
+      textOption("--cache", "DIR", "reference images cache (default $XDG_CACHE_HOME/aniso/bench)"));
+  c.details = "Output: bench.csv (one row per measurement), bench.md (tables, the goals, the "
+              "counters, the quality model), bench.svg and bench.png (error against time), "
+              "quality_model.txt (the fitted table of core/quality).\n"
+              "Examples:\n"
+              "  xvfb-run -a aniso bench --quick --out /tmp/bench\n"
+              "  xvfb-run -a -s \"-screen 0 1280x1024x24\" aniso bench --out docs/bench\n";
+  return c;
+}
+} // namespace
+
+std::string benchSummary()
+{
+  return "time against error of every rendering configuration and of VTK's PBR";
+}
+
+int runBenchCommand(const std::vector<std::string>& args, std::ostream& out)
+{
+  const Command command = benchCommand();
+  const Arguments a = parseArguments(command, args);
+  if (a.helpRequested)
+  {
+    out << helpText(command);
+    return 0;
+  }
+  bench::BenchOptions options;
+  options.quick = a.has("--quick");
+  if (a.has("--size"))
+  {
+    options.size = parseImageSize(a.text("--size"), "--size", kMaxSize).first;
+    if (parseImageSize(a.text("--size"), "--size", kMaxSize).second != options.size)
+    {
+      throw usageError("--size", "the benchmark renders square images: give one number");
+    }
+  }
+  options.outDirectory = a.text("--out");
+  options.cacheDirectory = a.has("--cache") ? a.text("--cache") : std::string();
+  options.commandLine = "aniso bench";
+  for (const std::string& arg : args)
+  {
+    options.commandLine += " " + arg;
+  }
+  const bench::BenchResult result = bench::runBench(options, out);
+  bench::writeBenchOutputs(result, options.outDirectory);
+  out << "\n" << bench::benchMarkdown(result, "bench.svg");
+  out << "\nbench: wrote " << (std::filesystem::path(options.outDirectory) / "bench.csv").string()
+      << ", bench.md, bench.svg, bench.png and quality_model.txt in " << options.outDirectory
+      << " (" << result.rows.size() << " rows, " << result.seconds << " s)\n";
+  return 0;
+}
+} // namespace aniso::cli

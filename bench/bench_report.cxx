@@ -1,0 +1,737 @@
+// What `aniso bench` makes of its rows: the goals, the quality model's fit, and the CSV,
+// Markdown and plot files.
+#include "bench_run.h"
+#include "error.h"
+#include "plot.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <limits>
+#include <map>
+#include <set>
+#include <sstream>
+
+namespace aniso::bench
+{
+namespace
+{
+namespace fs = std::filesystem;
+
+constexpr int kPublishedSamples = 256;
+constexpr double kConvergedError = 0.01;
+constexpr double kConvergenceSeconds = 2.0;
+constexpr double kSpeedupGoal = 10.0;
+constexpr double kVtkCostGoal = 2.0;
+
+std::string lobeText(const AsLobe& lobe)
+{
+  char text[64];
+  std::snprintf(text, sizeof text, "(%g, %g)", lobe.nu, lobe.nv);
+  return text;
+}
+
+std::string number(double value, int digits = 3)
+{
+  if (!std::isfinite(value))
+  {
+    return std::isnan(value) ? "nan" : "inf";
+  }
+  char text[32];
+  std::snprintf(text, sizeof text, "%.*g", digits, value);
+  return text;
+}
+
+std::string milliseconds(double seconds)
+{
+  return number(seconds * 1e3) + " ms";
+}
+
+bool sameLobe(const AsLobe& a, const AsLobe& b)
+{
+  return a.nu == b.nu && a.nv == b.nv;
+}
+
+std::string configText(const BenchRow& r)
+{
+  std::string text = r.method;
+  if (r.method != "vtk-pbr")
+  {
+    text += std::string(r.filtered == "on" ? ", filtered" : ", unfiltered") +
+            (r.halfVectors == "lut" ? ", LUT" : ", shader") + ", N = " + std::to_string(r.samples);
+  }
+  if (r.frames > 1)
+  {
+    text += " x " + std::to_string(r.frames) + " frames";
+  }
+  return text;
+}
+
+// Time to the image a row measures: one frame, or the frames accumulated so far.
+double timeOf(const BenchRow& r)
+{
+  return r.frames > 1 ? r.totalSeconds : r.medianFrameSeconds;
+}
+
+double cpuTimeOf(const BenchRow& r)
+{
+  return r.frames > 1 ? r.totalCpuSeconds : r.medianFrameCpuSeconds;
+}
+
+bool mainScene(const BenchRow& r)
+{
+  return r.mesh == "sphere" && r.environment == "studio";
+}
+
+const BenchRow* find(const std::vector<BenchRow>& rows,
+                     const std::function<bool(const BenchRow&)>& f)
+{
+  for (const BenchRow& r : rows)
+  {
+    if (f(r))
+    {
+      return &r;
+    }
+  }
+  return nullptr;
+}
+
+std::vector<AsLobe> lobesOf(const std::vector<BenchRow>& rows,
+                            const std::function<bool(const BenchRow&)>& keep)
+{
+  std::vector<AsLobe> lobes;
+  for (const BenchRow& r : rows)
+  {
+    if (keep(r) && std::none_of(lobes.begin(), lobes.end(),
+                                [&](const AsLobe& l) { return sameLobe(l, r.lobe); }))
+    {
+      lobes.push_back(r.lobe);
+    }
+  }
+  return lobes;
+}
+
+Goal publishedGoal(const BenchResult& result)
+{
+  Goal goal;
+  goal.name = "The best mode reaches the error of the published method (split sum, LUT, "
+              "unfiltered, 256 samples) in at most 1/10 of its time (" +
+              std::to_string(result.size) + "², sphere, studio)";
+  goal.met = true;
+  std::ostringstream figures;
+  const auto lobes = lobesOf(result.rows, [](const BenchRow& r) { return mainScene(r); });
+  int evaluated = 0;
+  for (const AsLobe& lobe : lobes)
+  {
+    const BenchRow* published = find(result.rows,
+                                     [&](const BenchRow& r)
+                                     {
+                                       return mainScene(r) && r.kind == "sweep" &&
+                                              sameLobe(r.lobe, lobe) && r.method == "split-sum" &&
+                                              r.filtered == "off" && r.halfVectors == "lut" &&
+                                              r.samples == kPublishedSamples;
+                                     });
+    if (!published)
+    {
+      continue;
+    }
+    const BenchRow* best = nullptr;
+    for (const BenchRow& r : result.rows)
+    {
+      if (mainScene(r) && sameLobe(r.lobe, lobe) &&
+          (r.kind == "sweep" || r.kind == "progressive") && r.relativeL2 <= published->relativeL2 &&
+          (!best || timeOf(r) < timeOf(*best)))
+      {
+        best = &r;
+      }
+    }
+    ++evaluated;
+    const double ratio = timeOf(*best) / timeOf(*published);
+    const double cpuRatio = cpuTimeOf(*best) / cpuTimeOf(*published);
+    goal.met = goal.met && ratio <= 1.0 / kSpeedupGoal;
+    figures << lobeText(lobe) << ": published " << number(published->relativeL2) << " in "
+            << milliseconds(timeOf(*published)) << "; best " << configText(*best) << " "
+            << number(best->relativeL2) << " in " << milliseconds(timeOf(*best)) << ": "
+            << number(ratio, 2) << " of the time (CPU time: " << number(cpuRatio, 2) << "). ";
+  }
+  goal.met = goal.met && evaluated > 0;
+  goal.figures = figures.str();
+  return goal;
+}
+
+// The default scene when it was measured, else the sphere under the studio with (1000, 100).
+struct GoalScene
+{
+  std::string kind;
+  std::function<bool(const BenchRow&)> in;
+  std::string label;
+};
+
+GoalScene goalScene(const BenchResult& result)
+{
+  if (find(result.rows, [](const BenchRow& r) { return r.kind == "default"; }))
+  {
+    return {"default", [](const BenchRow& r) { return r.kind.rfind("default", 0) == 0; },
+            "default scene (torus, (1000, 50), studio, 800x600)"};
+  }
+  const AsLobe lobe{1000.0, 100.0};
+  return {"sweep",
+          [lobe](const BenchRow& r)
+          { return mainScene(r) && sameLobe(r.lobe, lobe) && r.kind.rfind("default", 0) != 0; },
+          "sphere, (1000, 100), studio, " + std::to_string(result.size) +
+              "² (the default scene "
+              "was not run)"};
+}
+
+Goal vtkCostGoal(const BenchResult& result)
+{
+  const GoalScene scene = goalScene(result);
+  Goal goal;
+  goal.name = "At the interactive setting (exact, filtered, LUT, 16 samples) a frame costs at "
+              "most 2x VTK's anisotropic PBR: " +
+              scene.label;
+  const std::string vtkKind = scene.kind == "default" ? "default-vtk" : "vtk";
+  const BenchRow* ours = find(result.rows,
+                              [&](const BenchRow& r)
+                              {
+                                return scene.in(r) && r.kind == scene.kind && r.method == "exact" &&
+                                       r.filtered == "on" && r.halfVectors == "lut" &&
+                                       r.samples == 16 && r.frames == 1;
+                              });
+  const BenchRow* vtk =
+      find(result.rows, [&](const BenchRow& r) { return scene.in(r) && r.kind == vtkKind; });
+  if (!ours || !vtk)
+  {
+    goal.figures = "not measured in this run";
+    return goal;
+  }
+  const double ratio = ours->medianFrameSeconds / vtk->medianFrameSeconds;
+  const double cpuRatio = ours->medianFrameCpuSeconds / vtk->medianFrameCpuSeconds;
+  goal.met = ratio <= kVtkCostGoal;
+  goal.figures = "ours " + milliseconds(ours->medianFrameSeconds) + " (L2 " +
+                 number(ours->relativeL2) + "), VTK " + milliseconds(vtk->medianFrameSeconds) +
+                 " (L2 " + number(vtk->relativeL2) + " against its own GGX model; first frame " +
+                 number(vtk->firstFrameSeconds) + " s with its prefiltering): " + number(ratio, 2) +
+                 "x (CPU time: " + number(cpuRatio, 2) + "x)";
+  return goal;
+}
+
+Goal convergenceGoal(const BenchResult& result)
+{
+  const GoalScene scene = goalScene(result);
+  Goal goal;
+  goal.name = "A still view converges to under 1% relative L2 within 2 s: " + scene.label;
+  const std::string kind = scene.kind == "default" ? "default-progressive" : "progressive";
+  std::ostringstream figures;
+  for (const char* filtered : {"on", "off"})
+  {
+    const BenchRow* first = nullptr;
+    const BenchRow* last = nullptr;
+    for (const BenchRow& r : result.rows)
+    {
+      if (scene.in(r) && r.kind == kind && r.method == "exact" && r.filtered == filtered)
+      {
+        last = &r;
+        if (!first && r.relativeL2 < kConvergedError)
+        {
+          first = &r;
+        }
+      }
+    }
+    if (!last)
+    {
+      continue;
+    }
+    const bool met = first && first->totalSeconds <= kConvergenceSeconds;
+    goal.met = goal.met || met;
+    figures << "exact, " << (std::string(filtered) == "on" ? "filtered" : "unfiltered")
+            << ", 16 samples per frame: ";
+    if (first)
+    {
+      figures << number(first->relativeL2) << " after " << first->frames << " frames, "
+              << number(first->totalSeconds) << " s (CPU " << number(first->totalCpuSeconds)
+              << " s)";
+    }
+    else
+    {
+      figures << "not under 1% after " << last->frames << " frames (" << number(last->relativeL2)
+              << ", " << number(last->totalSeconds) << " s)";
+    }
+    figures << (met ? " (met). " : " (not met). ");
+  }
+  goal.figures = figures.str();
+  if (goal.figures.empty())
+  {
+    goal.figures = "not measured in this run";
+  }
+  return goal;
+}
+
+std::string csvField(const std::string& text)
+{
+  if (text.find_first_of(",\"") == std::string::npos)
+  {
+    return text;
+  }
+  std::string quoted = "\"";
+  for (char c : text)
+  {
+    quoted += c == '"' ? std::string("\"\"") : std::string(1, c);
+  }
+  return quoted + "\"";
+}
+
+// The Pareto front of POINTS (time, error): the points no other point beats in both.
+std::vector<glm::dvec2> paretoFront(std::vector<glm::dvec2> points)
+{
+  std::sort(points.begin(), points.end(),
+            [](const glm::dvec2& a, const glm::dvec2& b)
+            { return a.x < b.x || (a.x == b.x && a.y < b.y); });
+  std::vector<glm::dvec2> front;
+  double best = std::numeric_limits<double>::infinity();
+  for (const glm::dvec2& p : points)
+  {
+    if (p.y < best)
+    {
+      front.push_back(p);
+      best = p.y;
+    }
+  }
+  return front;
+}
+
+struct MethodStyle
+{
+  std::string method;
+  std::string label;
+  glm::dvec3 color;
+  Marker marker;
+};
+
+const std::vector<MethodStyle>& methodStyles()
+{
+  static const std::vector<MethodStyle> styles{
+      {"exact", "exact", {0.84, 0.37, 0.0}, Marker::Circle},
+      {"exact+mis", "exact + MIS", {0.55, 0.25, 0.6}, Marker::Circle},
+      {"split-sum", "split sum", {0.0, 0.45, 0.70}, Marker::Square},
+      {"vtk-pbr", "VTK PBR (vs GGX)", {0.0, 0.62, 0.45}, Marker::Diamond},
+  };
+  return styles;
+}
+
+Figure errorAgainstTime(const BenchResult& result)
+{
+  Figure figure;
+  figure.title = "Relative L2 error against time, sphere under the studio, " +
+                 std::to_string(result.size) + "x" + std::to_string(result.size);
+  const auto lobes = lobesOf(result.rows, [](const BenchRow& r) { return mainScene(r); });
+  for (const AsLobe& lobe : lobes)
+  {
+    PlotPanel panel;
+    panel.title = "(n_u, n_v) = " + lobeText(lobe);
+    panel.xLabel = "time to the image [s]";
+    panel.yLabel = "relative L2 error";
+    for (const MethodStyle& style : methodStyles())
+    {
+      PlotSeries all;
+      all.color = style.color;
+      all.marker = style.marker;
+      all.markerSize = 2.5;
+      all.opacity = 0.35;
+      for (const BenchRow& r : result.rows)
+      {
+        if (mainScene(r) && sameLobe(r.lobe, lobe) && r.method == style.method &&
+            r.kind.rfind("default", 0) != 0)
+        {
+          all.points.push_back({timeOf(r), r.relativeL2});
+        }
+      }
+      if (all.points.empty())
+      {
+        continue;
+      }
+      PlotSeries front;
+      front.label = style.label + (style.method == "vtk-pbr" ? "" : ", Pareto front");
+      front.color = style.color;
+      front.marker = style.marker;
+      front.markerSize = style.method == "vtk-pbr" ? 5.0 : 3.5;
+      front.connect = true;
+      front.points = paretoFront(all.points);
+      panel.series.push_back(all);
+      panel.series.push_back(front);
+    }
+    figure.panels.push_back(panel);
+  }
+  return figure;
+}
+
+// One Markdown table per lobe: configurations down, sample counts across, "L2 (time)".
+void sweepTables(std::ostream& md, const std::vector<BenchRow>& rows,
+                 const std::function<bool(const BenchRow&)>& in)
+{
+  for (const AsLobe& lobe : lobesOf(rows, in))
+  {
+    std::set<int> samples;
+    std::vector<std::string> configs;
+    std::map<std::pair<std::string, int>, const BenchRow*> cells;
+    for (const BenchRow& r : rows)
+    {
+      if (!in(r) || !sameLobe(r.lobe, lobe) || r.kind != "sweep")
+      {
+        continue;
+      }
+      const std::string config = r.method + " | " + r.filtered + " | " + r.halfVectors;
+      if (std::find(configs.begin(), configs.end(), config) == configs.end())
+      {
+        configs.push_back(config);
+      }
+      samples.insert(r.samples);
+      cells[{config, r.samples}] = &r;
+    }
+    if (configs.empty())
+    {
+      continue;
+    }
+    md << "\n" << lobeText(lobe) << ", relative L2 (median frame time):\n\n";
+    md << "| Method | Filtered | Half vectors |";
+    for (int n : samples)
+    {
+      md << " N = " << n << " |";
+    }
+    md << "\n| --- | --- | --- |";
+    for (std::size_t i = 0; i < samples.size(); ++i)
+    {
+      md << " --- |";
+    }
+    md << "\n";
+    for (const std::string& config : configs)
+    {
+      md << "| " << config << " |";
+      for (int n : samples)
+      {
+        const auto cell = cells.find({config, n});
+        if (cell == cells.end())
+        {
+          md << " |";
+        }
+        else
+        {
+          md << " " << number(cell->second->relativeL2) << " ("
+             << milliseconds(cell->second->medianFrameSeconds) << ") |";
+        }
+      }
+      md << "\n";
+    }
+  }
+}
+} // namespace
+
+std::vector<Goal> evaluateGoals(const BenchResult& result)
+{
+  return {publishedGoal(result), vtkCostGoal(result), convergenceGoal(result)};
+}
+
+std::vector<QualityFit> fitQuality(const std::vector<BenchRow>& rows)
+{
+  std::vector<QualityFit> fits;
+  const auto lobes = lobesOf(rows, [](const BenchRow& r) { return mainScene(r); });
+  for (const AsLobe& lobe : lobes)
+  {
+    for (bool filtered : {false, true})
+    {
+      double sx = 0.0;
+      double sy = 0.0;
+      double sxx = 0.0;
+      double sxy = 0.0;
+      int n = 0;
+      for (const BenchRow& r : rows)
+      {
+        if (mainScene(r) && r.kind == "sweep" && sameLobe(r.lobe, lobe) && r.method == "exact" &&
+            r.halfVectors == "lut" && r.filtered == (filtered ? "on" : "off") && r.samples >= 4 &&
+            r.relativeL2 > 0.0 && std::isfinite(r.relativeL2))
+        {
+          const double x = std::log(double(r.samples));
+          const double y = std::log(r.relativeL2);
+          sx += x;
+          sy += y;
+          sxx += x * x;
+          sxy += x * y;
+          ++n;
+        }
+      }
+      const double denominator = n * sxx - sx * sx;
+      if (n < 2 || denominator <= 0.0)
+      {
+        continue;
+      }
+      const double slope = (n * sxy - sx * sy) / denominator;
+      QualityFit fit;
+      fit.lobe = lobe;
+      fit.filtered = filtered;
+      fit.p = -slope;
+      fit.a = std::exp((sy - slope * sx) / n);
+      fit.points = n;
+      fits.push_back(fit);
+    }
+  }
+  return fits;
+}
+
+std::string benchCsv(const BenchResult& result)
+{
+  std::ostringstream csv;
+  csv << "kind,mesh,environment,nu,nv,method,filtered,half_vectors,samples,frames,width,height,"
+         "covered_pixels,runs,median_frame_ms,first_frame_ms,total_ms,median_frame_cpu_ms,"
+         "total_cpu_ms,samples_per_second,relative_l2,p99_error,reference_bound,"
+         "compared_pixels\n";
+  for (const BenchRow& r : result.rows)
+  {
+    csv << r.kind << "," << csvField(r.mesh) << "," << csvField(r.environment) << ","
+        << number(r.lobe.nu, 10) << "," << number(r.lobe.nv, 10) << "," << r.method << ","
+        << r.filtered << "," << r.halfVectors << "," << r.samples << "," << r.frames << ","
+        << r.width << "," << r.height << "," << r.coveredPixels << "," << r.runs << ","
+        << number(r.medianFrameSeconds * 1e3, 6) << "," << number(r.firstFrameSeconds * 1e3, 6)
+        << "," << number(r.totalSeconds * 1e3, 6) << "," << number(r.medianFrameCpuSeconds * 1e3, 6)
+        << "," << number(r.totalCpuSeconds * 1e3, 6) << "," << number(r.samplesPerSecond, 6) << ","
+        << number(r.relativeL2, 6) << "," << number(r.percentile99, 6) << ","
+        << number(r.referenceBound, 6) << "," << r.comparedPixels << "\n";
+  }
+  return csv.str();
+}
+
+std::string benchMarkdown(const BenchResult& result, const std::string& plotFile)
+{
+  std::ostringstream md;
+  md << "## Time against error (`aniso bench`)\n\n";
+  md << "Command: `" << result.commandLine << "` (Release build, under `xvfb-run -a -s \"-screen 0 "
+     << "1280x1024x24\"`). Machine: " << result.machine << ", OpenGL " << result.renderer
+     << "; load average " << number(result.loadBefore, 2) << " before and "
+     << number(result.loadAfter, 2) << " after the run, which took "
+     << number(result.seconds / 60.0, 3) << " min. Images " << result.size << "x" << result.size
+     << (result.quick ? " (quick set)" : "") << ", F0 = aluminium (0.913, 0.922, 0.924), no "
+     << "diffuse, cube map 256² per face, no jitter (pixel centres, as the reference). Times are "
+     << "medians of 2 to 5 frames after a warm-up frame (GPU work included); error is the relative "
+     << "L2 over RGB against the CPU reference integrator on a regular subset of the covered "
+     << "pixels (its own error bound is in bench.csv), p99 the 99th percentile of the per-pixel "
+     << "error over the image's RMS radiance.\n\n";
+
+  double largestBound = 0.0;
+  double smallestError = std::numeric_limits<double>::infinity();
+  for (const BenchRow& r : result.rows)
+  {
+    largestBound = std::max(largestBound, r.referenceBound);
+    smallestError = std::min(smallestError, r.relativeL2);
+  }
+  md << "The references' own error bounds reach at most " << number(largestBound, 2)
+     << "; the smallest error reported is " << number(smallestError, 2) << ".\n\n";
+
+  md << "### Goals (issue 5, item 3)\n\n| Goal | Met | Figures |\n| --- | --- | --- |\n";
+  for (const Goal& g : result.goals)
+  {
+    md << "| " << g.name << " | " << (g.met ? "**met**" : "**not met**") << " | " << g.figures
+       << " |\n";
+  }
+
+  if (!plotFile.empty())
+  {
+    md << "\n![Relative L2 error against time](" << plotFile << ")\n";
+  }
+
+  md << "\n### Sphere under the studio\n";
+  sweepTables(md, result.rows, [](const BenchRow& r) { return mainScene(r); });
+
+  for (const char* mesh : {"torus", "flange"})
+  {
+    const auto in = [mesh](const BenchRow& r)
+    { return r.mesh == mesh && r.environment == "studio" && r.kind.rfind("default", 0) != 0; };
+    if (find(result.rows, in))
+    {
+      md << "\n### " << (std::string(mesh) == "torus" ? "Torus" : "Flange (tangents around Z)")
+         << " under the studio\n";
+      sweepTables(md, result.rows, in);
+    }
+  }
+
+  std::vector<std::string> hdris;
+  for (const BenchRow& r : result.rows)
+  {
+    if (r.environment != "studio" &&
+        std::find(hdris.begin(), hdris.end(), r.environment) == hdris.end())
+    {
+      hdris.push_back(r.environment);
+    }
+  }
+  if (!hdris.empty())
+  {
+    md << "\n### Sphere under the Blender HDRIs\n\nRelative L2 (median frame time); `+mis` is "
+          "exact with multiple importance sampling of the environment.\n\n";
+    std::vector<std::string> columns;
+    for (const BenchRow& r : result.rows)
+    {
+      if (r.environment != "studio" && r.kind == "sweep")
+      {
+        const std::string c = configText(r);
+        if (std::find(columns.begin(), columns.end(), c) == columns.end())
+        {
+          columns.push_back(c);
+        }
+      }
+    }
+    md << "| Environment | Lobe |";
+    for (const std::string& c : columns)
+    {
+      md << " " << c << " |";
+    }
+    md << " VTK PBR |\n| --- | --- |";
+    for (std::size_t i = 0; i <= columns.size(); ++i)
+    {
+      md << " --- |";
+    }
+    md << "\n";
+    for (const std::string& environment : hdris)
+    {
+      for (const AsLobe& lobe :
+           lobesOf(result.rows, [&](const BenchRow& r) { return r.environment == environment; }))
+      {
+        md << "| " << environment << " | " << lobeText(lobe) << " |";
+        for (const std::string& c : columns)
+        {
+          const BenchRow* r = find(result.rows,
+                                   [&](const BenchRow& x)
+                                   {
+                                     return x.environment == environment &&
+                                            sameLobe(x.lobe, lobe) && x.kind == "sweep" &&
+                                            configText(x) == c;
+                                   });
+          md << " "
+             << (r ? number(r->relativeL2) + " (" + milliseconds(r->medianFrameSeconds) + ")"
+                   : std::string())
+             << " |";
+        }
+        const BenchRow* vtk = find(
+            result.rows, [&](const BenchRow& x)
+            { return x.environment == environment && sameLobe(x.lobe, lobe) && x.kind == "vtk"; });
+        md << " "
+           << (vtk ? number(vtk->relativeL2) + " (" + milliseconds(vtk->medianFrameSeconds) + ")"
+                   : std::string())
+           << " |\n";
+      }
+    }
+  }
+
+  md << "\n### VTK's own PBR anisotropy on the same scenes\n\n"
+        "VTK 9.1's vtkProperty (PBR interpolation, metallic 1, base colour F0, roughness and "
+        "anisotropy from each lobe: alpha = sqrt(2 / (n + 2)) per axis) with image-based "
+        "lighting from the same environment, its error against the CPU reference integrating "
+        "the GGX lobe VTK claims to render (ggxLobeFromVtk). Ours: exact, filtered, LUT, 16 "
+        "samples (the interactive setting), against the Ashikhmin-Shirley reference.\n\n"
+        "| Mesh | Environment | Lobe | VTK L2 | VTK frame | VTK first frame | Ours L2 | Ours "
+        "frame |\n| --- | --- | --- | --- | --- | --- | --- | --- |\n";
+  for (const BenchRow& v : result.rows)
+  {
+    if (v.method != "vtk-pbr")
+    {
+      continue;
+    }
+    const std::string kind = v.kind == "vtk" ? "sweep" : "default";
+    const BenchRow* ours =
+        find(result.rows,
+             [&](const BenchRow& r)
+             {
+               return r.kind == kind && r.mesh == v.mesh && r.environment == v.environment &&
+                      sameLobe(r.lobe, v.lobe) && r.method == "exact" && r.filtered == "on" &&
+                      r.halfVectors == "lut" && r.samples == 16;
+             });
+    md << "| " << v.mesh << (v.kind == "vtk" ? "" : " (800x600)") << " | " << v.environment << " | "
+       << lobeText(v.lobe) << " | " << number(v.relativeL2) << " | "
+       << milliseconds(v.medianFrameSeconds) << " | " << number(v.firstFrameSeconds) << " s | "
+       << (ours ? number(ours->relativeL2) : std::string("-")) << " | "
+       << (ours ? milliseconds(ours->medianFrameSeconds) : std::string("-")) << " |\n";
+  }
+
+  md << "\n### Progressive refinement (a still view)\n\nRelative L2 after F frames of 16 "
+        "samples, and the time of those frames summed.\n\n"
+        "| Scene | Lobe | Mode | Frames | L2 | Time |\n| --- | --- | --- | --- | --- | --- |\n";
+  for (const BenchRow& r : result.rows)
+  {
+    if (r.kind.find("progressive") != std::string::npos)
+    {
+      md << "| " << r.mesh << " " << r.environment << (r.kind == "progressive" ? "" : " 800x600")
+         << " | " << lobeText(r.lobe) << " | " << r.method << ", filtered " << r.filtered << " | "
+         << r.frames << " | " << number(r.relativeL2) << " | " << number(r.totalSeconds)
+         << " s |\n";
+    }
+  }
+
+  if (!result.counters.empty())
+  {
+    md << "\n### Nothing is redone when nothing changed (counters)\n\n"
+          "Each row changes one input of a rendered view and counts what the next frame "
+          "did: shader programs compiled (distinct programs the actor was drawn with), textures "
+          "uploaded (TextureUpload.h), LUTs baked (LutCache), environments baked.\n\n"
+          "| Change | Expected | Compiles | Uploads | LUT bakes | Environment bakes | As "
+          "expected |\n| --- | --- | --- | --- | --- | --- | --- |\n";
+    for (const CounterStep& s : result.counters)
+    {
+      md << "| " << s.change << " | " << s.expected << " | " << s.shaderPrograms << " | "
+         << s.textureUploads << " | " << s.lutBakes << " | " << s.environmentBakes << " | "
+         << (s.asExpected ? "yes" : "**no**") << " |\n";
+    }
+  }
+
+  if (!result.qualityFits.empty())
+  {
+    md << "\n### Adaptive quality model\n\nRelative L2 = a N^-p fitted (least squares in "
+          "log-log, N >= 4) to the sphere-under-the-studio rows of exact with LUT half "
+          "vectors; core/quality/adaptive_quality.cxx holds the table.\n\n"
+          "| Lobe | Filtered | a | p | N for 1% | N for 5% |\n| --- | --- | --- | --- | --- | --- "
+          "|\n";
+    for (const QualityFit& f : result.qualityFits)
+    {
+      auto samplesFor = [&](double target) { return std::ceil(std::pow(f.a / target, 1.0 / f.p)); };
+      md << "| " << lobeText(f.lobe) << " | " << (f.filtered ? "on" : "off") << " | " << number(f.a)
+         << " | " << number(f.p) << " | " << number(samplesFor(0.01), 4) << " | "
+         << number(samplesFor(0.05), 4) << " |\n";
+    }
+  }
+  return md.str();
+}
+
+void writeBenchOutputs(const BenchResult& result, const std::string& directory)
+{
+  std::error_code ec;
+  fs::create_directories(directory, ec);
+  if (!fs::is_directory(directory))
+  {
+    throw errorAbout(directory, "cannot create the directory");
+  }
+  auto writeText = [&](const std::string& name, const std::string& text)
+  {
+    const std::string path = (fs::path(directory) / name).string();
+    std::ofstream out(path, std::ios::binary | std::ios::trunc);
+    out << text;
+    if (!out)
+    {
+      throw errorAbout(path, "cannot be written");
+    }
+  };
+  writeText("bench.csv", benchCsv(result));
+  const Figure figure = errorAgainstTime(result);
+  writeText("bench.svg", figureToSvg(figure));
+  writeImage((fs::path(directory) / "bench.png").string(), figureToImage(figure));
+  writeText("bench.md", benchMarkdown(result, "bench.svg"));
+  std::ostringstream model;
+  model << "// Fitted by: " << result.commandLine << "\n// {n_u, n_v, filtered, a, p}: relative "
+        << "L2 = a N^-p\n";
+  for (const QualityFit& f : result.qualityFits)
+  {
+    model << "{" << number(f.lobe.nu, 10) << ", " << number(f.lobe.nv, 10) << ", "
+          << (f.filtered ? "true" : "false") << ", " << number(f.a, 4) << ", " << number(f.p, 4)
+          << "},\n";
+  }
+  writeText("quality_model.txt", model.str());
+}
+} // namespace aniso::bench

@@ -1,0 +1,660 @@
+#include "bench_run.h"
+
+#include "bench_scenes.h"
+#include "error.h"
+#include "plot.h"
+#include "reference_image.h"
+#include "render_session.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <map>
+#include <memory>
+#include <sstream>
+#include <thread>
+
+namespace aniso::bench
+{
+namespace
+{
+namespace fs = std::filesystem;
+
+// The defaults of a material the user has not touched (MaterialSettings, parameters.h):
+// aluminium F0, no diffuse (the reference integrates the specular term).
+const glm::dvec3 kF0{0.913, 0.922, 0.924};
+// The application's default material and scene (./run): n_u = 1000, n_v = 50 on the torus.
+const AsLobe kDefaultLobe{1000.0, 50.0};
+constexpr int kDefaultWidth = 800;
+constexpr int kDefaultHeight = 600;
+constexpr int kCubeSize = 256; // the cube-size parameter's default
+
+struct Config
+{
+  SpecularMethod method = SpecularMethod::Exact;
+  bool filtered = true;
+  HalfVectorSource halfVectors = HalfVectorSource::Lut;
+  EnvironmentSampling sampling = EnvironmentSampling::Off;
+  int samples = 16;
+};
+
+struct ReferenceSpec
+{
+  int pixels = 1024;
+  double tolerance = 1e-3;
+};
+
+struct ScenePlan
+{
+  std::string mesh;
+  std::string environment;
+  std::vector<AsLobe> lobes;
+  std::vector<Config> configs;
+  std::vector<Config> progressive; // each accumulated up to the last of progressiveFrames
+  std::vector<int> progressiveFrames;
+  bool vtk = true;
+  ReferenceSpec reference;
+  ReferenceSpec ggxReference;
+  std::string kind = "sweep";
+  bool counters = false; // run the counter check after this scene
+};
+
+std::vector<Config> sweep(SpecularMethod method, bool filtered, HalfVectorSource halfVectors,
+                          std::vector<int> samples,
+                          EnvironmentSampling sampling = EnvironmentSampling::Off)
+{
+  std::vector<Config> configs;
+  for (int n : samples)
+  {
+    configs.push_back({method, filtered, halfVectors, sampling, n});
+  }
+  return configs;
+}
+
+void append(std::vector<Config>& to, const std::vector<Config>& more)
+{
+  to.insert(to.end(), more.begin(), more.end());
+}
+
+std::vector<ScenePlan> planQuick()
+{
+  using M = SpecularMethod;
+  using H = HalfVectorSource;
+  ScenePlan sphere;
+  sphere.mesh = "sphere";
+  sphere.environment = "builtin:studio";
+  sphere.lobes = benchLobes();
+  append(sphere.configs, sweep(M::Exact, false, H::Lut, {1, 4, 16, 64, 256}));
+  append(sphere.configs, sweep(M::Exact, true, H::Lut, {1, 4, 16, 64}));
+  append(sphere.configs, sweep(M::SplitSum, false, H::Lut, {16, 256}));
+  append(sphere.configs, sweep(M::SplitSum, true, H::Lut, {16}));
+  append(sphere.configs, sweep(M::Exact, false, H::Shader, {16}));
+  append(sphere.configs, sweep(M::Exact, false, H::Lut, {16}, EnvironmentSampling::Mis));
+  sphere.progressive = sweep(M::Exact, true, H::Lut, {16});
+  sphere.progressiveFrames = {1, 2, 4, 8};
+  sphere.reference = {192, 2e-3};
+  sphere.ggxReference = {48, 1e-3};
+  sphere.counters = true;
+  return {sphere};
+}
+
+std::vector<ScenePlan> planFull(const std::string& hdriDirectory)
+{
+  using M = SpecularMethod;
+  using H = HalfVectorSource;
+  std::vector<ScenePlan> plans;
+  ScenePlan sphere;
+  sphere.mesh = "sphere";
+  sphere.environment = "builtin:studio";
+  sphere.lobes = benchLobes();
+  for (M method : {M::Exact, M::SplitSum})
+  {
+    for (bool filtered : {true, false})
+    {
+      for (H source : {H::Lut, H::Shader})
+      {
+        append(sphere.configs, sweep(method, filtered, source, {1, 4, 16, 64, 256}));
+      }
+    }
+  }
+  append(sphere.configs, sweep(M::Exact, false, H::Lut, {1024}));
+  append(sphere.configs, sweep(M::Exact, true, H::Lut, {1024}));
+  append(sphere.configs, sweep(M::SplitSum, false, H::Lut, {1024}));
+  append(sphere.configs,
+         sweep(M::Exact, false, H::Lut, {4, 16, 64, 256}, EnvironmentSampling::Mis));
+  sphere.progressive = {{M::Exact, true, H::Lut, EnvironmentSampling::Off, 16},
+                        {M::Exact, false, H::Lut, EnvironmentSampling::Off, 16}};
+  sphere.progressiveFrames = {1, 2, 4, 8, 16, 32, 64};
+  sphere.reference = {1024, 1e-3};
+  sphere.ggxReference = {192, 2e-3};
+  sphere.counters = true;
+  plans.push_back(sphere);
+
+  for (const char* mesh : {"torus", "flange"})
+  {
+    ScenePlan scene;
+    scene.mesh = mesh;
+    scene.environment = "builtin:studio";
+    scene.lobes = benchLobes();
+    for (M method : {M::Exact, M::SplitSum})
+    {
+      for (bool filtered : {true, false})
+      {
+        append(scene.configs, sweep(method, filtered, H::Lut, {1, 4, 16, 64, 256}));
+      }
+    }
+    scene.reference = {512, 1e-3};
+    scene.ggxReference = {128, 2e-3};
+    plans.push_back(scene);
+  }
+
+  // Real HDRIs hold small bright sources; their references cost far more per pixel, so the
+  // sharper lobes and fewer pixels are compared.
+  const std::vector<std::string> environments = benchEnvironments(hdriDirectory);
+  for (std::size_t i = 1; i < environments.size(); ++i)
+  {
+    ScenePlan scene;
+    scene.mesh = "sphere";
+    scene.environment = environments[i];
+    scene.lobes = {{1000.0, 100.0}, {20000.0, 70.0}};
+    append(scene.configs, sweep(M::Exact, true, H::Lut, {4, 16, 64, 256}));
+    append(scene.configs, sweep(M::Exact, false, H::Lut, {16, 256}));
+    append(scene.configs, sweep(M::Exact, false, H::Lut, {16, 256}, EnvironmentSampling::Mis));
+    append(scene.configs, sweep(M::SplitSum, false, H::Lut, {256}));
+    scene.reference = {256, 3e-3};
+    scene.ggxReference = {64, 1e-2};
+    plans.push_back(scene);
+  }
+  return plans;
+}
+
+std::string methodName(SpecularMethod m)
+{
+  return m == SpecularMethod::Exact ? "exact" : "split-sum";
+}
+
+std::string describe(const Config& c)
+{
+  std::ostringstream s;
+  s << methodName(c.method) << (c.filtered ? " filtered" : " unfiltered")
+    << (c.halfVectors == HalfVectorSource::Lut ? " LUT" : " shader")
+    << (c.sampling == EnvironmentSampling::Mis ? " MIS" : "") << " N=" << c.samples;
+  return s.str();
+}
+
+std::string lobeText(const AsLobe& lobe)
+{
+  char text[64];
+  std::snprintf(text, sizeof text, "(%g, %g)", lobe.nu, lobe.nv);
+  return text;
+}
+
+double median(std::vector<double> values)
+{
+  if (values.empty())
+  {
+    return 0.0;
+  }
+  std::sort(values.begin(), values.end());
+  const std::size_t n = values.size();
+  return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
+}
+
+double medianWall(const std::vector<FrameTime>& times)
+{
+  std::vector<double> values;
+  for (const FrameTime& t : times)
+  {
+    values.push_back(t.wall);
+  }
+  return median(values);
+}
+
+double medianCpu(const std::vector<FrameTime>& times)
+{
+  std::vector<double> values;
+  for (const FrameTime& t : times)
+  {
+    values.push_back(t.cpu);
+  }
+  return median(values);
+}
+
+int64_t covered(const Image& image)
+{
+  int64_t count = 0;
+  for (int y = 0; y < image.height; ++y)
+  {
+    for (int x = 0; x < image.width; ++x)
+    {
+      count += image.at(x, y, 3) > 0.0f ? 1 : 0;
+    }
+  }
+  return count;
+}
+
+double loadAverage()
+{
+  std::ifstream in("/proc/loadavg");
+  double load = 0.0;
+  in >> load;
+  return load;
+}
+
+std::string machineDescription()
+{
+  std::ifstream in("/proc/cpuinfo");
+  std::string line;
+  std::string model = "unknown CPU";
+  while (std::getline(in, line))
+  {
+    if (line.rfind("model name", 0) == 0)
+    {
+      model = line.substr(line.find(':') + 2);
+      break;
+    }
+  }
+  return model + ", " + std::to_string(std::thread::hardware_concurrency()) + " threads";
+}
+
+std::string defaultCacheDirectory()
+{
+  const char* xdg = std::getenv("XDG_CACHE_HOME");
+  if (xdg && *xdg == '/')
+  {
+    return (fs::path(xdg) / "aniso" / "bench").string();
+  }
+  const char* home = std::getenv("HOME");
+  if (home && *home)
+  {
+    return (fs::path(home) / ".cache" / "aniso" / "bench").string();
+  }
+  return {};
+}
+
+MaterialSettings materialFor(const AsLobe& lobe, const Config& c)
+{
+  MaterialSettings m;
+  m.lobe = lobe;
+  m.f0 = kF0;
+  m.albedo = glm::dvec3(0.0);
+  m.method = c.method;
+  m.filtered = c.filtered;
+  m.halfVectors = c.halfVectors;
+  m.environmentSampling = c.sampling;
+  m.samples = c.samples;
+  return m;
+}
+
+// Timed frames after the first: enough for a median, fewer for the slowest configurations.
+int timedRuns(int samples, bool quick)
+{
+  if (quick)
+  {
+    return 2;
+  }
+  return samples >= 1024 ? 2 : 3;
+}
+
+class Runner
+{
+public:
+  Runner(const BenchOptions& options, std::ostream& log, BenchResult& result)
+      : options_(options), log_(log), result_(result),
+        cache_(options.cacheDirectory.empty() ? defaultCacheDirectory() : options.cacheDirectory)
+  {
+  }
+
+  void runScene(const ScenePlan& plan, RenderSession& session)
+  {
+    const BenchMesh& mesh = meshNamed(plan.mesh);
+    session.setSurface(mesh.surface, mesh.view);
+    const std::shared_ptr<const Environment> environment = environmentNamed(plan.environment);
+    session.setEnvironment(environment, kCubeSize);
+    const std::vector<PixelSample> geometry =
+        castPixels(mesh.triangles, session.clipToWorld(), session.width(), session.height());
+    const std::vector<int> pixels =
+        selectPixels(geometry, session.width(), session.height(), plan.reference.pixels);
+    const std::vector<int> ggxPixels =
+        selectPixels(geometry, session.width(), session.height(), plan.ggxReference.pixels);
+    const std::string envName = environmentName(plan.environment);
+
+    for (const AsLobe& lobe : plan.lobes)
+    {
+      BenchRow base;
+      base.kind = plan.kind;
+      base.mesh = plan.mesh;
+      base.environment = envName;
+      base.lobe = lobe;
+      base.width = session.width();
+      base.height = session.height();
+
+      ReferenceModel model;
+      model.asLobe = lobe;
+      model.f0 = kF0;
+      const ReferenceImage reference =
+          referenceFor(geometry, session, pixels, model, *environment, plan.reference, base);
+
+      for (const Config& config : plan.configs)
+      {
+        measureConfig(session, materialFor(lobe, config), config, reference, base);
+      }
+      for (const Config& config : plan.progressive)
+      {
+        measureProgressive(session, materialFor(lobe, config), config, reference, base,
+                           plan.progressiveFrames);
+      }
+      if (plan.vtk)
+      {
+        measureVtk(session, geometry, ggxPixels, lobe, *environment, plan.ggxReference, base);
+      }
+      if (plan.counters && &lobe == &plan.lobes.back())
+      {
+        checkCounters(session, lobe, plan.configs.front());
+      }
+    }
+  }
+
+  // The application's default scene and settings at 800 x 600: the frame of the interactive
+  // setting against VTK's, and the time a still view takes to converge.
+  void runDefaultScene()
+  {
+    RenderSession session(kDefaultWidth, kDefaultHeight);
+    ScenePlan plan;
+    plan.kind = "default";
+    plan.mesh = "torus";
+    plan.environment = "builtin:studio";
+    plan.lobes = {kDefaultLobe};
+    const Config interactive; // MaterialSettings' defaults: exact, filtered, LUT, 16 samples
+    plan.configs = {interactive};
+    Config unfiltered = interactive;
+    unfiltered.filtered = false;
+    plan.progressive = {interactive, unfiltered};
+    plan.progressiveFrames = {1, 2, 4, 8, 12, 16, 24, 32, 48, 64};
+    plan.reference = {1024, 1e-3};
+    plan.ggxReference = {192, 2e-3};
+    runScene(plan, session);
+  }
+
+private:
+  const BenchMesh& meshNamed(const std::string& name)
+  {
+    auto found = meshes_.find(name);
+    if (found == meshes_.end())
+    {
+      found = meshes_.emplace(name, makeBenchMesh(name)).first;
+    }
+    return found->second;
+  }
+
+  std::shared_ptr<const Environment> environmentNamed(const std::string& spec)
+  {
+    auto found = environments_.find(spec);
+    if (found == environments_.end())
+    {
+      found = environments_.emplace(spec, openEnvironment(spec)).first;
+    }
+    return found->second;
+  }
+
+  ReferenceImage referenceFor(const std::vector<PixelSample>& geometry,
+                              const RenderSession& session, const std::vector<int>& pixels,
+                              const ReferenceModel& model, const Environment& environment,
+                              const ReferenceSpec& spec, const BenchRow& base)
+  {
+    ReferenceOptions options;
+    options.relativeTolerance = spec.tolerance;
+    ReferenceImage reference = computeReference(geometry, session.width(), session.height(), pixels,
+                                                model, environment, options, cache_);
+    log_ << "  reference " << base.mesh << " " << base.environment << " "
+         << (model.ggx ? "GGX" : lobeText(base.lobe)) << ": " << reference.pixels.size()
+         << " pixels, bound " << reference.relativeErrorBound
+         << (reference.fromCache ? " (cached)" : ", " + std::to_string(reference.seconds) + " s")
+         << std::endl;
+    return reference;
+  }
+
+  BenchRow measured(const BenchRow& base, const Image& image, const ReferenceImage& reference)
+  {
+    BenchRow row = base;
+    const ImageError error = compareToReference(image, reference);
+    row.relativeL2 = error.relativeL2;
+    row.percentile99 = error.percentile99;
+    row.referenceBound = reference.relativeErrorBound;
+    row.comparedPixels = static_cast<int>(reference.pixels.size());
+    row.coveredPixels = covered(image);
+    if (error.uncovered > 0)
+    {
+      log_ << "  warning: " << error.uncovered << " compared pixels not covered by the render"
+           << std::endl;
+    }
+    return row;
+  }
+
+  void measureConfig(RenderSession& session, const MaterialSettings& material, const Config& config,
+                     const ReferenceImage& reference, const BenchRow& base)
+  {
+    session.useMaterial(material);
+    const std::vector<FrameTime> first = session.render(1);
+    const Image image = session.read();
+    BenchRow row = measured(base, image, reference);
+    row.runs = timedRuns(config.samples, options_.quick);
+    const std::vector<FrameTime> timed = session.renderMore(row.runs);
+    describeConfig(row, config);
+    row.firstFrameSeconds = first.front().wall;
+    row.medianFrameSeconds = medianWall(timed);
+    row.totalSeconds = row.medianFrameSeconds;
+    row.medianFrameCpuSeconds = medianCpu(timed);
+    row.totalCpuSeconds = row.medianFrameCpuSeconds;
+    row.samplesPerSecond = double(row.coveredPixels) * config.samples / row.medianFrameSeconds;
+    log_ << "  " << row.mesh << " " << row.environment << " " << lobeText(row.lobe) << " "
+         << describe(config) << ": " << row.medianFrameSeconds * 1e3 << " ms, L2 " << row.relativeL2
+         << std::endl;
+    result_.rows.push_back(row);
+  }
+
+  void measureProgressive(RenderSession& session, const MaterialSettings& material,
+                          const Config& config, const ReferenceImage& reference,
+                          const BenchRow& base, const std::vector<int>& checkpoints)
+  {
+    if (checkpoints.empty())
+    {
+      return;
+    }
+    session.useMaterial(material);
+    // A warm-up accumulation, so compiles and uploads are not counted as convergence time.
+    session.render(1);
+    std::vector<FrameTime> times = session.render(1);
+    for (int checkpoint : checkpoints)
+    {
+      const int more = checkpoint - session.accumulatedFrames();
+      if (more > 0)
+      {
+        const std::vector<FrameTime> extra = session.renderMore(more);
+        times.insert(times.end(), extra.begin(), extra.end());
+      }
+      BenchRow row = measured(base, session.read(), reference);
+      row.kind = base.kind == "sweep" ? "progressive" : base.kind + "-progressive";
+      describeConfig(row, config);
+      row.frames = checkpoint;
+      row.runs = checkpoint;
+      row.firstFrameSeconds = times.front().wall;
+      row.medianFrameSeconds = medianWall(times);
+      row.medianFrameCpuSeconds = medianCpu(times);
+      for (const FrameTime& t : times)
+      {
+        row.totalSeconds += t.wall;
+        row.totalCpuSeconds += t.cpu;
+      }
+      row.samplesPerSecond =
+          double(row.coveredPixels) * config.samples * checkpoint / row.totalSeconds;
+      result_.rows.push_back(row);
+    }
+    const BenchRow& last = result_.rows.back();
+    log_ << "  " << last.mesh << " " << last.environment << " " << lobeText(last.lobe)
+         << " progressive " << describe(config) << " x " << last.frames << ": " << last.totalSeconds
+         << " s, L2 " << last.relativeL2 << std::endl;
+  }
+
+  void measureVtk(RenderSession& session, const std::vector<PixelSample>& geometry,
+                  const std::vector<int>& pixels, const AsLobe& lobe,
+                  const Environment& environment, const ReferenceSpec& spec, const BenchRow& base)
+  {
+    const VtkPbrMaterial material = vtkPbrFor(lobe, kF0);
+    ReferenceModel model;
+    model.ggx = true;
+    model.ggxLobe = vtkGgxLobe(material);
+    model.tangentRotation = vtkTangentRotation(material);
+    model.f0 = kF0;
+    const ReferenceImage reference =
+        referenceFor(geometry, session, pixels, model, environment, spec, base);
+    session.useVtkPbr(material);
+    const std::vector<FrameTime> first = session.render(1);
+    BenchRow row = measured(base, session.read(), reference);
+    row.kind = base.kind == "sweep" ? "vtk" : base.kind + "-vtk";
+    row.method = "vtk-pbr";
+    row.filtered = "-";
+    row.halfVectors = "-";
+    row.samples = 1;
+    row.runs = 5;
+    const std::vector<FrameTime> timed = session.renderMore(row.runs);
+    row.firstFrameSeconds = first.front().wall;
+    row.medianFrameSeconds = medianWall(timed);
+    row.totalSeconds = row.medianFrameSeconds;
+    row.medianFrameCpuSeconds = medianCpu(timed);
+    row.totalCpuSeconds = row.medianFrameCpuSeconds;
+    row.samplesPerSecond = double(row.coveredPixels) / row.medianFrameSeconds;
+    log_ << "  " << row.mesh << " " << row.environment << " " << lobeText(lobe)
+         << " VTK PBR (roughness " << material.roughness << ", anisotropy " << material.anisotropy
+         << "): " << row.medianFrameSeconds * 1e3 << " ms (first " << row.firstFrameSeconds
+         << " s), L2 " << row.relativeL2 << std::endl;
+    result_.rows.push_back(row);
+  }
+
+  static void describeConfig(BenchRow& row, const Config& config)
+  {
+    row.method = methodName(config.method);
+    if (config.sampling == EnvironmentSampling::Mis)
+    {
+      row.method += "+mis";
+    }
+    row.filtered = config.filtered ? "on" : "off";
+    row.halfVectors = config.halfVectors == HalfVectorSource::Lut ? "lut" : "shader";
+    row.samples = config.samples;
+  }
+
+  // Each step changes one input (or none) and counts what the session did meanwhile.
+  void checkCounters(RenderSession& session, const AsLobe& lobe, const Config& config)
+  {
+    MaterialSettings material = materialFor(lobe, config);
+    session.useMaterial(material);
+    session.render(1);
+    auto step = [&](const std::string& change, const std::string& expected,
+                    const std::function<void()>& apply, uint64_t programs, uint64_t uploads,
+                    uint64_t maxBakes)
+    {
+      const SessionCounters before = session.counters();
+      apply();
+      session.render(1);
+      const SessionCounters after = session.counters();
+      CounterStep s;
+      s.change = change;
+      s.expected = expected;
+      s.shaderPrograms = after.shaderPrograms - before.shaderPrograms;
+      s.textureUploads = after.textureUploads - before.textureUploads;
+      s.lutBakes = after.lutBakes - before.lutBakes;
+      s.environmentBakes = after.environmentBakes - before.environmentBakes;
+      s.asExpected = s.shaderPrograms == programs && s.textureUploads == uploads &&
+                     s.lutBakes <= maxBakes && s.environmentBakes == 0;
+      result_.counters.push_back(s);
+    };
+    step(
+        "nothing (the view drawn again)", "nothing", [] {}, 0, 0, 0);
+    step(
+        "samples 16 -> 32 and F0 (uniforms)", "nothing",
+        [&]
+        {
+          material.samples = 32;
+          material.f0 = glm::dvec3(0.95, 0.64, 0.54);
+          session.useMaterial(material);
+        },
+        0, 0, 0);
+    const AsLobe other{lobe.nu * 0.5, lobe.nv * 2.0};
+    step(
+        "n_u, n_v to " + lobeText(other) + " (half vectors from the LUT)",
+        "1 upload (the new LUT), at most 1 bake, no compile",
+        [&]
+        {
+          material.lobe = other;
+          session.useMaterial(material);
+        },
+        0, 1, 1);
+    step(
+        "n_u, n_v back to " + lobeText(lobe), "1 upload, no bake (LUT cache hit), no compile",
+        [&]
+        {
+          material.lobe = lobe;
+          session.useMaterial(material);
+        },
+        0, 1, 0);
+    step(
+        "filtering toggled (a variant compiled before)", "nothing",
+        [&]
+        {
+          material.filtered = !material.filtered;
+          session.useMaterial(material);
+        },
+        0, 0, 0);
+  }
+
+  const BenchOptions& options_;
+  std::ostream& log_;
+  BenchResult& result_;
+  std::string cache_;
+  std::map<std::string, BenchMesh> meshes_;
+  std::map<std::string, std::shared_ptr<const Environment>> environments_;
+};
+} // namespace
+
+BenchResult runBench(const BenchOptions& options, std::ostream& log)
+{
+  const auto start = std::chrono::steady_clock::now();
+  BenchResult result;
+  result.quick = options.quick;
+  result.size = options.size > 0 ? options.size : (options.quick ? 128 : 512);
+  result.commandLine = options.commandLine;
+  result.machine = machineDescription();
+  result.loadBefore = loadAverage();
+  const std::vector<ScenePlan> plans =
+      options.quick
+          ? planQuick()
+          : planFull(options.hdriDirectory.empty() ? kBlenderHdriDirectory : options.hdriDirectory);
+  Runner runner(options, log, result);
+  {
+    RenderSession session(result.size, result.size);
+    log << "bench: " << plans.size() << " scene(s) at " << result.size << "x" << result.size
+        << std::endl;
+    for (const ScenePlan& plan : plans)
+    {
+      log << "scene " << plan.mesh << " " << environmentName(plan.environment) << std::endl;
+      runner.runScene(plan, session);
+    }
+    result.renderer = session.rendererName();
+  }
+  if (!options.quick)
+  {
+    log << "scene: the default scene at " << kDefaultWidth << "x" << kDefaultHeight << std::endl;
+    runner.runDefaultScene();
+  }
+  result.goals = evaluateGoals(result);
+  result.qualityFits = fitQuality(result.rows);
+  result.loadAfter = loadAverage();
+  result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return result;
+}
+} // namespace aniso::bench

@@ -1,0 +1,117 @@
+#pragma once
+// `aniso bench`: renders the fixed scene set over the renderer's configurations and VTK's own
+// physically based anisotropy, times every configuration (median over several frames), and
+// measures its error against the converged CPU reference integrator. Results: rows for a CSV
+// file and a Markdown report, an error-against-time plot (SVG and PNG), the goals of the
+// benchmark issue evaluated, the counters that show nothing is redone when nothing changed, and
+// the fitted model of the adaptive quality control.
+#include "brdf/ashikhmin_shirley.h"
+
+#include <cstdint>
+#include <ostream>
+#include <string>
+#include <vector>
+
+namespace aniso::bench
+{
+struct BenchOptions
+{
+  bool quick = false;         // the small set: sphere under the studio, fewer configurations
+  int size = 0;               // image side in pixels; 0: 128 quick, 512 full
+  std::string outDirectory;   // where bench.csv, bench.md, bench.svg, bench.png go
+  std::string cacheDirectory; // reference cache; empty: $XDG_CACHE_HOME/aniso/bench (or ~/.cache)
+  std::string hdriDirectory;  // HDRIs of the full set; empty: the Blender studio lights
+  std::string commandLine;    // as typed, for the report
+};
+
+struct BenchRow
+{
+  // "sweep" (one frame of N samples), "progressive" (frames accumulated), "vtk" (VTK's PBR);
+  // "default", "default-progressive", "default-vtk" for the default scene at 800x600.
+  std::string kind;
+  std::string mesh;
+  std::string environment;
+  AsLobe lobe;
+  std::string method;      // "exact", "exact+mis", "split-sum", "vtk-pbr"
+  std::string filtered;    // "on", "off", "-"
+  std::string halfVectors; // "lut", "shader", "-"
+  int samples = 0;         // per pixel and frame
+  int frames = 1;          // accumulated into the measured image
+  int width = 0;
+  int height = 0;
+  int64_t coveredPixels = 0;
+  int runs = 0;                       // timed frames behind the median
+  double medianFrameSeconds = 0.0;    // of one frame, after a warm-up frame
+  double firstFrameSeconds = 0.0;     // the first frame of the configuration (compiles, uploads)
+  double totalSeconds = 0.0;          // progressive: the frames up to this one, summed
+  double medianFrameCpuSeconds = 0.0; // process CPU time of a frame (the driver renders on the
+  double totalCpuSeconds = 0.0;       // CPU here), less sensitive to a loaded machine
+  double samplesPerSecond = 0.0;      // covered pixels x samples x frames / time
+  double relativeL2 = 0.0;
+  double percentile99 = 0.0;
+  double referenceBound = 0.0; // the reference's own relative L2 error bound
+  int comparedPixels = 0;
+};
+
+// One step of the counter check: what changed and what the session counted meanwhile.
+struct CounterStep
+{
+  std::string change;
+  std::string expected;
+  uint64_t shaderPrograms = 0;
+  uint64_t textureUploads = 0;
+  uint64_t lutBakes = 0;
+  uint64_t environmentBakes = 0;
+  bool asExpected = false;
+};
+
+struct Goal
+{
+  std::string name;
+  bool met = false;
+  std::string figures; // the numbers behind the verdict
+};
+
+// The adaptive quality control's model for one lobe and filtering: relative L2 ~ a N^-p,
+// fitted to the sweep rows of `exact` with half vectors from the LUT.
+struct QualityFit
+{
+  AsLobe lobe;
+  bool filtered = false;
+  double a = 0.0;
+  double p = 0.0;
+  int points = 0;
+};
+
+struct BenchResult
+{
+  std::vector<BenchRow> rows;
+  std::vector<CounterStep> counters;
+  std::vector<Goal> goals;
+  std::vector<QualityFit> qualityFits;
+  std::string renderer; // OpenGL renderer string
+  std::string machine;  // CPU model and core count
+  double seconds = 0.0; // the whole run
+  double loadBefore = 0.0;
+  double loadAfter = 0.0;
+  int size = 0;
+  bool quick = false;
+  std::string commandLine;
+};
+
+// Progress lines go to LOG. Throws aniso::Error on a failed render or file.
+BenchResult runBench(const BenchOptions& options, std::ostream& log);
+
+// The goals of the benchmark issue (item 3) from the rows: the best mode against the published
+// method at 256 samples, the interactive frame against VTK's, the time to converge to 1%.
+std::vector<Goal> evaluateGoals(const BenchResult& result);
+// a and p of relative L2 = a N^-p per lobe and filtering, least squares in log-log over the
+// sphere-under-the-studio rows of `exact` (LUT half vectors, lobe sampling) with N >= 4.
+std::vector<QualityFit> fitQuality(const std::vector<BenchRow>& rows);
+
+// bench.csv, bench.md, bench.svg, bench.png and quality_model.txt in DIRECTORY (created).
+void writeBenchOutputs(const BenchResult& result, const std::string& directory);
+
+std::string benchCsv(const BenchResult& result);
+std::string benchMarkdown(const BenchResult& result, const std::string& plotFile);
+} // namespace aniso::bench

@@ -1,0 +1,298 @@
+// `aniso bench` and the pieces it measures with.
+//   - BenchCommand.QuickRunIsCompleteAndConsistent runs `aniso bench --quick` (an X display is
+//     needed: ./test runs the suite under xvfb-run) and checks its CSV: every configuration of
+//     the quick set is there for each of the four materials, with VTK's row and the progressive
+//     rows; every error is finite; the error of `exact` falls as N grows; the references' own
+//     error bounds lie below the smallest error reported; the report and both plots exist.
+//   - The CPU pixel rays (the reference's geometry) against the analytic unit sphere.
+//   - The flange part against its analytic volume (closed, outward-facing surface).
+//   - The plot's raster and SVG outputs against each other and the series' colour.
+#include "MeshValidation.h"
+#include "bench_scenes.h"
+#include "cli_runner.h"
+#include "flange_mesh.h"
+#include "image/image.h"
+#include "pixel_geometry.h"
+#include "plot.h"
+
+#include <cmath>
+#include <cstdlib>
+#include <glm/geometric.hpp>
+#include <glm/gtc/matrix_transform.hpp>
+#include <map>
+#include <optional>
+#include <sstream>
+#include <vtkPolyData.h>
+
+namespace aniso_test
+{
+namespace
+{
+using namespace aniso;
+using namespace aniso::bench;
+
+bool haveDisplay()
+{
+  const char* display = std::getenv("DISPLAY");
+  return display && *display;
+}
+
+std::vector<std::map<std::string, std::string>> readCsv(const std::string& text)
+{
+  std::istringstream in(text);
+  std::string line;
+  std::getline(in, line);
+  std::vector<std::string> header;
+  std::istringstream h(line);
+  for (std::string field; std::getline(h, field, ',');)
+  {
+    header.push_back(field);
+  }
+  std::vector<std::map<std::string, std::string>> rows;
+  while (std::getline(in, line))
+  {
+    std::istringstream fields(line);
+    std::map<std::string, std::string> row;
+    std::size_t i = 0;
+    for (std::string field; std::getline(fields, field, ',') && i < header.size(); ++i)
+    {
+      row[header[i]] = field;
+    }
+    EXPECT_EQ(row.size(), header.size()) << line;
+    rows.push_back(row);
+  }
+  return rows;
+}
+
+using BenchCommand = CliTest;
+
+TEST_F(BenchCommand, QuickRunIsCompleteAndConsistent)
+{
+  if (!haveDisplay())
+  {
+    GTEST_SKIP() << "no X display: run under xvfb-run (./test does)";
+  }
+  const Outcome r = run({"bench", "--quick", "--out", path("out").string()});
+  ASSERT_EQ(r.exitCode, 0) << r.err << r.out;
+  for (const char* file : {"bench.csv", "bench.md", "bench.svg", "bench.png", "quality_model.txt"})
+  {
+    EXPECT_TRUE(fs::is_regular_file(path("out") / file)) << file;
+  }
+  const auto rows = readCsv(slurp(path("out") / "bench.csv"));
+
+  // The quick set as documented in `aniso bench --help` and docs/BENCHMARKS.md: kind, method,
+  // filtered, half vectors, N (frames for the progressive rows).
+  struct Expected
+  {
+    std::string kind, method, filtered, halfVectors;
+    int samples;
+    int frames;
+  };
+  std::vector<Expected> expected;
+  for (int n : {1, 4, 16, 64, 256})
+  {
+    expected.push_back({"sweep", "exact", "off", "lut", n, 1});
+  }
+  for (int n : {1, 4, 16, 64})
+  {
+    expected.push_back({"sweep", "exact", "on", "lut", n, 1});
+  }
+  expected.push_back({"sweep", "split-sum", "off", "lut", 16, 1});
+  expected.push_back({"sweep", "split-sum", "off", "lut", 256, 1});
+  expected.push_back({"sweep", "split-sum", "on", "lut", 16, 1});
+  expected.push_back({"sweep", "exact", "off", "shader", 16, 1});
+  expected.push_back({"sweep", "exact+mis", "off", "lut", 16, 1});
+  for (int frames : {1, 2, 4, 8})
+  {
+    expected.push_back({"progressive", "exact", "on", "lut", 16, frames});
+  }
+  expected.push_back({"vtk", "vtk-pbr", "-", "-", 1, 1});
+
+  double smallestError = INFINITY;
+  double largestBound = 0.0;
+  for (const std::string lobe : {"10,10", "100,10", "1000,100", "20000,70"})
+  {
+    for (const Expected& e : expected)
+    {
+      int found = 0;
+      for (const auto& row : rows)
+      {
+        found += row.at("kind") == e.kind && row.at("nu") + "," + row.at("nv") == lobe &&
+                 row.at("method") == e.method && row.at("filtered") == e.filtered &&
+                 row.at("half_vectors") == e.halfVectors &&
+                 std::stoi(row.at("samples")) == e.samples &&
+                 std::stoi(row.at("frames")) == e.frames;
+      }
+      EXPECT_EQ(found, 1) << lobe << " " << e.kind << " " << e.method << " " << e.filtered << " "
+                          << e.halfVectors << " N=" << e.samples << " x" << e.frames;
+    }
+  }
+  EXPECT_EQ(rows.size(), 4 * expected.size());
+
+  std::map<std::string, std::vector<std::pair<int, double>>> exactByFamily;
+  for (const auto& row : rows)
+  {
+    const double error = std::stod(row.at("relative_l2"));
+    const double p99 = std::stod(row.at("p99_error"));
+    const double bound = std::stod(row.at("reference_bound"));
+    EXPECT_TRUE(std::isfinite(error) && error > 0.0) << row.at("method") << " " << error;
+    EXPECT_TRUE(std::isfinite(p99) && p99 > 0.0) << row.at("method") << " " << p99;
+    EXPECT_GT(std::stod(row.at("median_frame_ms")), 0.0);
+    EXPECT_GE(std::stoi(row.at("compared_pixels")), 40);
+    smallestError = std::min(smallestError, error);
+    largestBound = std::max(largestBound, bound);
+    if (row.at("kind") == "sweep" && row.at("method") == "exact" && row.at("half_vectors") == "lut")
+    {
+      exactByFamily[row.at("nu") + "," + row.at("nv") + " filtered " + row.at("filtered")]
+          .push_back({std::stoi(row.at("samples")), error});
+    }
+  }
+  // exact is an unbiased estimator: more samples, less error (for the unfiltered one the
+  // quasi-Monte-Carlo error; filtering adds a bias that shrinks with N as well).
+  EXPECT_EQ(exactByFamily.size(), 8u);
+  for (auto& [family, errors] : exactByFamily)
+  {
+    std::sort(errors.begin(), errors.end());
+    for (std::size_t i = 1; i < errors.size(); ++i)
+    {
+      EXPECT_LT(errors[i].second, errors[i - 1].second)
+          << family << ": N=" << errors[i].first << " against N=" << errors[i - 1].first;
+    }
+  }
+  EXPECT_LT(largestBound, smallestError);
+
+  const std::string md = slurp(path("out") / "bench.md");
+  EXPECT_NE(md.find("### Goals"), std::string::npos);
+  EXPECT_NE(md.find("### Nothing is redone when nothing changed"), std::string::npos);
+  EXPECT_EQ(md.find("| **no** |"), std::string::npos) << "a counter step did something";
+  const std::string svg = slurp(path("out") / "bench.svg");
+  EXPECT_EQ(svg.rfind("<svg", 0), 0u);
+  EXPECT_NE(svg.find("</svg>"), std::string::npos);
+}
+
+// The rays through the pixels of a perspective camera hit the faceted built-in sphere where
+// they hit the analytic unit sphere, within the facets' sag, with the analytic normal and the
+// tangent along the parallels.
+TEST(PixelGeometry, MatchesTheAnalyticSphere)
+{
+  const BenchMesh sphere = makeBenchMesh("sphere");
+  const glm::dmat4 worldToClip =
+      glm::perspective(glm::radians(30.0), 1.0, 0.5, 10.0) *
+      glm::lookAt(glm::dvec3(0.0, -4.0, 0.0), glm::dvec3(0.0), glm::dvec3(0.0, 0.0, 1.0));
+  const glm::dmat4 clipToWorld = glm::inverse(worldToClip);
+  const int size = 48;
+  const std::vector<PixelSample> pixels = castPixels(sphere.triangles, clipToWorld, size, size);
+  int compared = 0;
+  for (int y = 0; y < size; ++y)
+  {
+    for (int x = 0; x < size; ++x)
+    {
+      const PixelRay ray = pixelRay(clipToWorld, x, y, size, size);
+      const double b = glm::dot(ray.origin, ray.direction);
+      const double discriminant = b * b - (glm::dot(ray.origin, ray.origin) - 1.0);
+      const PixelSample& s = pixels[std::size_t(y) * size + x];
+      if (discriminant < 0.0)
+      {
+        EXPECT_FALSE(s.hit) << x << "," << y;
+        continue;
+      }
+      const glm::dvec3 hit = ray.origin + (-b - std::sqrt(discriminant)) * ray.direction;
+      if (glm::dot(hit, -ray.direction) < 0.2 || std::abs(hit.z) > 0.95)
+      {
+        continue; // near the silhouette or the poles the facets decide
+      }
+      ASSERT_TRUE(s.hit) << x << "," << y;
+      ++compared;
+      // 128 segments around and 64 from pole to pole: a facet lies at most
+      // (half its diagonal)^2 / 2 = 6.1e-4 inside the sphere, and the ray runs 1 / (n.v) times
+      // that between the two surfaces.
+      EXPECT_LT(glm::length(s.position - hit), 6.2e-4 / glm::dot(hit, -ray.direction));
+      EXPECT_GT(glm::dot(s.normal, hit), 0.9999);
+      EXPECT_NEAR(glm::dot(s.view, -ray.direction), 1.0, 1e-12);
+      const glm::dvec3 parallel = glm::normalize(glm::dvec3(-hit.y, hit.x, 0.0));
+      EXPECT_GT(glm::dot(s.tangent, parallel), 0.999);
+      EXPECT_NEAR(glm::dot(s.tangent, s.normal), 0.0, 1e-12);
+    }
+  }
+  EXPECT_GT(compared, 600);
+}
+
+// The flange is closed and manifold, wound outwards: its volume by the divergence theorem
+// matches the volume of the solid computed from its dimensions (Pappus for the turned rings).
+TEST(FlangeMesh, ClosedOutwardAndOfTheRightVolume)
+{
+  vtkSmartPointer<vtkPolyData> flange = makeFlange();
+  const EdgeCounts edges = countEdges(flange);
+  EXPECT_EQ(edges.boundary, 0);
+  EXPECT_EQ(edges.nonManifold, 0);
+  double volume = 0.0;
+  for (vtkIdType c = 0; c < flange->GetNumberOfCells(); ++c)
+  {
+    double p[3][3];
+    vtkIdType count = 0;
+    const vtkIdType* ids = nullptr;
+    flange->GetCellPoints(c, count, ids);
+    ASSERT_EQ(count, 3);
+    for (int i = 0; i < 3; ++i)
+    {
+      flange->GetPoint(ids[i], p[i]);
+    }
+    const glm::dvec3 a(p[0][0], p[0][1], p[0][2]);
+    const glm::dvec3 b(p[1][0], p[1][1], p[1][2]);
+    const glm::dvec3 d(p[2][0], p[2][1], p[2][2]);
+    volume += glm::dot(a, glm::cross(b, d)) / 6.0;
+  }
+  // Flange disc r 0.25..1 x 0.18, minus the rim chamfer (a triangle of legs 0.03 at radius
+  // 1 - 0.01), minus six holes of radius 0.07; hub r 0.25..0.42 from 0.18 to 0.55, minus its
+  // chamfer (legs 0.03 at radius 0.42 - 0.01), plus the fillet (the square of side 0.06 in the
+  // corner minus the quarter disc centred at its far corner).
+  const double pi = M_PI;
+  const double disc = pi * (1.0 - 0.25 * 0.25) * 0.18;
+  const double rimChamfer = 2.0 * pi * (1.0 - 0.01) * 0.5 * 0.03 * 0.03;
+  const double holes = 6.0 * pi * 0.07 * 0.07 * 0.18;
+  const double hub = pi * (0.42 * 0.42 - 0.25 * 0.25) * (0.55 - 0.18);
+  const double hubChamfer = 2.0 * pi * (0.42 - 0.01) * 0.5 * 0.03 * 0.03;
+  const double filletArea = 0.06 * 0.06 * (1.0 - pi / 4.0);
+  const double filletCentroid = 0.42 + 0.06 * (5.0 / 6.0 - pi / 4.0) / (1.0 - pi / 4.0);
+  const double fillet = 2.0 * pi * filletCentroid * filletArea;
+  const double expected = disc - rimChamfer - holes + hub - hubChamfer + fillet;
+  // 192 segments around and 88-gon holes: the polygons hold about 0.02% less area; 8 segments
+  // make the fillet's arc.
+  EXPECT_NEAR(volume / expected, 1.0, 1e-3);
+}
+
+// The PNG shows what the SVG describes: the same size, and the series drawn in its colour.
+TEST(Plot, RasterMatchesTheSvg)
+{
+  Figure figure;
+  figure.title = "error against time";
+  figure.columns = 1;
+  PlotPanel panel;
+  panel.title = "panel";
+  panel.xLabel = "time [s]";
+  panel.yLabel = "error";
+  PlotSeries series;
+  series.label = "series";
+  series.color = {0.0, 0.0, 1.0};
+  series.connect = true;
+  series.points = {{0.01, 1.0}, {0.1, 0.1}, {1.0, 0.01}};
+  panel.series = {series};
+  figure.panels = {panel};
+  const std::string svg = figureToSvg(figure);
+  const Image image = figureToImage(figure);
+  EXPECT_NE(svg.find("width=\"" + std::to_string(image.width) + "\""), std::string::npos);
+  EXPECT_NE(svg.find("height=\"" + std::to_string(image.height) + "\""), std::string::npos);
+  EXPECT_NE(svg.find("rgb(0,0,255)"), std::string::npos);
+  int blue = 0;
+  for (int y = 0; y < image.height; ++y)
+  {
+    for (int x = 0; x < image.width; ++x)
+    {
+      blue += image.at(x, y, 2) > 0.9f && image.at(x, y, 0) < 0.1f && image.at(x, y, 1) < 0.1f;
+    }
+  }
+  // Two decades of a 2-pixel line on each axis and the markers: hundreds of pixels.
+  EXPECT_GT(blue, 300);
+}
+} // namespace
+} // namespace aniso_test
