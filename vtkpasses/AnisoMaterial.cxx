@@ -411,6 +411,7 @@ public:
     {
       bind(program, "anisoEnvCdf", lighting->samplingCdfTexture(window));
       bind(program, "anisoEnvPdf", lighting->samplingPdfTexture(window));
+      bind(program, "anisoEnvGuide", lighting->samplingGuideTexture(window));
       const EnvironmentDistribution& d = lighting->samplingDistribution();
       program->SetUniform2i("anisoEnvGrid", std::array<int, 2>{d.width(), d.height()}.data());
       program->SetUniformf("anisoLobeFraction", static_cast<float>(misLobeFraction(settings.lobe)));

@@ -68,6 +68,31 @@ vtkTextureObject* EnvironmentLighting::cubeTexture(vtkOpenGLRenderWindow* window
   return texture_;
 }
 
+Image samplingGuideTable(const Image& cdf, int width, int height)
+{
+  Image guide(cdf.width, cdf.height, 1);
+  auto fill = [&](int row, int count)
+  {
+    int interval = 0;
+    for (int j = 0; j <= count; ++j)
+    {
+      const float u = static_cast<float>(j) / static_cast<float>(count);
+      // The last interval whose lower CDF value is <= u (the CDF never falls).
+      while (interval + 1 < count && cdf.at(interval + 1, row, 0) <= u)
+      {
+        ++interval;
+      }
+      guide.at(j, row, 0) = static_cast<float>(interval);
+    }
+  };
+  for (int y = 0; y < height; ++y)
+  {
+    fill(y, width);
+  }
+  fill(height, height);
+  return guide;
+}
+
 const EnvironmentDistribution& EnvironmentLighting::samplingDistribution()
 {
   if (!distribution_)
@@ -81,11 +106,11 @@ const EnvironmentDistribution& EnvironmentLighting::samplingDistribution()
 
 void EnvironmentLighting::uploadSamplingTables(vtkOpenGLRenderWindow* window)
 {
-  if (cdfTexture_ && pdfTexture_ && samplingWindow_ == window)
+  if (cdfTexture_ && pdfTexture_ && guideTexture_ && samplingWindow_ == window)
   {
     return;
   }
-  for (vtkTextureObject* t : {cdfTexture_.Get(), pdfTexture_.Get()})
+  for (vtkTextureObject* t : {cdfTexture_.Get(), pdfTexture_.Get(), guideTexture_.Get()})
   {
     if (t && samplingWindow_)
     {
@@ -101,6 +126,10 @@ void EnvironmentLighting::uploadSamplingTables(vtkOpenGLRenderWindow* window)
   pdfTexture_ = uploadFloatTexture(window, pdf.width, pdf.height, 1, pdf.data.data(),
                                    TextureFiltering::Nearest, TextureWrap::Clamp,
                                    "environment sampling density");
+  const Image guide = samplingGuideTable(cdf, d.width(), d.height());
+  guideTexture_ = uploadFloatTexture(window, guide.width, guide.height, 1, guide.data.data(),
+                                     TextureFiltering::Nearest, TextureWrap::Clamp,
+                                     "environment sampling guide");
   samplingWindow_ = window;
 }
 
@@ -116,11 +145,17 @@ vtkTextureObject* EnvironmentLighting::samplingPdfTexture(vtkOpenGLRenderWindow*
   return pdfTexture_;
 }
 
+vtkTextureObject* EnvironmentLighting::samplingGuideTexture(vtkOpenGLRenderWindow* window)
+{
+  uploadSamplingTables(window);
+  return guideTexture_;
+}
+
 void EnvironmentLighting::releaseGraphicsResources(vtkWindow* window)
 {
   if (samplingWindow_ == window)
   {
-    for (vtkTextureObject* t : {cdfTexture_.Get(), pdfTexture_.Get()})
+    for (vtkTextureObject* t : {cdfTexture_.Get(), pdfTexture_.Get(), guideTexture_.Get()})
     {
       if (t)
       {
@@ -129,6 +164,7 @@ void EnvironmentLighting::releaseGraphicsResources(vtkWindow* window)
     }
     cdfTexture_ = nullptr;
     pdfTexture_ = nullptr;
+    guideTexture_ = nullptr;
     samplingWindow_ = nullptr;
   }
   if (texture_ && textureWindow_ == window)

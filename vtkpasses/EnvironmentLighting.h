@@ -21,6 +21,13 @@ class vtkWindow;
 
 namespace aniso
 {
+// Guide table of a CDF table (the layout of EnvironmentDistribution::cdfTable): entry j of a CDF
+// of `count` intervals holds the interval containing j / count, for j = 0..count, so the interval
+// of any u lies between the entries of floor(u count) and the next: a search starts there and
+// takes no step where the density is high (the sun) instead of log2(count) steps everywhere.
+// Same size and rows as cdf; computed from its float values, the ones the shader compares.
+Image samplingGuideTable(const Image& cdf, int width, int height);
+
 class EnvironmentLighting
 {
 public:
@@ -58,9 +65,11 @@ public:
   // about the sun's size, so its samples land on it), shared through sharedDistribution.
   const EnvironmentDistribution& samplingDistribution();
   // Its shader tables in WINDOW's context (R32F, nearest, read with texelFetch): the CDFs
-  // (EnvironmentDistribution::cdfTable) and the density per solid angle (pdfTable).
+  // (EnvironmentDistribution::cdfTable), the density per solid angle (pdfTable) and the guide
+  // table (samplingGuideTable).
   vtkTextureObject* samplingCdfTexture(vtkOpenGLRenderWindow* window);
   vtkTextureObject* samplingPdfTexture(vtkOpenGLRenderWindow* window);
+  vtkTextureObject* samplingGuideTexture(vtkOpenGLRenderWindow* window);
   void releaseGraphicsResources(vtkWindow* window);
 
 private:
@@ -74,6 +83,7 @@ private:
   std::shared_ptr<const EnvironmentDistribution> distribution_;
   vtkSmartPointer<vtkTextureObject> cdfTexture_;
   vtkSmartPointer<vtkTextureObject> pdfTexture_;
+  vtkSmartPointer<vtkTextureObject> guideTexture_;
   vtkWeakPointer<vtkOpenGLRenderWindow> samplingWindow_;
 
   void uploadSamplingTables(vtkOpenGLRenderWindow* window);

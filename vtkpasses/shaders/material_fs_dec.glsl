@@ -38,6 +38,7 @@ uniform vec2 anisoExponents; // (n_u, n_v)
 // Environment importance sampling (core/env/env_sampling.h), in environment coordinates.
 uniform sampler2D anisoEnvCdf; // R32F: row y < H the CDF of grid row y, row H the marginal
 uniform sampler2D anisoEnvPdf; // R32F, W x H: density per solid angle of each grid texel
+uniform sampler2D anisoEnvGuide; // R32F, as anisoEnvCdf: entry j = the interval of u = j / count
 uniform ivec2 anisoEnvGrid;    // (W, H)
 uniform float anisoLobeFraction; // share of the lobe technique in the one-sample MIS
 #endif
@@ -199,11 +200,13 @@ float anisoLog2HalfVectorPdf(vec3 h)
 
 #ifdef ANISO_ENVIRONMENT_MIS
 // Index i in [0, count) with cdf(i) <= x < cdf(i + 1) in row `row` of the CDF table, by
-// bisection (cdf(0) = 0 <= x < 1 = cdf(count)): never an interval of zero width.
+// bisection between the guide table's entries for floor(x count) and the next (few steps or
+// none, instead of log2(count)): never an interval of zero width.
 int anisoFindInterval(int row, int count, float x)
 {
-  int lo = 0;
-  int hi = count;
+  int j = min(int(x * float(count)), count - 1);
+  int lo = int(texelFetch(anisoEnvGuide, ivec2(j, row), 0).r);
+  int hi = int(texelFetch(anisoEnvGuide, ivec2(j + 1, row), 0).r) + 1;
   while (hi - lo > 1)
   {
     int mid = (lo + hi) / 2;
