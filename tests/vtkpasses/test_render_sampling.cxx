@@ -5,6 +5,7 @@
 // n = p, t = (-y, x, 0)/|.| (the parallels, as the built-in sphere's UV tangents). Metric: relative
 // L2 over the compared pixels, sqrt(sum |gpu - ref|^2 / sum |ref|^2) over RGB.
 #include "BuiltinMeshes.h"
+#include "EnvironmentLighting.h"
 #include "MaterialShaderSource.h"
 #include "OffscreenRenderer.h"
 #include "env/environment.h"
@@ -13,6 +14,7 @@
 #include "reference/reference_integrator.h"
 #include "render_test_helpers.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <functional>
@@ -190,6 +192,44 @@ TEST(SamplingVariant, LobeShareFollowsRoughness)
     EXPECT_LE(c, 15.0 / 16.0);
     previous = c;
   }
+}
+
+// GL-free: the guide table brackets the interval of every u: for j = floor(u count), the
+// interval found by a linear scan of the float CDF (the largest i < count with cdf(i) <= u) lies
+// between guide(j) and guide(j + 1), in every conditional row and the marginal, for the sun and
+// sky (a density spanning 1e5, so long runs of u fall into one texel).
+TEST(SamplingVariant, GuideTableBracketsEveryInterval)
+{
+  EnvSamplingOptions options;
+  options.width = 64;
+  options.supersample = 2;
+  const EnvironmentDistribution d = EnvironmentDistribution::bake(*sunSky(), options);
+  const Image cdf = d.cdfTable();
+  const Image guide = samplingGuideTable(cdf, d.width(), d.height());
+  ASSERT_EQ(guide.width, cdf.width);
+  ASSERT_EQ(guide.height, cdf.height);
+  int checked = 0;
+  for (int row = 0; row <= d.height(); ++row)
+  {
+    const int count = row < d.height() ? d.width() : d.height();
+    for (int k = 0; k < 4096; ++k)
+    {
+      const float u = (static_cast<float>(k) + 0.37f) / 4096.0f;
+      int interval = 0;
+      for (int i = 0; i < count; ++i)
+      {
+        if (cdf.at(i, row, 0) <= u)
+        {
+          interval = i;
+        }
+      }
+      const int j = std::min(static_cast<int>(u * static_cast<float>(count)), count - 1);
+      EXPECT_LE(static_cast<int>(guide.at(j, row, 0)), interval) << row << " " << u;
+      EXPECT_GE(static_cast<int>(guide.at(j + 1, row, 0)), interval) << row << " " << u;
+      ++checked;
+    }
+  }
+  EXPECT_EQ(checked, (d.height() + 1) * 4096);
 }
 
 // A rough lobe next to a sun of 1e5: lobe samples almost never hit the sun (one in ~30,000 for
