@@ -8,7 +8,9 @@
 #include "maps/quaternion_map.h"
 #include "maps/tpr_map.h"
 
+#include <algorithm>
 #include <filesystem>
+#include <string>
 #include <vtkPolyData.h>
 
 namespace aniso
@@ -94,13 +96,23 @@ std::shared_ptr<const Environment> SceneAssets::environment(const std::string& s
 
 const SceneAssets::LoadedImage& SceneAssets::rawImage(const std::string& path)
 {
-  return images_.get(path,
-                     [&]
-                     {
-                       LoadedImage loaded;
-                       loaded.image = std::make_shared<const Image>(readImage(path, &loaded.info));
-                       return loaded;
-                     });
+  const LoadedImage& loaded =
+      images_.get(path,
+                  [&]
+                  {
+                    LoadedImage image;
+                    image.image = std::make_shared<const Image>(readImage(path, &image.info));
+                    return image;
+                  });
+  const int side = std::max(loaded.image->width, loaded.image->height);
+  if (side > maxTextureSide_)
+  {
+    throw errorAbout(path, std::to_string(loaded.image->width) + "x" +
+                               std::to_string(loaded.image->height) + " texels, more than the " +
+                               std::to_string(maxTextureSide_) +
+                               " per side this OpenGL takes for a texture");
+  }
+  return loaded;
 }
 
 std::shared_ptr<const Image> SceneAssets::map(const std::string& key, const std::string& text)

@@ -70,6 +70,12 @@ public:
   // vectors, tpr from a pattern or a file).
   std::shared_ptr<const Image> map(const std::string& key, const std::string& text);
 
+  // The largest texture side the view's OpenGL takes (GL_MAX_TEXTURE_SIZE); map files larger
+  // than that are refused with their name. Until the view has asked its OpenGL:
+  // kDefaultMaxTextureSide, the common limit of current implementations (llvmpipe's too).
+  static constexpr int kDefaultMaxTextureSide = 16384;
+  void setMaxTextureSide(int side) { maxTextureSide_ = side; }
+
 private:
   struct Surface
   {
@@ -85,6 +91,7 @@ private:
   const LoadedImage& rawImage(const std::string& path);
 
   SceneModel* model_;
+  int maxTextureSide_ = kDefaultMaxTextureSide;
   RecentCache<std::shared_ptr<LoadedMesh>> meshes_{3};
   RecentCache<std::shared_ptr<const Surface>> surfaces_{3};
   RecentCache<std::shared_ptr<const Environment>> environments_{3};

@@ -36,8 +36,9 @@
 
 namespace aniso
 {
-// VTK's error text (a shader that does not compile, a failed GL call) goes to SINK while the
-// view draws; everything else goes where it went before.
+// VTK's error text (a shader that does not compile, a failed GL call) and generic warnings (the
+// material's failures) go to SINK while the view draws; everything goes where it went before
+// too.
 class ErrorForwardingWindow : public vtkOutputWindow
 {
 public:
@@ -45,6 +46,7 @@ public:
   vtkSmartPointer<vtkOutputWindow> previous;
   std::function<void(const std::string&)> sink;
   bool drawing = false;
+  bool spoke = false; // something went to SINK since the flag was cleared
 
   void DisplayText(const char* text) override { previous->DisplayText(text); }
   void DisplayErrorText(const char* text) override
@@ -52,6 +54,7 @@ public:
     previous->DisplayErrorText(text);
     if (drawing && sink && text)
     {
+      spoke = true;
       sink(text);
     }
   }
@@ -59,6 +62,12 @@ public:
   void DisplayGenericWarningText(const char* text) override
   {
     previous->DisplayGenericWarningText(text);
+    // The material reports what failed while drawing (a texture that could not be made) so.
+    if (drawing && sink && text)
+    {
+      spoke = true;
+      sink(text);
+    }
   }
   void DisplayDebugText(const char* text) override { previous->DisplayDebugText(text); }
 
@@ -92,7 +101,8 @@ bool needsLuts(const MaterialSettings& s)
 // "ERROR: In FILE, line N\nvtkClass (0x...): what\n" -> "what": the words, not the source.
 std::string plainVtkError(std::string text)
 {
-  if (text.rfind("ERROR: In ", 0) == 0 && text.find('\n') != std::string::npos)
+  if ((text.rfind("ERROR: In ", 0) == 0 || text.rfind("Generic Warning: In ", 0) == 0) &&
+      text.find('\n') != std::string::npos)
   {
     text = text.substr(text.find('\n') + 1);
   }
@@ -123,7 +133,13 @@ SceneView::SceneView(SceneModel* model, SceneAssets* assets, LutScheduler* luts,
 {
   errorOutput_->previous = vtkOutputWindow::GetInstance();
   errorOutput_->sink = [this](const std::string& text)
-  { reportRenderError("OpenGL: " + plainVtkError(text)); };
+  {
+    const std::string plain = plainVtkError(text);
+    const std::string material = "anisotropic material: ";
+    // The material's messages name their subject already.
+    reportRenderError(plain.rfind(material, 0) == 0 ? plain.substr(material.size())
+                                                    : "OpenGL: " + plain);
+  };
   vtkOutputWindow::SetInstance(errorOutput_);
 
   // One lighting bake at a time: a second would only compete for the cores with the first.
@@ -571,19 +587,36 @@ void SceneView::requestRender()
 void SceneView::renderNow()
 {
   errorOutput_->drawing = true;
+  errorOutput_->spoke = false;
   window_->Render();
   errorOutput_->drawing = false;
   auto* gl = vtkOpenGLRenderWindow::SafeDownCast(window_);
   if (gl && gl->IsCurrent())
   {
+    if (!maxTextureSideKnown_)
+    {
+      // Map files the GL cannot hold are then refused before they reach the scene.
+      GLint side = 0;
+      glGetIntegerv(GL_MAX_TEXTURE_SIZE, &side);
+      if (side > 0)
+      {
+        assets_->setMaxTextureSide(side);
+        maxTextureSideKnown_ = true;
+      }
+    }
     // Errors VTK did not report itself (it checks only in debug builds); a few at most, as
-    // glGetError returns one per call.
+    // glGetError returns one per call. When VTK or the material said what failed, the GL's
+    // code for the same failure adds nothing.
     for (int i = 0; i < 4; ++i)
     {
       const GLenum code = glGetError();
       if (code == GL_NO_ERROR)
       {
         break;
+      }
+      if (errorOutput_->spoke)
+      {
+        continue;
       }
       std::ostringstream message;
       message << "OpenGL: error 0x" << std::hex << code

@@ -131,6 +131,7 @@ private:
   bool lightingPending_ = false;   // a request arrived while a bake ran
   bool lightingBusyShown_ = false; // lightingBusyChanged(true) was the last sent
   std::set<std::string> reportedRenderErrors_;
+  bool maxTextureSideKnown_ = false;
   vtkSmartPointer<ErrorForwardingWindow> errorOutput_;
 };
 } // namespace aniso

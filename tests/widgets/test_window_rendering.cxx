@@ -3,12 +3,14 @@
 // stays until the latest request is in); new exponents reach the material only with tables
 // already baked off the UI thread; a renderer error reaches the user once; frames drawn while
 // things move are at half resolution and show the same picture; a camera drag across the
-// switch to half resolution turns at the trackball's rate.
+// switch to half resolution turns at the trackball's rate; a map larger than the GL's texture
+// limit is refused with its file's name.
 #include "EnvironmentLighting.h"
 #include "LutScheduler.h"
 #include "MainWindow.h"
 #include "SceneView.h"
 #include "env/environment.h"
+#include "image/image.h"
 #include "lut/lut_cache.h"
 
 #include <QApplication>
@@ -19,6 +21,7 @@
 #include <QSignalSpy>
 #include <QStandardPaths>
 #include <QSurfaceFormat>
+#include <QTemporaryDir>
 #include <QTimer>
 #include <QVTKOpenGLNativeWidget.h>
 #include <QtTest>
@@ -261,6 +264,47 @@ private slots:
     const double expected = 200.0 * step * steps / widget->width();
     QVERIFY2(std::abs(turned - expected) < 0.1 * expected,
              qPrintable(QString("turned %1 degrees, expected %2").arg(turned).arg(expected)));
+  }
+
+  // A map the GL cannot hold (wider than GL_MAX_TEXTURE_SIZE, 16384 on llvmpipe) is refused
+  // with its file's name before it reaches the scene, at start-up (a session's map) and later.
+  void oversizedMapIsRefused()
+  {
+    QTemporaryDir dir;
+    const QString wide = dir.filePath("wide.png");
+    aniso::Image image(20000, 1, 3);
+    std::fill(image.data.begin(), image.data.end(), 0.5f);
+    aniso::writeImage(wide.toStdString(), image);
+    const auto refused = [&](const std::function<void()>& action)
+    {
+      try
+      {
+        action();
+      }
+      catch (const aniso::Error& e)
+      {
+        return QString(e.what()).startsWith(wide + ": 20000x1 texels, more than the ");
+      }
+      return false;
+    };
+
+    aniso::MainWindow window;
+    window.setErrorDialogs(false);
+    QVERIFY(refused(
+        [&] {
+          window.model()->setValues({{"albedo-map", textValue(wide.toStdString())}});
+        }));
+    cheapScene(window, 2);
+    window.show();
+    aniso::SceneView* view = window.view();
+    QTRY_VERIFY_WITH_TIMEOUT(view->converged(), 60000);
+    QSignalSpy errors(&window, &aniso::MainWindow::errorReported);
+    QVERIFY(refused([&] { window.editor()->edit("ao-map", textValue(wide.toStdString())); }));
+    QCOMPARE(window.model()->text("albedo-map"), std::string());
+    QCOMPARE(window.model()->text("ao-map"), std::string());
+    QVERIFY(!window.openAny(wide)); // as a normal map
+    QCOMPARE(errors.count(), 1);
+    QCOMPARE(window.model()->text("normal-map"), std::string());
   }
 
   // What VTK or OpenGL reports while the view draws (a shader that does not compile, a GL
