@@ -297,7 +297,9 @@ TEST_P(FilteredSampling, BeatsUnfilteredAtFewSamples)
   // variants read the same one.
   base.cubeSize = 256;
   ReferenceOptions options;
-  options.relativeTolerance = 2e-3;
+  // The errors compared are 0.009 and above: a 5e-3 reference tolerance keeps the broad lobe's
+  // integration short without moving them.
+  options.relativeTolerance = 5e-3;
   const std::vector<Compared> pixels = referencePixels(
       base, [&](const Frame& frame, const glm::dvec3& v)
       { return integrateSpecular(lobe, glm::dvec3(1.0), frame, v, *env, options); });
