@@ -1,5 +1,6 @@
 #include "SceneModel.h"
 
+#include "SceneShading.h"
 #include "error.h"
 
 #include <cmath>
@@ -28,6 +29,12 @@ std::vector<SceneKey> makeKeys()
   for (const ParameterSpec& spec : parameterSpecs())
   {
     keys.push_back({spec, false});
+  }
+  // The shading model and its lights are scene settings of the application, not material
+  // parameters of the command line (which has --model and --light of its own).
+  for (const SceneKey& key : shadingSceneKeys())
+  {
+    keys.push_back(key);
   }
   // Assets are paths (or the names of built-in ones), not tunable values, so the declaration of
   // tunable parameters does not hold them.

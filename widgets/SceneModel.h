@@ -23,7 +23,8 @@ struct SceneKey
   bool asset = false;
 };
 
-// Every key, declared parameters first (in declaration order), then the assets:
+// Every key, declared parameters first (in declaration order), then the shading model's keys
+// (SceneShading.h: model, sample-material, lights), then the assets:
 // mesh (a path or builtin:sphere|torus|plate), normal-map, quaternion-map, tpr (a pattern as
 // parseTprPattern reads it, or an image path), height-map, albedo-map, ao-map, metallic-map.
 const std::vector<SceneKey>& sceneKeys();
