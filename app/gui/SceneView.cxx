@@ -350,6 +350,7 @@ void SceneView::startLightingBake()
   lightingPending_ = false;
   const int id = lightingRequest_;
   const int cubeSize = model_->integer("cube-size");
+  const bool sampling = model_->text("env-sampling") != "off";
   std::shared_ptr<const Environment> environment;
   try
   {
@@ -370,13 +371,18 @@ void SceneView::startLightingBake()
   }
   lightingInFlight_ = true;
   lightingPool_->start(
-      [this, id, environment, cubeSize]
+      [this, id, environment, cubeSize, sampling]
       {
         std::shared_ptr<EnvironmentLighting> baked;
         QString message;
         try
         {
           baked = std::make_shared<EnvironmentLighting>(environment, cubeSize);
+          if (sampling)
+          {
+            // Else baked on the first frame that samples the environment, on the UI thread.
+            baked->samplingDistribution();
+          }
         }
         catch (const Error& e)
         {

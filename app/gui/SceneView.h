@@ -2,13 +2,14 @@
 // Draws the scene of a SceneModel in a VTK render window with the anisotropic material, on
 // demand only: a change of the model or the camera asks for one frame; while things move
 // (a drag, a camera interaction) frames are cheap (one sample per pixel; the window draws them
-// at reduced resolution, see interactionChanged); once still for a
-// moment, frames accumulate (progressive refinement) until the quality's sample count is
-// reached, then nothing is drawn until something changes. Lookup tables come from the
-// LutScheduler's bakes, so a new n_u, n_v never bakes on the UI thread: until its tables are
-// ready the material keeps the previous exponents. Likewise a new environment or cube size is
-// baked (cubemap, SH9) on a worker thread: the latest request wins, the previous lighting stays
-// on screen until the new one is ready, and a failed bake is reported once and changes nothing.
+// at reduced resolution, see interactionChanged); once still for a moment, frames accumulate
+// (progressive refinement) until the quality's sample count is reached, then nothing is drawn
+// until something changes. Lookup tables come from the LutScheduler's bakes, so a new n_u, n_v
+// never bakes on the UI thread: until its tables are ready the material keeps the previous
+// exponents. Likewise a new environment or cube size is baked (cubemap, SH9 and, with
+// environment sampling on, its distribution) on a worker thread: the latest request wins, the
+// previous lighting stays on screen until the new one is ready, and a failed bake is reported
+// once and changes nothing.
 #include "DisplaySettings.h"
 #include "MaterialSettings.h"
 #include "OffscreenRenderer.h"

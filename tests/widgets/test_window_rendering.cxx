@@ -68,6 +68,8 @@ private slots:
     window.setErrorDialogs(false);
     cheapScene(window, 1);
     window.show();
+    // With environment sampling on, its distribution is part of the bake.
+    window.model()->setValues({{"env-sampling", textValue("mis")}});
     aniso::SceneView* view = window.view();
     QTRY_VERIFY_WITH_TIMEOUT(view->converged(), 60000);
     const std::shared_ptr<aniso::EnvironmentLighting> before = view->lighting();
