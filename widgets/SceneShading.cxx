@@ -70,6 +70,10 @@ std::vector<SceneKey> shadingSceneKeys()
 std::vector<Light> parseLightList(const std::string& text, const std::string& subject)
 {
   std::vector<Light> lights;
+  if (trimmed(text) == kNoLights)
+  {
+    return lights;
+  }
   std::string::size_type start = 0;
   while (start <= text.size())
   {
@@ -108,6 +112,10 @@ std::vector<Light> parseLightList(const std::string& text, const std::string& su
 
 std::string formatLightList(const std::vector<Light>& lights)
 {
+  if (lights.empty())
+  {
+    return std::string(kNoLights);
+  }
   std::string text;
   for (const Light& light : lights)
   {

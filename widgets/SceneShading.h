@@ -23,11 +23,14 @@ inline constexpr char kLightSeparator = ';';
 // and a weaker one from the right, as `aniso render` uses).
 std::vector<SceneKey> shadingSceneKeys();
 
-// The lights of TEXT (blanks around each light allowed; an empty text is no light). Throws
-// aniso::Error "SUBJECT: reason" for a light parseLight rejects or more than
+// The "lights" text of a scene without lights (declared texts cannot be empty).
+inline constexpr std::string_view kNoLights = "none";
+
+// The lights of TEXT (blanks around each light allowed; "none" or an empty text is no light).
+// Throws aniso::Error "SUBJECT: reason" for a light parseLight rejects or more than
 // LitModelMaterial's maximum of 8.
 std::vector<Light> parseLightList(const std::string& text, const std::string& subject);
-// The text parseLightList reads back to the same lights.
+// The text parseLightList reads back to the same lights ("none" for none).
 std::string formatLightList(const std::vector<Light>& lights);
 
 // Lights a lit model can draw at once (LitModelMaterial::kMaxLights).

@@ -1,12 +1,17 @@
 #include "MainWindow.h"
 
+#include "CompareWindow.h"
 #include "EnvironmentDock.h"
+#include "LightsDock.h"
+#include "LitModelMaterial.h"
+#include "LitModelView.h"
 #include "LutScheduler.h"
 #include "LutView.h"
 #include "MapsDock.h"
 #include "MaterialDock.h"
 #include "MeshLoader.h"
 #include "OffscreenRenderer.h"
+#include "SceneShading.h"
 #include "SceneView.h"
 #include "error.h"
 #include "image/image.h"
@@ -90,6 +95,8 @@ MainWindow::MainWindow(QWidget* parent)
   renderWindow_->GetInteractor()->SetInteractorStyle(style);
   setCentralWidget(vtkWidget_);
   view_ = new SceneView(&model_, &assets_, luts_, renderWindow_, this);
+  installShadingValidators(model_);
+  litView_ = new LitModelView(&model_, view_, this);
 
   materialDock_ = new MaterialDock(&editor_, this);
   mapsDock_ = new MapsDock(&editor_, this);
@@ -101,11 +108,16 @@ MainWindow::MainWindow(QWidget* parent)
   addDockWidget(Qt::LeftDockWidgetArea, mapsDock_);
   addDockWidget(Qt::RightDockWidgetArea, environmentDock_);
   addDockWidget(Qt::RightDockWidgetArea, lutDock_);
+  lightsDock_ = new LightsDock(&editor_, this);
+  addDockWidget(Qt::RightDockWidgetArea, lightsDock_);
+  tabifyDockWidget(lutDock_, lightsDock_);
 
   const auto toStatus = [this](const QString& message) { reportError(message, false); };
   connect(materialDock_, &MaterialDock::errorOccurred, this, toStatus);
   connect(mapsDock_, &MapsDock::errorOccurred, this, toStatus);
   connect(environmentDock_, &EnvironmentDock::errorOccurred, this, toStatus);
+  connect(lightsDock_, &LightsDock::errorOccurred, this, toStatus);
+  connect(litView_, &LitModelView::errorOccurred, this, toStatus);
   connect(&editor_, &SceneEditor::errorOccurred, this, toStatus);
   connect(view_, &SceneView::errorOccurred, this, toStatus);
   connect(luts_, &LutScheduler::bakeFailed, this, toStatus);
@@ -150,7 +162,10 @@ MainWindow::MainWindow(QWidget* parent)
 
 MainWindow::~MainWindow()
 {
-  // The view draws into the widget's window: it goes first.
+  // The comparison and the lit actor draw the view's mesh: they go before the view, which goes
+  // before the widget whose window it draws into.
+  delete compareWindow_;
+  delete litView_;
   delete view_;
   view_ = nullptr;
 }
@@ -230,13 +245,27 @@ void MainWindow::createMenus()
   QMenu* viewMenu = menuBar()->addMenu(tr("&View"));
   for (QDockWidget* dock :
        {static_cast<QDockWidget*>(materialDock_), static_cast<QDockWidget*>(mapsDock_),
-        static_cast<QDockWidget*>(environmentDock_), lutDock_})
+        static_cast<QDockWidget*>(environmentDock_), lutDock_,
+        static_cast<QDockWidget*>(lightsDock_)})
   {
     viewMenu->addAction(dock->toggleViewAction());
   }
   viewMenu->addSeparator();
   viewMenu->addAction(
       tr("Reset &Camera"), this, [this] { view_->resetCamera(); }, QKeySequence(tr("Ctrl+R")));
+  viewMenu->addAction(tr("Compare &Models"), this, &MainWindow::showCompareWindow);
+}
+
+void MainWindow::showCompareWindow()
+{
+  if (!compareWindow_)
+  {
+    compareWindow_ = new CompareWindow(&model_, view_, this);
+    connect(compareWindow_, &CompareWindow::errorOccurred, this,
+            [this](const QString& message) { reportError(message, false); });
+  }
+  compareWindow_->show();
+  compareWindow_->raise();
 }
 
 void MainWindow::reportError(const QString& message, bool dialog)
@@ -383,6 +412,12 @@ void MainWindow::exportScreenshot(const QString& path, const ScreenshotOptions& 
   const int width = std::max(1, static_cast<int>(vtkWidget_->width() * ratio)) * options.scale;
   const int height = std::max(1, static_cast<int>(vtkWidget_->height() * ratio)) * options.scale;
   RenderSettings settings = view_->renderSettings(width, height);
+  // A lit model is exported as the view draws it.
+  LitModelSettings lit;
+  if (litSettingsOf(model_, lit))
+  {
+    settings.installMaterial = litModelInstaller(lit);
+  }
   if (options.transparent)
   {
     settings.display.background = BackgroundMode::Transparent;

@@ -22,7 +22,10 @@ class vtkGenericOpenGLRenderWindow;
 
 namespace aniso
 {
+class CompareWindow;
 class EnvironmentDock;
+class LightsDock;
+class LitModelView;
 class LutScheduler;
 class MapsDock;
 class MaterialDock;
@@ -45,6 +48,10 @@ public:
   SceneModel* model() { return &model_; }
   SceneEditor* editor() { return &editor_; }
   SceneView* view() const { return view_; }
+  LightsDock* lightsDock() const { return lightsDock_; }
+  // The comparison view (View > Compare models), made when first opened.
+  CompareWindow* compareWindow() const { return compareWindow_; }
+  void showCompareWindow();
   LutScheduler* lutScheduler() const { return luts_; }
   QVTKOpenGLNativeWidget* vtkWidget() const { return vtkWidget_; }
 
@@ -101,6 +108,9 @@ private:
   MapsDock* mapsDock_;
   EnvironmentDock* environmentDock_;
   QDockWidget* lutDock_;
+  LightsDock* lightsDock_;
+  LitModelView* litView_ = nullptr;
+  CompareWindow* compareWindow_ = nullptr;
   QMenu* recentMenu_ = nullptr;
   QLabel* samplesLabel_;
   QLabel* lutLabel_;

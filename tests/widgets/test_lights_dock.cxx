@@ -177,6 +177,13 @@ private slots:
     QVERIFY(lights[0].type == LightType::Directional);
     QCOMPARE(dock.lightList()->count(), 1);
 
+    // Removing the last light leaves a scene without lights (a valid value).
+    dock.removeButton()->click();
+    QVERIFY(dock.lights().empty());
+    QCOMPARE(model.text("lights"), std::string("none"));
+    QVERIFY(!dock.removeButton()->isEnabled());
+    editor.undoStack()->undo();
+
     // Undo brings back the removed light.
     editor.undoStack()->undo();
     QCOMPARE(dock.lights().size(), std::size_t(2));
@@ -198,6 +205,8 @@ private slots:
       QVERIFY(sameLight(back[i], lights[i], 0.0));
     }
     QVERIFY(aniso::parseLightList("", "lights").empty());
+    QCOMPARE(aniso::formatLightList({}), std::string("none"));
+    QVERIFY(aniso::parseLightList(" none ", "lights").empty());
     QVERIFY(aniso::parseLightList("  ", "lights").empty());
     const std::vector<Light> spaced = aniso::parseLightList(" dir:0,0,2:1 ; point:1,2,3:4 ", "x");
     QCOMPARE(spaced.size(), std::size_t(2));
