@@ -10,6 +10,7 @@
 
 #include <QObject>
 #include <memory>
+#include <string>
 #include <vtkNew.h>
 
 class vtkActor;
@@ -58,5 +59,6 @@ private:
   vtkNew<vtkActor> actor_;
   vtkNew<vtkOpenGLPolyDataMapper> mapper_;
   std::unique_ptr<LitModelMaterial> material_;
+  std::string shownModel_; // the model of the last update, so a note is given once per choice
 };
 } // namespace aniso

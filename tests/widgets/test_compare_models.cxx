@@ -1,9 +1,9 @@
 // The shading model in the window (needs an X server: run under Xvfb, serially). Checks: a lit
 // model replaces the environment material on screen and as-env brings it back; with no light a
 // lit model reflects nothing (the sum over lights is empty), so the mesh is as black as a black
-// background, while the default lights make it visible; the comparison view has one viewport
+// background, while a light from the camera makes it visible; the comparison view has one viewport
 // per lit model of the registry, all drawing the view's mesh through one camera, each showing
-// the lit mesh at its centre.
+// the lit mesh at its centre. A model the view cannot draw is reported once.
 #include "CompareWindow.h"
 #include "LightsDock.h"
 #include "LitModelView.h"
@@ -12,6 +12,7 @@
 #include "materials/models.h"
 
 #include <QComboBox>
+#include <QSignalSpy>
 #include <QStandardPaths>
 #include <QVTKOpenGLNativeWidget.h>
 #include <QtTest>
@@ -105,6 +106,14 @@ private slots:
     QVERIFY(centreBrightness(rw, whole) > 20);
 
     window.editor()->edit("model", textValue("as-env"));
+    QVERIFY(sceneActor->GetVisibility());
+
+    // A model without an interactive renderer says so once and leaves the view as it was.
+    QSignalSpy notes(&window, &aniso::MainWindow::errorReported);
+    window.editor()->edit("model", textValue("leadr"));
+    window.editor()->edit("lights", textValue("dir:0,0,1:1"));
+    QCOMPARE(notes.count(), 1);
+    QVERIFY(notes.at(0).at(0).toString().contains("leadr"));
     QVERIFY(sceneActor->GetVisibility());
   }
 
