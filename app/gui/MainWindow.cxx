@@ -109,8 +109,11 @@ MainWindow::MainWindow(QWidget* parent)
   addDockWidget(Qt::RightDockWidgetArea, environmentDock_);
   addDockWidget(Qt::RightDockWidgetArea, lutDock_);
   lightsDock_ = new LightsDock(&editor_, this);
-  addDockWidget(Qt::RightDockWidgetArea, lightsDock_);
-  tabifyDockWidget(lutDock_, lightsDock_);
+  // Lights sit in a short strip under the view (not in a tab), so every dock is visible at once;
+  // the side columns keep the bottom corners.
+  setCorner(Qt::BottomLeftCorner, Qt::LeftDockWidgetArea);
+  setCorner(Qt::BottomRightCorner, Qt::RightDockWidgetArea);
+  addDockWidget(Qt::BottomDockWidgetArea, lightsDock_);
 
   const auto toStatus = [this](const QString& message) { reportError(message, false); };
   connect(materialDock_, &MaterialDock::errorOccurred, this, toStatus);
@@ -155,6 +158,7 @@ MainWindow::MainWindow(QWidget* parent)
   }
   resizeDocks({materialDock_, environmentDock_}, {350, 370}, Qt::Horizontal);
   resizeDocks({materialDock_, mapsDock_}, {520, 380}, Qt::Vertical);
+  resizeDocks({lightsDock_}, {190}, Qt::Vertical);
   QSettings settings;
   restoreGeometry(settings.value("window/geometry").toByteArray());
   restoreState(settings.value("window/state").toByteArray());
