@@ -22,6 +22,8 @@ namespace
 namespace fs = std::filesystem;
 
 constexpr int kPublishedSamples = 256;
+// The built-in studio as rows name it (environmentName); HDRI files go by their stem.
+constexpr const char* kStudio = "builtin:studio";
 constexpr double kConvergedError = 0.01;
 constexpr double kConvergenceSeconds = 2.0;
 constexpr double kSpeedupGoal = 10.0;
@@ -81,9 +83,11 @@ double cpuTimeOf(const BenchRow& r)
   return r.frames > 1 ? r.totalCpuSeconds : r.medianFrameCpuSeconds;
 }
 
+// The sphere under the studio at the run's image size (not the goal or default scenes).
 bool mainScene(const BenchRow& r)
 {
-  return r.mesh == "sphere" && r.environment == "studio";
+  return r.mesh == "sphere" && r.environment == kStudio &&
+         (r.kind == "sweep" || r.kind == "progressive" || r.kind == "vtk");
 }
 
 const BenchRow* find(const std::vector<BenchRow>& rows,
@@ -116,20 +120,26 @@ std::vector<AsLobe> lobesOf(const std::vector<BenchRow>& rows,
 
 Goal publishedGoal(const BenchResult& result)
 {
+  // The goal scene at 512x512 when it was run, else the sphere at the run's size.
+  const bool goalScene =
+      find(result.rows, [](const BenchRow& r) { return r.kind == "goal"; }) != nullptr;
+  const std::function<bool(const BenchRow&)> inScene = [goalScene](const BenchRow& r)
+  { return goalScene ? r.kind == "goal" : mainScene(r); };
+  const int size = goalScene ? find(result.rows, inScene)->width : result.size;
   Goal goal;
   goal.name = "The best mode reaches the error of the published method (split sum, LUT, "
               "unfiltered, 256 samples) in at most 1/10 of its time (" +
-              std::to_string(result.size) + "², sphere, studio)";
+              std::to_string(size) + "², sphere, studio)";
   goal.met = true;
   std::ostringstream figures;
-  const auto lobes = lobesOf(result.rows, [](const BenchRow& r) { return mainScene(r); });
+  const auto lobes = lobesOf(result.rows, inScene);
   int evaluated = 0;
   for (const AsLobe& lobe : lobes)
   {
     const BenchRow* published = find(result.rows,
                                      [&](const BenchRow& r)
                                      {
-                                       return mainScene(r) && r.kind == "sweep" &&
+                                       return inScene(r) && r.frames == 1 &&
                                               sameLobe(r.lobe, lobe) && r.method == "split-sum" &&
                                               r.filtered == "off" && r.halfVectors == "lut" &&
                                               r.samples == kPublishedSamples;
@@ -141,9 +151,8 @@ Goal publishedGoal(const BenchResult& result)
     const BenchRow* best = nullptr;
     for (const BenchRow& r : result.rows)
     {
-      if (mainScene(r) && sameLobe(r.lobe, lobe) &&
-          (r.kind == "sweep" || r.kind == "progressive") && r.relativeL2 <= published->relativeL2 &&
-          (!best || timeOf(r) < timeOf(*best)))
+      if (inScene(r) && sameLobe(r.lobe, lobe) && r.method != "vtk-pbr" &&
+          r.relativeL2 <= published->relativeL2 && (!best || timeOf(r) < timeOf(*best)))
       {
         best = &r;
       }
@@ -178,9 +187,7 @@ GoalScene goalScene(const BenchResult& result)
             "default scene (torus, (1000, 50), studio, 800x600)"};
   }
   const AsLobe lobe{1000.0, 100.0};
-  return {"sweep",
-          [lobe](const BenchRow& r)
-          { return mainScene(r) && sameLobe(r.lobe, lobe) && r.kind.rfind("default", 0) != 0; },
+  return {"sweep", [lobe](const BenchRow& r) { return mainScene(r) && sameLobe(r.lobe, lobe); },
           "sphere, (1000, 100), studio, " + std::to_string(result.size) +
               "² (the default scene "
               "was not run)"};
@@ -216,6 +223,23 @@ Goal vtkCostGoal(const BenchResult& result)
                  " (L2 " + number(vtk->relativeL2) + " against its own GGX model; first frame " +
                  number(vtk->firstFrameSeconds) + " s with its prefiltering): " + number(ratio, 2) +
                  "x (CPU time: " + number(cpuRatio, 2) + "x)";
+  // The most samples a frame within the bound could take, among those measured.
+  const BenchRow* within = nullptr;
+  for (const BenchRow& r : result.rows)
+  {
+    if (scene.in(r) && r.kind == scene.kind && r.method == "exact" && r.filtered == "on" &&
+        r.halfVectors == "lut" && r.frames == 1 &&
+        r.medianFrameSeconds <= kVtkCostGoal * vtk->medianFrameSeconds &&
+        (!within || r.samples > within->samples))
+    {
+      within = &r;
+    }
+  }
+  if (within && within != ours)
+  {
+    goal.figures += "; within 2x at N = " + std::to_string(within->samples) + ": " +
+                    milliseconds(within->medianFrameSeconds) + ", L2 " + number(within->relativeL2);
+  }
   return goal;
 }
 
@@ -343,8 +367,7 @@ Figure errorAgainstTime(const BenchResult& result)
       all.opacity = 0.35;
       for (const BenchRow& r : result.rows)
       {
-        if (mainScene(r) && sameLobe(r.lobe, lobe) && r.method == style.method &&
-            r.kind.rfind("default", 0) != 0)
+        if (mainScene(r) && sameLobe(r.lobe, lobe) && r.method == style.method)
         {
           all.points.push_back({timeOf(r), r.relativeL2});
         }
@@ -370,7 +393,7 @@ Figure errorAgainstTime(const BenchResult& result)
 
 // One Markdown table per lobe: configurations down, sample counts across, "L2 (time)".
 void sweepTables(std::ostream& md, const std::vector<BenchRow>& rows,
-                 const std::function<bool(const BenchRow&)>& in)
+                 const std::function<bool(const BenchRow&)>& in, const std::string& kind = "sweep")
 {
   for (const AsLobe& lobe : lobesOf(rows, in))
   {
@@ -379,7 +402,7 @@ void sweepTables(std::ostream& md, const std::vector<BenchRow>& rows,
     std::map<std::pair<std::string, int>, const BenchRow*> cells;
     for (const BenchRow& r : rows)
     {
-      if (!in(r) || !sameLobe(r.lobe, lobe) || r.kind != "sweep")
+      if (!in(r) || !sameLobe(r.lobe, lobe) || r.kind != kind)
       {
         continue;
       }
@@ -542,11 +565,18 @@ std::string benchMarkdown(const BenchResult& result, const std::string& plotFile
 
   md << "\n### Sphere under the studio\n";
   sweepTables(md, result.rows, [](const BenchRow& r) { return mainScene(r); });
+  if (const BenchRow* goal = find(result.rows, [](const BenchRow& r) { return r.kind == "goal"; }))
+  {
+    md << "\n### The published method against the best modes at " << goal->width << "x"
+       << goal->height << "\n";
+    sweepTables(
+        md, result.rows, [](const BenchRow& r) { return r.kind == "goal"; }, "goal");
+  }
 
   for (const char* mesh : {"torus", "flange"})
   {
     const auto in = [mesh](const BenchRow& r)
-    { return r.mesh == mesh && r.environment == "studio" && r.kind.rfind("default", 0) != 0; };
+    { return r.mesh == mesh && r.environment == kStudio && r.kind == "sweep"; };
     if (find(result.rows, in))
     {
       md << "\n### " << (std::string(mesh) == "torus" ? "Torus" : "Flange (tangents around Z)")
@@ -558,7 +588,7 @@ std::string benchMarkdown(const BenchResult& result, const std::string& plotFile
   std::vector<std::string> hdris;
   for (const BenchRow& r : result.rows)
   {
-    if (r.environment != "studio" &&
+    if (r.environment != kStudio &&
         std::find(hdris.begin(), hdris.end(), r.environment) == hdris.end())
     {
       hdris.push_back(r.environment);
@@ -571,7 +601,7 @@ std::string benchMarkdown(const BenchResult& result, const std::string& plotFile
     std::vector<std::string> columns;
     for (const BenchRow& r : result.rows)
     {
-      if (r.environment != "studio" && r.kind == "sweep")
+      if (r.environment != kStudio && r.kind == "sweep")
       {
         const std::string c = configText(r);
         if (std::find(columns.begin(), columns.end(), c) == columns.end())
@@ -652,17 +682,51 @@ std::string benchMarkdown(const BenchResult& result, const std::string& plotFile
        << (ours ? milliseconds(ours->medianFrameSeconds) : std::string("-")) << " |\n";
   }
 
-  md << "\n### Progressive refinement (a still view)\n\nRelative L2 after F frames of 16 "
-        "samples, and the time of those frames summed.\n\n"
-        "| Scene | Lobe | Mode | Frames | L2 | Time |\n| --- | --- | --- | --- | --- | --- |\n";
+  // One row per scene, lobe and mode; a column per frame count.
+  std::set<int> frameCounts;
+  std::vector<std::string> series;
+  std::map<std::pair<std::string, int>, const BenchRow*> cells;
   for (const BenchRow& r : result.rows)
   {
-    if (r.kind.find("progressive") != std::string::npos)
+    if (r.kind.find("progressive") == std::string::npos)
     {
-      md << "| " << r.mesh << " " << r.environment << (r.kind == "progressive" ? "" : " 800x600")
-         << " | " << lobeText(r.lobe) << " | " << r.method << ", filtered " << r.filtered << " | "
-         << r.frames << " | " << number(r.relativeL2) << " | " << number(r.totalSeconds)
-         << " s |\n";
+      continue;
+    }
+    const std::string key = r.mesh + " " + r.environment +
+                            (r.kind == "progressive" ? "" : " 800x600") + " | " + lobeText(r.lobe) +
+                            " | " + r.method + ", filtered " + r.filtered;
+    if (std::find(series.begin(), series.end(), key) == series.end())
+    {
+      series.push_back(key);
+    }
+    frameCounts.insert(r.frames);
+    cells[{key, r.frames}] = &r;
+  }
+  if (!series.empty())
+  {
+    md << "\n### Progressive refinement (a still view)\n\nRelative L2 after F frames of 16 "
+          "samples each (the frames' times summed).\n\n| Scene | Lobe | Mode |";
+    for (int f : frameCounts)
+    {
+      md << " F = " << f << " |";
+    }
+    md << "\n| --- | --- | --- |";
+    for (std::size_t i = 0; i < frameCounts.size(); ++i)
+    {
+      md << " --- |";
+    }
+    md << "\n";
+    for (const std::string& key : series)
+    {
+      md << "| " << key << " |";
+      for (int f : frameCounts)
+      {
+        const auto cell = cells.find({key, f});
+        md << (cell == cells.end() ? std::string(" |")
+                                   : " " + number(cell->second->relativeL2) + " (" +
+                                         number(cell->second->totalSeconds, 2) + " s) |");
+      }
+      md << "\n";
     }
   }
 

@@ -25,6 +25,9 @@ namespace
 {
 namespace fs = std::filesystem;
 
+constexpr int kPublishedSamples = 256; // the published method's sample count (goal 1)
+constexpr int kGoalSize = 512;
+
 // The defaults of a material the user has not touched (MaterialSettings, parameters.h):
 // aluminium F0, no diffuse (the reference integrates the specular term).
 const glm::dvec3 kF0{0.913, 0.922, 0.924};
@@ -112,24 +115,17 @@ std::vector<ScenePlan> planFull(const std::string& hdriDirectory)
   sphere.mesh = "sphere";
   sphere.environment = "builtin:studio";
   sphere.lobes = benchLobes();
-  for (M method : {M::Exact, M::SplitSum})
+  for (bool filtered : {true, false})
   {
-    for (bool filtered : {true, false})
-    {
-      for (H source : {H::Lut, H::Shader})
-      {
-        append(sphere.configs, sweep(method, filtered, source, {1, 4, 16, 64, 256}));
-      }
-    }
+    append(sphere.configs, sweep(M::Exact, filtered, H::Lut, {1, 4, 16, 64, 256}));
+    append(sphere.configs, sweep(M::SplitSum, filtered, H::Lut, {1, 4, 16, 64, 256}));
   }
+  append(sphere.configs, sweep(M::Exact, false, H::Shader, {1, 4, 16, 64, 256}));
   append(sphere.configs, sweep(M::Exact, false, H::Lut, {1024}));
-  append(sphere.configs, sweep(M::Exact, true, H::Lut, {1024}));
-  append(sphere.configs, sweep(M::SplitSum, false, H::Lut, {1024}));
-  append(sphere.configs,
-         sweep(M::Exact, false, H::Lut, {4, 16, 64, 256}, EnvironmentSampling::Mis));
+  append(sphere.configs, sweep(M::Exact, false, H::Lut, {4, 16, 64}, EnvironmentSampling::Mis));
   sphere.progressive = {{M::Exact, true, H::Lut, EnvironmentSampling::Off, 16},
                         {M::Exact, false, H::Lut, EnvironmentSampling::Off, 16}};
-  sphere.progressiveFrames = {1, 2, 4, 8, 16, 32, 64};
+  sphere.progressiveFrames = {1, 2, 4, 8, 16, 32};
   sphere.reference = {1024, 1e-3};
   sphere.ggxReference = {192, 2e-3};
   sphere.counters = true;
@@ -141,36 +137,51 @@ std::vector<ScenePlan> planFull(const std::string& hdriDirectory)
     scene.mesh = mesh;
     scene.environment = "builtin:studio";
     scene.lobes = benchLobes();
-    for (M method : {M::Exact, M::SplitSum})
-    {
-      for (bool filtered : {true, false})
-      {
-        append(scene.configs, sweep(method, filtered, H::Lut, {1, 4, 16, 64, 256}));
-      }
-    }
+    append(scene.configs, sweep(M::Exact, true, H::Lut, {1, 4, 16, 64, 256}));
+    append(scene.configs, sweep(M::Exact, false, H::Lut, {4, 16, 64}));
+    append(scene.configs, sweep(M::SplitSum, false, H::Lut, {1, 4, 16, 64, 256}));
     scene.reference = {512, 1e-3};
     scene.ggxReference = {128, 2e-3};
     plans.push_back(scene);
   }
 
-  // Real HDRIs hold small bright sources; their references cost far more per pixel, so the
-  // sharper lobes and fewer pixels are compared.
+  // Real HDRIs hold small bright sources; their references cost far more per pixel, so one
+  // material, fewer pixels and the key configurations are compared.
   const std::vector<std::string> environments = benchEnvironments(hdriDirectory);
   for (std::size_t i = 1; i < environments.size(); ++i)
   {
     ScenePlan scene;
     scene.mesh = "sphere";
     scene.environment = environments[i];
-    scene.lobes = {{1000.0, 100.0}, {20000.0, 70.0}};
-    append(scene.configs, sweep(M::Exact, true, H::Lut, {4, 16, 64, 256}));
+    scene.lobes = {{1000.0, 100.0}};
+    append(scene.configs, sweep(M::Exact, true, H::Lut, {16}));
     append(scene.configs, sweep(M::Exact, false, H::Lut, {16, 256}));
-    append(scene.configs, sweep(M::Exact, false, H::Lut, {16, 256}, EnvironmentSampling::Mis));
+    append(scene.configs, sweep(M::Exact, false, H::Lut, {16}, EnvironmentSampling::Mis));
     append(scene.configs, sweep(M::SplitSum, false, H::Lut, {256}));
     scene.reference = {256, 3e-3};
     scene.ggxReference = {64, 1e-2};
     plans.push_back(scene);
   }
   return plans;
+}
+
+// Goal 1 is stated at 512x512: the published method at 256 samples against the modes that
+// could reach its error sooner, on the sphere under the studio.
+ScenePlan planGoal()
+{
+  using M = SpecularMethod;
+  using H = HalfVectorSource;
+  ScenePlan plan;
+  plan.kind = "goal";
+  plan.mesh = "sphere";
+  plan.environment = "builtin:studio";
+  plan.lobes = {{10.0, 10.0}, {1000.0, 100.0}, {20000.0, 70.0}};
+  plan.configs = sweep(M::SplitSum, false, H::Lut, {kPublishedSamples});
+  append(plan.configs, sweep(M::Exact, true, H::Lut, {4, 8, 12, 16, 24, 32}));
+  append(plan.configs, sweep(M::Exact, false, H::Lut, {4, 8, 12, 16, 24, 32}));
+  plan.vtk = false;
+  plan.reference = {1024, 1e-3};
+  return plan;
 }
 
 std::string methodName(SpecularMethod m)
@@ -298,7 +309,7 @@ int timedRuns(int samples, bool quick)
   {
     return 2;
   }
-  return samples >= 1024 ? 2 : 3;
+  return samples >= 64 ? 2 : 3;
 }
 
 class Runner
@@ -360,6 +371,12 @@ public:
     }
   }
 
+  void runGoalScene()
+  {
+    RenderSession session(kGoalSize, kGoalSize);
+    runScene(planGoal(), session);
+  }
+
   // The application's default scene and settings at 800 x 600: the frame of the interactive
   // setting against VTK's, and the time a still view takes to converge.
   void runDefaultScene()
@@ -372,10 +389,12 @@ public:
     plan.lobes = {kDefaultLobe};
     const Config interactive; // MaterialSettings' defaults: exact, filtered, LUT, 16 samples
     plan.configs = {interactive};
+    // Fewer samples, for what a frame within twice VTK's cost would show.
+    append(plan.configs, sweep(SpecularMethod::Exact, true, HalfVectorSource::Lut, {4, 8}));
     Config unfiltered = interactive;
     unfiltered.filtered = false;
     plan.progressive = {interactive, unfiltered};
-    plan.progressiveFrames = {1, 2, 4, 8, 12, 16, 24, 32, 48, 64};
+    plan.progressiveFrames = {1, 2, 4, 8, 12, 16, 24, 32};
     plan.reference = {1024, 1e-3};
     plan.ggxReference = {192, 2e-3};
     runScene(plan, session);
@@ -626,7 +645,7 @@ BenchResult runBench(const BenchOptions& options, std::ostream& log)
   const auto start = std::chrono::steady_clock::now();
   BenchResult result;
   result.quick = options.quick;
-  result.size = options.size > 0 ? options.size : (options.quick ? 128 : 512);
+  result.size = options.size > 0 ? options.size : (options.quick ? 128 : 256);
   result.commandLine = options.commandLine;
   result.machine = machineDescription();
   result.loadBefore = loadAverage();
@@ -648,6 +667,8 @@ BenchResult runBench(const BenchOptions& options, std::ostream& log)
   }
   if (!options.quick)
   {
+    log << "scene: the published method's goal at " << kGoalSize << "x" << kGoalSize << std::endl;
+    runner.runGoalScene();
     log << "scene: the default scene at " << kDefaultWidth << "x" << kDefaultHeight << std::endl;
     runner.runDefaultScene();
   }

@@ -97,7 +97,7 @@ std::string environmentName(const std::string& spec)
 {
   if (spec.rfind("builtin:", 0) == 0)
   {
-    return spec.substr(8);
+    return spec;
   }
   return std::filesystem::path(spec).stem().string();
 }

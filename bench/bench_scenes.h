@@ -35,7 +35,7 @@ TriangleMesh triangleMesh(vtkPolyData* surface);
 constexpr const char* kBlenderHdriDirectory = "/usr/share/blender/datafiles/studiolights/world";
 // "builtin:studio", then the .exr files of DIRECTORY (sorted), if it exists.
 std::vector<std::string> benchEnvironments(const std::string& directory = kBlenderHdriDirectory);
-// "studio", or a file's stem ("forest").
+// "builtin:studio" as it is, or a file's stem ("forest"; Blender's own studio.exr is "studio").
 std::string environmentName(const std::string& spec);
 
 // The materials of the benchmark: (10, 10), (100, 10), (1000, 100), (20000, 70).
