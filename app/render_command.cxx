@@ -12,6 +12,7 @@
 #include "maps/map_files.h"
 #include "maps/quaternion_map.h"
 #include "material/parameters.h"
+#include "quality/adaptive_quality.h"
 
 #include <algorithm>
 #include <cctype>
@@ -93,6 +94,11 @@ Command renderCommand()
   c.options.push_back(numberOption(
       "--frames", "N", ParameterType::Integer, 4.0, 1.0, 65536.0, {},
       "progressive frames accumulated, each with a rotated sample set (N x samples per pixel)"));
+  c.options.push_back(numberOption(
+      "--quality", "ERR", ParameterType::Real, 0.01, 1e-4, 1.0, {},
+      "error target instead of --samples: the relative L2 error of one frame (0.01 = 1%); the "
+      "samples follow from the material's roughness and filtering, by the error model that "
+      "'aniso bench' measured"));
   c.options.push_back(textOption(
       "--normal-map", "FILE",
       "tangent-space normal map; its quaternion map is baked and used unless --bump normal"));
@@ -319,6 +325,20 @@ int runRender(const std::vector<std::string>& args, std::ostream& out)
     }
   }
   settings.material = materialFromParameters(parameters);
+  if (a.has("--quality"))
+  {
+    if (a.has("--samples"))
+    {
+      throw usageError("--quality", "give either --quality or --samples");
+    }
+    const QualityChoice quality =
+        chooseSamples(a.real("--quality"), settings.material.lobe, settings.material.filtered);
+    settings.material.samples = quality.samples;
+    out << "quality: " << quality.samples << " samples per frame for a predicted error of "
+        << quality.predictedError
+        << (quality.reachable ? "" : " (the target needs more than the largest sample count)")
+        << "\n";
+  }
   settings.display = displayFromParameters(parameters);
   settings.environmentRotationDegrees = parameters.real("env-rotation");
   settings.cubeSize = parameters.integer("cube-size");
