@@ -47,9 +47,10 @@ std::string number(double value, int digits = 3)
   return text;
 }
 
+// "83.1 ms", or "1.25 s" from a second on.
 std::string milliseconds(double seconds)
 {
-  return number(seconds * 1e3) + " ms";
+  return seconds >= 1.0 ? number(seconds) + " s" : number(seconds * 1e3) + " ms";
 }
 
 bool sameLobe(const AsLobe& a, const AsLobe& b)
