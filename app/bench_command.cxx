@@ -30,13 +30,14 @@ Command benchCommand()
       "source and sample count, and VTK's own PBR anisotropy on the same scenes; time each and "
       "measure its error against the converged CPU reference integrator. Needs an X display; "
       "where there is none, run it under xvfb-run.";
-  c.options.push_back(flag("--quick", "the small set (sphere under the studio, 128x128): about "
-                                      "a minute"));
+  c.options.push_back(flag("--quick", "the small set (the sphere under the studio at 128x128, "
+                                      "19 configurations per material): about a minute"));
   c.options.push_back(textOption(
       "--out", "DIR", "where bench.csv, bench.md, bench.svg and bench.png go", "bench-out"));
-  c.options.push_back(textOption("--size", "N",
-                                 "image side in pixels (default 128 with --quick, "
-                                 "else 512)"));
+  c.options.push_back(textOption(
+      "--size", "N",
+      "image side in pixels of the scene set (default 128 with --quick, else 256); the goal "
+      "scenes keep their sizes (512x512, and the default scene at 800x600)"));
   c.options.push_back(
       textOption("--cache", "DIR", "reference images cache (default $XDG_CACHE_HOME/aniso/bench)"));
   c.details = "Output: bench.csv (one row per measurement), bench.md (tables, the goals, the "
@@ -44,7 +45,7 @@ Command benchCommand()
               "quality_model.txt (the fitted table of core/quality).\n"
               "Examples:\n"
               "  xvfb-run -a aniso bench --quick --out /tmp/bench\n"
-              "  xvfb-run -a -s \"-screen 0 1280x1024x24\" aniso bench --out docs/bench\n";
+              "  xvfb-run -a -s \"-screen 0 1280x1024x24\" aniso bench --out bench-out\n";
   return c;
 }
 } // namespace
@@ -67,8 +68,9 @@ int runBenchCommand(const std::vector<std::string>& args, std::ostream& out)
   options.quick = a.has("--quick");
   if (a.has("--size"))
   {
-    options.size = parseImageSize(a.text("--size"), "--size", kMaxSize).first;
-    if (parseImageSize(a.text("--size"), "--size", kMaxSize).second != options.size)
+    const auto [width, height] = parseImageSize(a.text("--size"), "--size", kMaxSize);
+    options.size = width;
+    if (height != width)
     {
       throw usageError("--size", "the benchmark renders square images: give one number");
     }
