@@ -2,7 +2,6 @@
 
 #include "bench_scenes.h"
 #include "error.h"
-#include "plot.h"
 #include "reference_image.h"
 #include "render_session.h"
 
