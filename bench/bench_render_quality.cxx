@@ -13,9 +13,9 @@
 #include <cmath>
 #include <cstdio>
 #include <glm/geometric.hpp>
-#include <vtkPolyData.h>
 #include <memory>
 #include <vector>
+#include <vtkPolyData.h>
 
 namespace
 {
