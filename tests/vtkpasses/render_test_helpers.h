@@ -4,17 +4,21 @@
 // for non-finite values, and diff images kept when a comparison fails.
 #include "OffscreenRenderer.h"
 #include "ViewSettings.h"
+#include "frame.h"
 #include "image/image.h"
+#include "reference/reference_integrator.h"
 
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
+#include <functional>
 #include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
 #include <gtest/gtest.h>
 #include <iostream>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace aniso::test
 {
@@ -132,5 +136,62 @@ inline void keepImages(const std::string& name, const Image& rendered, const Ima
   writeImage((dir / (name + "_expected.exr")).string(), expected);
   writeImage((dir / (name + "_diff.png")).string(), differenceImage(rendered, expected));
   std::cout << name << ": images kept in " << dir.string() << "\n";
+}
+// A rendered pixel and the CPU reference radiance it is compared with.
+struct Compared
+{
+  int x = 0;
+  int y = 0;
+  glm::dvec3 reference{0.0};
+};
+
+using Integrator = std::function<ReferenceResult(const Frame& frame, const glm::dvec3& viewWorld)>;
+
+// Every other pixel in each direction (the reference is the expensive part) whose centre ray hits
+// the unit sphere away from its silhouette (n.v >= 0.2, where the faceted mesh and the analytic
+// sphere disagree on what the ray hits) and from the poles (|n.z| <= 0.95, where the tangent field
+// of the parallels is singular); `integrate` gives the reference for the pixel's frame and view.
+inline std::vector<Compared> referencePixels(const RenderSettings& s, const Integrator& integrate)
+{
+  const CameraPlacement camera = placeCamera(s.view, glm::dvec3(0.0), 1.0);
+  std::vector<Compared> pixels;
+  for (int y = 0; y < s.height; y += 2)
+  {
+    for (int x = 0; x < s.width; x += 2)
+    {
+      const Ray ray = pixelRay(camera, x, y, s.width, s.height);
+      const auto hit = hitUnitSphere(ray);
+      if (!hit)
+      {
+        continue;
+      }
+      const glm::dvec3 n = *hit;
+      const glm::dvec3 v = -ray.direction;
+      if (glm::dot(n, v) < 0.2 || std::abs(n.z) > 0.95)
+      {
+        continue;
+      }
+      const Frame frame = Frame::fromNormalTangent(n, glm::dvec3(-n.y, n.x, 0.0));
+      pixels.push_back({x, y, integrate(frame, v).value});
+    }
+  }
+  return pixels;
+}
+
+// Relative L2 error of the rendered RGB against the reference over the compared pixels.
+inline double relativeL2(const Image& rendered, const std::vector<Compared>& pixels)
+{
+  double error = 0.0;
+  double norm = 0.0;
+  for (const Compared& p : pixels)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      const double d = rendered.at(p.x, p.y, c) - p.reference[c];
+      error += d * d;
+      norm += p.reference[c] * p.reference[c];
+    }
+  }
+  return std::sqrt(error / norm);
 }
 } // namespace aniso::test

@@ -30,13 +30,6 @@ namespace
 {
 constexpr int kSize = 48;
 
-struct Compared
-{
-  int x = 0;
-  int y = 0;
-  glm::dvec3 reference{0.0};
-};
-
 std::shared_ptr<SunSkyEnvironment> sunSky()
 {
   // The environment `--env builtin:sunsky` opens.
@@ -64,53 +57,6 @@ RenderSettings sphereSettings(std::shared_ptr<const Environment> env, const AsLo
   s.frames = frames;
   s.jitter = false;
   return s;
-}
-
-using Integrator = std::function<ReferenceResult(const Frame& frame, const glm::dvec3& viewWorld)>;
-
-// Every other pixel in each direction whose centre ray hits the sphere away from its silhouette
-// (n.v >= 0.2) and from the poles (|n.z| <= 0.95, where the parallels' tangents are singular).
-std::vector<Compared> referencePixels(const RenderSettings& s, const Integrator& integrate)
-{
-  const CameraPlacement camera = placeCamera(s.view, glm::dvec3(0.0), 1.0);
-  std::vector<Compared> pixels;
-  for (int y = 0; y < s.height; y += 2)
-  {
-    for (int x = 0; x < s.width; x += 2)
-    {
-      const Ray ray = pixelRay(camera, x, y, s.width, s.height);
-      const auto hit = hitUnitSphere(ray);
-      if (!hit)
-      {
-        continue;
-      }
-      const glm::dvec3 n = *hit;
-      const glm::dvec3 v = -ray.direction;
-      if (glm::dot(n, v) < 0.2 || std::abs(n.z) > 0.95)
-      {
-        continue;
-      }
-      const Frame frame = Frame::fromNormalTangent(n, glm::dvec3(-n.y, n.x, 0.0));
-      pixels.push_back({x, y, integrate(frame, v).value});
-    }
-  }
-  return pixels;
-}
-
-double relativeL2(const Image& rendered, const std::vector<Compared>& pixels)
-{
-  double error = 0.0;
-  double norm = 0.0;
-  for (const Compared& p : pixels)
-  {
-    for (int c = 0; c < 3; ++c)
-    {
-      const double d = rendered.at(p.x, p.y, c) - p.reference[c];
-      error += d * d;
-      norm += p.reference[c] * p.reference[c];
-    }
-  }
-  return std::sqrt(error / norm);
 }
 
 Image referenceImage(const std::vector<Compared>& pixels)
