@@ -1,7 +1,9 @@
 #include "lut/lut_cache.h"
 
 #include <OpenImageIO/imageio.h>
+#include <algorithm>
 #include <atomic>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -266,6 +268,127 @@ std::string defaultDirectory()
   return {};
 }
 
+bool startsWith(const std::string& text, const std::string& prefix)
+{
+  return text.compare(0, prefix.size(), prefix) == 0;
+}
+
+bool endsWith(const std::string& text, const std::string& suffix)
+{
+  return text.size() >= suffix.size() &&
+         text.compare(text.size() - suffix.size(), suffix.size(), suffix) == 0;
+}
+
+// The cache's own files: LUTs of any format version, and temporary files of their writers
+// ("." + LUT file name + ".PID.COUNTER.tmp.exr").
+bool hasLutPrefix(const std::string& name)
+{
+  return startsWith(name, "halfvector_v") || startsWith(name, "brdf_v");
+}
+
+bool isLutFile(const std::string& name)
+{
+  return hasLutPrefix(name) && endsWith(name, ".exr") && !endsWith(name, ".tmp.exr");
+}
+
+bool isTemporaryFile(const std::string& name)
+{
+  return name.size() > 1 && name[0] == '.' && hasLutPrefix(name.substr(1)) &&
+         endsWith(name, ".tmp.exr");
+}
+
+// Removes LUT files of DIRECTORY, least recently used first, until they take at most BUDGET
+// bytes, never KEEP; and temporary files older than an hour (their writer died: a live one
+// renames or removes its file within seconds). Returns how many LUT files it removed. Every
+// file system error only skips the file concerned.
+uint64_t pruneDirectory(const std::string& directory, std::uintmax_t budget,
+                        const std::string& keep)
+{
+  struct File
+  {
+    fs::path path;
+    std::uintmax_t size = 0;
+    fs::file_time_type time;
+  };
+  std::vector<File> files;
+  std::uintmax_t total = 0;
+  const auto now = fs::file_time_type::clock::now();
+  std::error_code ec;
+  for (fs::directory_iterator it(directory, ec), end; !ec && it != end; it.increment(ec))
+  {
+    const std::string name = it->path().filename().string();
+    std::error_code fileError;
+    if (!it->is_regular_file(fileError) || fileError)
+    {
+      continue;
+    }
+    const fs::file_time_type time = fs::last_write_time(it->path(), fileError);
+    if (fileError)
+    {
+      continue;
+    }
+    if (isTemporaryFile(name))
+    {
+      if (now - time > std::chrono::hours(1))
+      {
+        fs::remove(it->path(), fileError);
+      }
+      continue;
+    }
+    if (!isLutFile(name))
+    {
+      continue;
+    }
+    const std::uintmax_t size = fs::file_size(it->path(), fileError);
+    if (fileError)
+    {
+      continue;
+    }
+    total += size;
+    if (name != keep)
+    {
+      files.push_back({it->path(), size, time});
+    }
+  }
+  std::sort(files.begin(), files.end(),
+            [](const File& a, const File& b) { return a.time < b.time; });
+  uint64_t removed = 0;
+  for (const File& file : files)
+  {
+    if (total <= budget)
+    {
+      break;
+    }
+    std::error_code removeError;
+    if (fs::remove(file.path, removeError))
+    {
+      total -= file.size;
+      ++removed;
+    }
+  }
+  return removed;
+}
+
+uint64_t pruneDirectorySafely(const std::string& directory, std::uintmax_t budget,
+                              const std::string& keep)
+{
+  try
+  {
+    return pruneDirectory(directory, budget, keep);
+  }
+  catch (const std::exception&)
+  {
+    return 0;
+  }
+}
+
+// A disk hit is a use: the file moves to the back of the eviction order.
+void touch(const std::string& path)
+{
+  std::error_code ec;
+  fs::last_write_time(path, fs::file_time_type::clock::now(), ec);
+}
+
 template <class Lut>
 struct Entry
 {
@@ -294,6 +417,7 @@ struct LutCache::Impl
   uint64_t tick = 0;
   std::size_t bytes = 0;
   std::size_t budget = kDefaultMemoryBudget;
+  std::atomic<std::uintmax_t> diskBudget{kDefaultDiskBudget};
 
   // One caller makes a missing LUT (disk or bake) outside the lock; callers asking for the same
   // key meanwhile wait for its result instead of baking it again.
@@ -337,6 +461,7 @@ struct LutCache::Impl
     Source source = Source::Bake;
     bool rejected = false;
     bool writeFailed = false;
+    uint64_t evicted = 0;
     try
     {
       auto made = std::make_shared<Lut>();
@@ -349,6 +474,7 @@ struct LutCache::Impl
         {
           source = Source::Disk;
           describe(*made, key, lobe);
+          touch(path);
         }
       }
       if (source == Source::Bake)
@@ -356,6 +482,10 @@ struct LutCache::Impl
         *made = make();
         writeFailed =
             !directory.empty() && !writeLutFileSafely(directory, key, made->lobe, pixelsOf(*made));
+        if (!directory.empty() && !writeFailed)
+        {
+          evicted = pruneDirectorySafely(directory, diskBudget.load(), fileName(key));
+        }
       }
       lut = std::move(made);
     }
@@ -378,6 +508,7 @@ struct LutCache::Impl
     ++(source == Source::Disk ? stats.diskHits : stats.bakes);
     stats.diskRejected += rejected ? 1 : 0;
     stats.diskWriteFailures += writeFailed ? 1 : 0;
+    stats.diskEvictions += evicted;
     auto current = map.find(key);
     if (current != map.end() && current->second == entry)
     {
@@ -512,6 +643,17 @@ void LutCache::setMemoryBudget(std::size_t bytes)
   std::lock_guard<std::mutex> lock(impl_->mutex);
   impl_->budget = bytes;
   impl_->evict(nullptr);
+}
+
+void LutCache::setDiskBudget(std::uintmax_t bytes)
+{
+  impl_->diskBudget = bytes;
+  if (!impl_->directory.empty())
+  {
+    const uint64_t evicted = pruneDirectorySafely(impl_->directory, bytes, {});
+    std::lock_guard<std::mutex> lock(impl_->mutex);
+    impl_->stats.diskEvictions += evicted;
+  }
 }
 
 std::size_t LutCache::memoryBytes() const

@@ -22,12 +22,18 @@ struct LutCacheStats
   uint64_t bakes = 0;             // computed
   uint64_t diskRejected = 0;      // cache files ignored: unreadable, truncated, foreign, corrupt
   uint64_t diskWriteFailures = 0; // bakes that could not be stored (the cache keeps working)
+  uint64_t diskEvictions = 0;     // cache files removed to keep the directory within its budget
 };
 
 // Key: kind, kLutFormatVersion, the exact bits of n_u and n_v, size and (BRDF) samples.
 // File names carry the key (e.g. brdf_v1_nu<16 hex digits>_nv<...>_s64_n1024.exr) and the EXR
 // header repeats it with a checksum of the pixels, so a renamed, foreign or damaged file is
 // detected. Disk problems never fail a request: the cache falls back to memory.
+// The directory is kept within a disk budget: after each write, the cache's own LUT files
+// (never anything else in the directory) are removed least recently used first, where a disk hit
+// counts as a use (it renews the file's modification time), until the budget holds; the file
+// just written always stays. Temporary files left by a writer that died are removed after an
+// hour.
 class LutCache
 {
 public:
@@ -58,6 +64,10 @@ public:
   static constexpr std::size_t kDefaultMemoryBudget = std::size_t(256) << 20;
   void setMemoryBudget(std::size_t bytes);
   std::size_t memoryBytes() const;
+
+  // Bytes of LUT files the directory may hold (see above); applied at once and after each write.
+  static constexpr std::uintmax_t kDefaultDiskBudget = std::uintmax_t(512) << 20;
+  void setDiskBudget(std::uintmax_t bytes);
 
   static LutCache& shared(); // process-wide instance on the default directory
 

@@ -7,6 +7,7 @@
 #include "lut/lut_cache.h"
 
 #include <atomic>
+#include <chrono>
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
@@ -354,6 +355,63 @@ TEST_F(LutCacheTest, MemoryBudgetDropsLeastRecentlyUsed)
   EXPECT_EQ(a->size, 32); // still alive in its holder
   cache.brdf(kLobe, 32, 16);
   EXPECT_EQ(cache.memoryBytes(), one); // the newest is kept although over budget
+}
+
+// The disk budget: files are removed least recently used first (a disk hit is a use), only the
+// cache's own LUT files count and go (older format versions included), a stale temporary file of
+// a dead writer goes while a fresh one stays, other files are never touched, and the file just
+// written stays even when it alone exceeds the budget.
+TEST_F(LutCacheTest, DiskBudgetRemovesLeastRecentlyUsedFiles)
+{
+  const auto now = fs::file_time_type::clock::now();
+  auto age = [&](const fs::path& path, int hours)
+  { fs::last_write_time(path, now - std::chrono::hours(hours)); };
+  auto write = [&](const std::string& name, int hours)
+  {
+    std::ofstream(dir_ / name) << "not a cache file of this version";
+    age(dir_ / name, hours);
+    return dir_ / name;
+  };
+  {
+    LutCache writer(dir());
+    writer.brdf({10, 10}, 32, 16);
+    writer.brdf({20, 20}, 32, 16);
+  }
+  const fs::path a = fileOf("brdf_v1_nu4024000000000000"); // n_u = 10
+  const fs::path b = fileOf("brdf_v1_nu4034000000000000"); // n_u = 20
+  age(a, 3);
+  age(b, 2);
+  const fs::path old = write("brdf_v0_old.exr", 5);
+  const fs::path foreign = write("notes.txt", 6);
+  const fs::path staleTemp = write(".brdf_v1_x.exr.99.0.tmp.exr", 2);
+  const fs::path freshTemp = write(".brdf_v1_y.exr.99.1.tmp.exr", 0);
+
+  LutCache cache(dir());
+  cache.brdf({10, 10}, 32, 16); // a disk hit: a is now the most recently used
+  EXPECT_EQ(cache.stats().diskHits, 1u);
+  cache.brdf({30, 30}, 32, 16); // c, written now
+  const fs::path c = fileOf("brdf_v1_nu403e000000000000");
+  EXPECT_EQ(cache.stats().diskEvictions, 0u); // the default budget holds all of them
+  const std::uintmax_t budget = fs::file_size(a) + fs::file_size(c) + fs::file_size(b) / 2;
+  cache.setDiskBudget(budget);
+  // Oldest first: the old-version file, then b; a (used) and c (newest) fit the budget.
+  EXPECT_FALSE(fs::exists(old));
+  EXPECT_FALSE(fs::exists(b));
+  EXPECT_TRUE(fs::exists(a));
+  EXPECT_TRUE(fs::exists(c));
+  EXPECT_EQ(cache.stats().diskEvictions, 2u);
+  EXPECT_TRUE(fs::exists(foreign));
+  EXPECT_FALSE(fs::exists(staleTemp));
+  EXPECT_TRUE(fs::exists(freshTemp));
+
+  // Nothing fits: every LUT file goes, but a file just written stays.
+  cache.setDiskBudget(0);
+  EXPECT_FALSE(fs::exists(a));
+  EXPECT_FALSE(fs::exists(c));
+  cache.halfVector({40, 40}, 16);
+  EXPECT_TRUE(fs::exists(fileOf("halfvector")));
+  EXPECT_EQ(cache.stats().diskEvictions, 4u);
+  EXPECT_TRUE(fs::exists(foreign));
 }
 
 // Invalid inputs throw the bakers' errors and leave the cache usable and unchanged.
