@@ -85,7 +85,7 @@ Command renderCommand()
               "= coverage). Needs an X display; where there is none, run it under xvfb-run.";
   c.positionals = {"MESH"};
   Option builtin = textOption("--builtin", "NAME", "render a built-in mesh instead of a file");
-  builtin.choices = {"sphere", "torus", "plate"};
+  builtin.choices = {"sphere", "torus", "plate", "disk"};
   c.options.push_back(builtin);
   for (const char* name : kDeclared)
   {

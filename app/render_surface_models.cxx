@@ -3,6 +3,7 @@
 #include "LeadrMaterial.h"
 #include "MicrostructureMaterial.h"
 #include "leadr/leadr.h"
+#include "maps/map_files.h"
 #include "materials/texture_sampling.h"
 #include "microstructure/microstructure.h"
 #include "render_models.h"
@@ -148,7 +149,9 @@ void addSurfaceModelOptions(Command& c)
   c.options.push_back(choice("--leadr-filter",
                              "leadr: the slope moments, or only their mean (plain normal mapping)",
                              {"leadr", "normal-mapping"}));
-  c.options.push_back(choice("--structure", "microstructure: the repeating structure",
+  c.options.push_back(choice("--structure",
+                             "microstructure: the repeating structure; it turns with --tpr "
+                             "(grooves with --tpr circular on --builtin disk: a brushed disk)",
                              {"pyramids", "inverted-pyramids", "grooves", "silk"}));
   c.options.push_back(number("--grid", "K", ParameterType::Integer, 4.0, 1.0, 64.0,
                              "microstructure: K x K samples per pixel"));
@@ -218,6 +221,11 @@ bool applySurfaceModelOptions(const Arguments& a, RenderSettings& settings)
     o.f0 = settings.material.f0;
     micro.tiles = a.real("--structure-tiles");
     micro.lights = lightsFromOptions(a);
+    if (a.has("--tpr"))
+    {
+      // The structure turns with the map (a brushed disk with circular grooves).
+      micro.tprMap = std::make_shared<const Image>(readTprMap(a.text("--tpr"), "--tpr"));
+    }
     settings.installMaterial = MicrostructureShadingMaterial::installer(micro);
     return true;
   }

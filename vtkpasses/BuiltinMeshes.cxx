@@ -94,7 +94,8 @@ void addQuad(MeshBuilder& builder, vtkIdType a, vtkIdType b, vtkIdType c, vtkIdT
 
 BuiltinMesh parseBuiltinMesh(const std::string& name, const std::string& subject)
 {
-  for (BuiltinMesh mesh : {BuiltinMesh::Sphere, BuiltinMesh::Torus, BuiltinMesh::Plate})
+  for (BuiltinMesh mesh :
+       {BuiltinMesh::Sphere, BuiltinMesh::Torus, BuiltinMesh::Plate, BuiltinMesh::Disk})
   {
     if (name == builtinMeshName(mesh))
     {
@@ -115,13 +116,15 @@ std::string builtinMeshName(BuiltinMesh mesh)
     return "torus";
   case BuiltinMesh::Plate:
     return "plate";
+  case BuiltinMesh::Disk:
+    return "disk";
   }
   return "sphere";
 }
 
 std::string builtinMeshNames()
 {
-  return "sphere|torus|plate";
+  return "sphere|torus|plate|disk";
 }
 
 vtkSmartPointer<vtkPolyData> makeSphere(int segmentsAround, int segmentsPoleToPole)
@@ -245,6 +248,43 @@ vtkSmartPointer<vtkPolyData> makePlate(int segmentsPerSide)
   return builder.build();
 }
 
+vtkSmartPointer<vtkPolyData> makeDisk(int segmentsAround, int rings)
+{
+  requireAtLeast(segmentsAround, 3, "disk segments around");
+  requireAtLeast(rings, 1, "disk rings");
+  MeshBuilder builder;
+  const double normal[3] = {0.0, 0.0, 1.0};
+  const double tangent[3] = {1.0, 0.0, 0.0};
+  const double centre[3] = {0.0, 0.0, 0.0};
+  const vtkIdType middle = builder.addVertex(centre, normal, tangent, 0.5, 0.5);
+  // ring k (1..rings) has segmentsAround vertices at radius k / rings; no seam, the UVs are planar.
+  std::vector<vtkIdType> ids;
+  for (int k = 1; k <= rings; ++k)
+  {
+    const double r = static_cast<double>(k) / rings;
+    for (int i = 0; i < segmentsAround; ++i)
+    {
+      const double phi = 2.0 * kPi * i / segmentsAround;
+      const double p[3] = {r * std::cos(phi), r * std::sin(phi), 0.0};
+      ids.push_back(builder.addVertex(p, normal, tangent, 0.5 * (p[0] + 1.0), 0.5 * (p[1] + 1.0)));
+    }
+  }
+  const auto at = [&ids, segmentsAround](int i, int k)
+  { return ids[static_cast<size_t>((k - 1) * segmentsAround + i % segmentsAround)]; };
+  for (int i = 0; i < segmentsAround; ++i)
+  {
+    builder.addTriangle(middle, at(i, 1), at(i + 1, 1));
+  }
+  for (int k = 1; k < rings; ++k)
+  {
+    for (int i = 0; i < segmentsAround; ++i)
+    {
+      addQuad(builder, at(i, k), at(i, k + 1), at(i + 1, k + 1), at(i + 1, k));
+    }
+  }
+  return builder.build();
+}
+
 LoadedMesh makeBuiltinMesh(BuiltinMesh mesh)
 {
   LoadedMesh result;
@@ -258,6 +298,9 @@ LoadedMesh makeBuiltinMesh(BuiltinMesh mesh)
     break;
   case BuiltinMesh::Plate:
     result.polyData = makePlate();
+    break;
+  case BuiltinMesh::Disk:
+    result.polyData = makeDisk();
     break;
   }
   MeshReport& report = result.report;

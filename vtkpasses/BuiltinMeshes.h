@@ -15,6 +15,9 @@
 //           n = (cos psi cos phi, cos psi sin phi, sin psi), t = (-sin phi, cos phi, 0).
 //   plate:  the square [-1, 1]^2 in the XY plane, normal +Z, u = (x + 1) / 2 along +X,
 //           v = (y + 1) / 2 along +Y, t = +X.
+//   disk:   the unit disk x^2 + y^2 <= 1 in the XY plane, with the plate's normal, tangent and
+//           UVs (u = (x + 1) / 2, v = (y + 1) / 2), so a circular TPR map centred at (0.5, 0.5)
+//           turns around its centre: rings of vertices around a centre vertex.
 // Output follows the contract of SurfacePreparation.h: triangles wound counter-clockwise seen
 // from outside, float point arrays "Normals", "Tangents" (unit, orthogonal to the normal) and
 // "TCoords", all set active.
@@ -31,19 +34,21 @@ enum class BuiltinMesh
 {
   Sphere,
   Torus,
-  Plate
+  Plate,
+  Disk
 };
 
-// "sphere", "torus", "plate"; anything else is an aniso::Error "SUBJECT: reason".
+// "sphere", "torus", "plate", "disk"; anything else is an aniso::Error "SUBJECT: reason".
 BuiltinMesh parseBuiltinMesh(const std::string& name, const std::string& subject = "--builtin");
 std::string builtinMeshName(BuiltinMesh mesh);
-std::string builtinMeshNames(); // "sphere|torus|plate", for help texts
+std::string builtinMeshNames(); // "sphere|torus|plate|disk", for help texts
 
 // Resolutions: the defaults are smooth at full-screen sizes.
 vtkSmartPointer<vtkPolyData> makeSphere(int segmentsAround = 128, int segmentsPoleToPole = 64);
 vtkSmartPointer<vtkPolyData> makeTorus(int segmentsAround = 128, int segmentsAroundTube = 64,
                                        double majorRadius = 1.0, double minorRadius = 0.35);
 vtkSmartPointer<vtkPolyData> makePlate(int segmentsPerSide = 32);
+vtkSmartPointer<vtkPolyData> makeDisk(int segmentsAround = 128, int rings = 32);
 
 // The mesh at its default resolution with a report, so callers treat it like a loaded file.
 LoadedMesh makeBuiltinMesh(BuiltinMesh mesh);

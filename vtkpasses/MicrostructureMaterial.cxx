@@ -67,6 +67,7 @@ public:
   vtkSmartPointer<vtkTextureObject> height;
   vtkSmartPointer<vtkTextureObject> normal;
   vtkSmartPointer<vtkTextureObject> albedo;
+  vtkSmartPointer<vtkTextureObject> tpr;
 };
 
 MicrostructureShadingMaterial::MicrostructureShadingMaterial(
@@ -93,6 +94,21 @@ void MicrostructureShadingMaterial::validate(const MicrostructureSettings& s)
     throw errorAbout("tiles", "must be a finite number > 0");
   }
   validateShaderLights(s.lights);
+  if (s.tprMap)
+  {
+    const Image& m = *s.tprMap;
+    if (m.empty() || m.channels < 2)
+    {
+      throw errorAbout("TPR map", "needs two channels (the direction x, y) and texels");
+    }
+    for (float value : m.data)
+    {
+      if (!std::isfinite(value))
+      {
+        throw errorAbout("TPR map", "holds a value that is not finite");
+      }
+    }
+  }
 }
 
 MaterialInstaller MicrostructureShadingMaterial::installer(const MicrostructureSettings& settings)
@@ -109,7 +125,9 @@ MaterialInstaller MicrostructureShadingMaterial::installer(const MicrostructureS
 
 std::string MicrostructureShadingMaterial::fragmentDeclarations() const
 {
-  return shaders::kMicroFsDec;
+  // Without a map the turn is compiled out rather than branched over.
+  return settings_.tprMap ? std::string("#define MICRO_TPR\n") + shaders::kMicroFsDec
+                          : std::string(shaders::kMicroFsDec);
 }
 
 std::string MicrostructureShadingMaterial::fragmentImplementation() const
@@ -126,11 +144,17 @@ void MicrostructureShadingMaterial::setModelUniforms(vtkShaderProgram* program,
     textures_->height = uploadStructure(window, s.height, 1, "microstructure height");
     textures_->normal = uploadStructure(window, s.normal, 3, "microstructure normals");
     textures_->albedo = uploadStructure(window, s.albedo, 3, "microstructure albedo");
+    textures_->tpr =
+        settings_.tprMap ? uploadStructure(window, *settings_.tprMap, 2, "TPR map") : nullptr;
     textures_->window = window;
   }
   bind(program, "microHeight", textures_->height);
   bind(program, "microNormal", textures_->normal);
   bind(program, "microAlbedo", textures_->albedo);
+  if (textures_->tpr)
+  {
+    bind(program, "microTpr", textures_->tpr);
+  }
   const MicroShadingOptions& o = settings_.options;
   program->SetUniformf("microDepth", float(s.depth));
   program->SetUniformf("microTiles", float(settings_.tiles));

@@ -21,6 +21,9 @@ struct MicrostructureSettings
   MicroShadingOptions options;                     // samplesPerAxis, masking, BRDF, ...
   double tiles = 32.0;                             // structure tiles per unit of texture
   std::vector<Light> lights;
+  // Optional tangent-plane rotation map (2+ channels, core/maps/tpr_map.h): the structure turns
+  // per pixel so its grooves follow the map's direction (turnMicroPixel); circular: a brushed disk.
+  std::shared_ptr<const Image> tprMap;
 };
 
 // The jitter seed of a frame from its sample shift (vtkAnisoAccumulationPass::FRAME_SHIFT),

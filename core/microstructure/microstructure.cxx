@@ -310,6 +310,35 @@ void validateMicroOptions(const MicroShadingOptions& o)
     fail("march steps", "must be in [1, 1024] (got " + std::to_string(o.marchSteps) + ")");
 }
 
+glm::dvec2 sampleTprDirection(const Image& tprMap, const glm::dvec2& uv)
+{
+  const glm::dvec2 none(0.0, 1.0);
+  if (tprMap.width <= 0 || tprMap.height <= 0 || tprMap.channels < 2)
+    return none;
+  const BilinearTaps f = bilinearTaps(tprMap.width, tprMap.height, uv);
+  glm::dvec2 r(0.0);
+  for (int j = 0; j < 2; ++j)
+    for (int i = 0; i < 2; ++i)
+      r += f.wx[i] * f.wy[j] *
+           glm::dvec2(tprMap.at(f.x[i], f.y[j], 0), tprMap.at(f.x[i], f.y[j], 1));
+  const double len = glm::length(r);
+  return std::isfinite(len) && len > 1e-12 ? r / len : none;
+}
+
+TurnedPixel turnMicroPixel(const Frame& frame, const PixelFootprint& footprint, const glm::dvec2& r)
+{
+  auto turn = [&r](const glm::dvec2& p)
+  { return glm::dvec2(r.y * p.x - r.x * p.y, r.x * p.x + r.y * p.y); };
+  TurnedPixel turned;
+  turned.frame.t = r.y * frame.t - r.x * frame.b;
+  turned.frame.b = r.x * frame.t + r.y * frame.b;
+  turned.frame.n = frame.n;
+  turned.footprint.centre = turn(footprint.centre);
+  turned.footprint.axisU = turn(footprint.axisU);
+  turned.footprint.axisV = turn(footprint.axisV);
+  return turned;
+}
+
 glm::dvec3 shadeMicroPixel(const Microstructure& s, const MicroShadingOptions& o,
                            const PixelFootprint& footprint, const Frame& frame,
                            const glm::dvec3& position, const glm::dvec3& viewWorld,

@@ -113,6 +113,29 @@ struct PixelFootprint
   glm::dvec2 axisV{0.0, 1.0};
 };
 
+// Tangent-plane rotation (TPR, core/maps/tpr_map.h) of the structure: a TPR map gives per pixel
+// the brushing direction r = (x, y) in the tangent plane (x along t, y along b), as it does for
+// the Ashikhmin-Shirley material, and the structure turns so that its y axis, the direction its
+// grooves run along, follows r. The turned frame is (r.y t - r.x b, r.x t + r.y b, n) and a
+// structure point p becomes (r.y p.x - r.x p.y, r.x p.x + r.y p.y); r = (0, 1) turns nothing.
+// With the circular pattern the grooves run around the centre: a brushed disk.
+
+// The map's unit direction at texture coordinate uv: the wrapping bilinear lookup of its first
+// two channels (the shader's), normalised; (0, 1), no turn, where it vanishes (a circular
+// pattern's centre) or the map is empty.
+glm::dvec2 sampleTprDirection(const Image& tprMap, const glm::dvec2& uv);
+
+struct TurnedPixel
+{
+  Frame frame;
+  PixelFootprint footprint;
+};
+
+// FRAME and FOOTPRINT of a pixel turned so the structure's y axis follows DIRECTION (unit, in the
+// frame's tangent plane); shadeMicroPixel of the result shades the turned structure.
+TurnedPixel turnMicroPixel(const Frame& frame, const PixelFootprint& footprint,
+                           const glm::dvec2& direction);
+
 // Average over the K x K samples of sum over lights of f(v, l) E (n_k . l)+ [unshadowed], with
 // f = albedo / pi + f_spec in the frame of the sample's normal n_k. Samples whose normal faces
 // away from the view, lights below the pixel frame's horizon and views below it contribute

@@ -234,7 +234,7 @@ TEST(BuiltinMeshes, NamesParseAndUnknownNamesAreRejected)
   catch (const Error& e)
   {
     EXPECT_EQ(std::string(e.what()),
-              "--builtin: unknown built-in mesh 'cube' (expected sphere|torus|plate)");
+              "--builtin: unknown built-in mesh 'cube' (expected sphere|torus|plate|disk)");
   }
   EXPECT_THROW(makeSphere(2, 64), Error);
   EXPECT_THROW(makeTorus(128, 64, 0.3, 0.35), Error);

@@ -17,6 +17,11 @@ uniform float microRoughness;
 uniform float microBlinnExponent;
 uniform vec3 microF0;
 uniform int microMarchSteps;
+#ifdef MICRO_TPR
+// RG32F, bilinear, repeating: the brushing direction (x along t, y along b) the structure's y
+// axis follows (core turnMicroPixel).
+uniform sampler2D microTpr;
+#endif
 
 uint microHash(uint x)
 {

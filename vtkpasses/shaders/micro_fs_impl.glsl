@@ -1,6 +1,25 @@
   // Small-scale microstructure: replaces VTK's lighting result.
   {
 //LEADR_FRAME
+    vec2 microCentre = leadrTCoord * microTiles;
+    vec2 microAxisU = leadrUvDx * microTiles;
+    vec2 microAxisV = leadrUvDy * microTiles;
+#ifdef MICRO_TPR
+    {
+      // The structure turned so its y axis follows the map's direction r (core turnMicroPixel).
+      vec2 r = textureLod(microTpr, leadrTCoord, 0.0).xy;
+      r = dot(r, r) > 1e-24 ? normalize(r) : vec2(0.0, 1.0);
+      vec3 turnedT = r.y * t - r.x * b;
+      b = r.x * t + r.y * b;
+      t = turnedT;
+      tbn = mat3(t, b, n);
+      v = vec3(dot(viewWC, t), dot(viewWC, b), dot(viewWC, n));
+      mat2 turn = mat2(r.y, r.x, -r.x, r.y); // columns: images of (1, 0) and (0, 1)
+      microCentre = turn * microCentre;
+      microAxisU = turn * microAxisU;
+      microAxisV = turn * microAxisV;
+    }
+#endif
     vec3 radiance = vec3(0.0);
     // The lights in the pixel's frame (the structure is far smaller than their distance).
     vec3 lightLocal[leadrMaxLights];
@@ -20,9 +39,9 @@
     if (v.z > 0.0)
     {
       // The footprint: centre + a axisU + b axisV, a and b in [-1/2, 1/2].
-      vec2 centre = leadrTCoord * microTiles;
-      vec2 axisU = leadrUvDx * microTiles;
-      vec2 axisV = leadrUvDy * microTiles;
+      vec2 centre = microCentre;
+      vec2 axisU = microAxisU;
+      vec2 axisV = microAxisV;
       int k = clamp(microK, 1, 64);
       uint seed = (uint(gl_FragCoord.x) | (uint(gl_FragCoord.y) << 16)) ^ uint(microFrameSeed);
       for (int j = 0; j < k; ++j)
