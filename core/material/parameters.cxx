@@ -1,7 +1,9 @@
 #include "material/parameters.h"
 
 #include "error.h"
+#include "leadr/leadr.h"
 #include "lut/lut.h"
+#include "microstructure/microstructure.h"
 
 #include <algorithm>
 #include <cerrno>
@@ -130,6 +132,37 @@ std::vector<ParameterSpec> declare()
             "linear radiance of a plain background"),
       choice("tone-mapping", "Tone mapping", {"aces", "reinhard", "clamp"}, "aces",
              "display transform from linear radiance for the screen and PNG files"),
+      // The LEADR and microstructure models (core/leadr, core/microstructure; model key).
+      number("leadr-scale", "Relief scale", T::Real, 1.0, 0.0, 1e6, 0.01, S::Linear, {},
+             "leadr: heights of the relief times this"),
+      number("leadr-tiles", "Relief tiles", T::Real, 8.0, 1e-3, 1e6, 1.0, S::Logarithmic, {},
+             "leadr: repeats of the relief per unit of texture coordinate"),
+      number("leadr-roughness", "Base roughness", T::Real, 0.15, kLeadrMinAlpha, kLeadrMaxAlpha,
+             0.01, S::Linear, {}, "leadr: base Beckmann roughness added to every texel"),
+      number("leadr-grid", "Slope grid", T::Integer, 4.0, 1.0, 16.0, 1.0, S::Linear, {},
+             "leadr: slope-space grid N x N for the environment and diffuse"),
+      choice("leadr-filter", "Filtering", {"leadr", "normal-mapping"}, "leadr",
+             "leadr: the slope moments, or only their mean (plain normal mapping)"),
+      choice("structure", "Structure", {"pyramids", "inverted-pyramids", "grooves", "silk"},
+             "pyramids", "microstructure: the repeating structure (it turns with the TPR map)"),
+      number("micro-grid", "Grid", T::Integer, 4.0, 1.0, 64.0, 1.0, S::Linear, {},
+             "microstructure: K x K samples per pixel"),
+      choice("jitter-grid", "Jittered grid", {"off", "on"}, "off",
+             "microstructure: one random point per grid cell"),
+      choice("masking", "Masking", {"pom", "parallax", "normal"}, "pom",
+             "microstructure: parallax occlusion, parallax or normal mapping"),
+      choice("self-shadow", "Self-shadowing", {"off", "on"}, "off",
+             "microstructure: shadows of the structure per light"),
+      choice("micro-brdf", "BRDF", {"ggx", "blinn-phong"}, "ggx",
+             "microstructure: GGX with Smith-Schlick or normalised Blinn-Phong"),
+      number("micro-roughness", "Roughness", T::Real, 0.3, 1e-3, 1.0, 0.01, S::Linear, {},
+             "microstructure: GGX alpha"),
+      number("blinn-exponent", "Exponent", T::Real, 100.0, 0.0, 1e6, 1.0, S::Logarithmic, {},
+             "microstructure: Blinn-Phong exponent"),
+      number("structure-depth", "Depth", T::Real, 0.1, 1e-3, kMicroMaxDepth, 0.01, S::Linear,
+             "tiles", "microstructure: relief depth in tile widths"),
+      number("structure-tiles", "Tiles", T::Real, 64.0, 1e-3, 1e6, 1.0, S::Logarithmic, {},
+             "microstructure: tiles per unit of texture coordinate"),
   };
 }
 
