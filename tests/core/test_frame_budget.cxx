@@ -1,0 +1,113 @@
+// The frame-time budget of progressive refinement (quality/frame_budget.h):
+//   - the cost fit recovers fixed and per-sample costs that generated the measurements exactly
+//     (a known line), falls back to the stated assumption with one sample count, and keeps
+//     both parts non-negative;
+//   - the chosen samples per frame are the largest divisor of the run's total whose predicted
+//     cost meets the budget (values worked out by hand below), the material's own count when it
+//     fits or nothing is known, and 1 at worst; frames x samples per frame stay the run's total.
+#include "quality/frame_budget.h"
+
+#include <gtest/gtest.h>
+#include <vector>
+
+namespace aniso
+{
+namespace
+{
+// A frame of S samples at P pixels costing P (fixed + perSample S) seconds.
+FrameCostSample frame(int samples, double pixels, double fixed, double perSample)
+{
+  return {samples, pixels, pixels * (fixed + perSample * samples)};
+}
+
+TEST(FrameBudget, FitRecoversALine)
+{
+  // 40 ms fixed and 8 ms per sample at 300 000 pixels, measured at 1, 4 and 16 samples and at
+  // two sizes: per pixel, 40e-3 / 3e5 and 8e-3 / 3e5 seconds.
+  const double fixed = 40e-3 / 3e5;
+  const double perSample = 8e-3 / 3e5;
+  const FrameCostModel m =
+      fitFrameCost({frame(1, 75000.0, fixed, perSample), frame(4, 3e5, fixed, perSample),
+                    frame(16, 3e5, fixed, perSample)});
+  ASSERT_TRUE(m.known);
+  EXPECT_TRUE(m.separated);
+  EXPECT_NEAR(m.fixedPerPixel, fixed, 1e-9 * fixed);
+  EXPECT_NEAR(m.perSamplePerPixel, perSample, 1e-9 * perSample);
+  EXPECT_NEAR(m.predictSeconds(16, 3e5), 40e-3 + 16 * 8e-3, 1e-12);
+}
+
+TEST(FrameBudget, OneSampleCountSplitsEvenly)
+{
+  // Only 1-sample frames of 46 ms at 3e5 pixels: fixed = per sample = 23 ms / 3e5.
+  const FrameCostModel m = fitFrameCost({{1, 3e5, 0.046}, {1, 3e5, 0.046}});
+  ASSERT_TRUE(m.known);
+  EXPECT_FALSE(m.separated);
+  EXPECT_NEAR(m.fixedPerPixel, 0.023 / 3e5, 1e-15);
+  EXPECT_NEAR(m.perSamplePerPixel, 0.023 / 3e5, 1e-15);
+  EXPECT_FALSE(fitFrameCost({}).known);
+  // Unusable measurements are ignored.
+  EXPECT_FALSE(fitFrameCost({{1, 0.0, 0.01}, {0, 100.0, 0.01}}).known);
+}
+
+TEST(FrameBudget, FitKeepsBothPartsNonNegative)
+{
+  // More samples measured cheaper: everything fixed (the mean, 0.03 / 100 per pixel).
+  const FrameCostModel cheaper = fitFrameCost({{1, 100.0, 0.04}, {8, 100.0, 0.02}});
+  EXPECT_EQ(cheaper.perSamplePerPixel, 0.0);
+  EXPECT_NEAR(cheaper.fixedPerPixel, 0.03 / 100.0, 1e-15);
+  // A line through below the origin: everything per sample, the fit through the origin
+  // b = sum(x y) / sum(x^2) = (1 x 1e-4 + 4 x 1e-3) / 17.
+  const FrameCostModel steep = fitFrameCost({{1, 100.0, 0.01}, {4, 100.0, 0.1}});
+  EXPECT_EQ(steep.fixedPerPixel, 0.0);
+  EXPECT_NEAR(steep.perSamplePerPixel, (1e-4 + 4e-3) / 17.0, 1e-15);
+}
+
+TEST(FrameBudget, ChoosesTheLargestDivisorWithinTheBudget)
+{
+  // 38 ms fixed and 7.8 ms per sample at 1e5 pixels; budget 60 ms: (60 - 38) / 7.8 = 2.8 -> 2.
+  FrameCostModel m;
+  m.known = true;
+  m.separated = true;
+  m.fixedPerPixel = 38e-3 / 1e5;
+  m.perSamplePerPixel = 7.8e-3 / 1e5;
+  EXPECT_EQ(chooseFrameSamples(m, 1e5, 0.060, 16, 256), 2);
+  // Budget 80 ms: (80 - 38) / 7.8 = 5.4 -> 5, which does not divide 256: 4.
+  EXPECT_EQ(chooseFrameSamples(m, 1e5, 0.080, 16, 256), 4);
+  // A total of 300: 5 divides it.
+  EXPECT_EQ(chooseFrameSamples(m, 1e5, 0.080, 16, 300), 5);
+  // A prime total below the affordable count: 1.
+  EXPECT_EQ(chooseFrameSamples(m, 1e5, 0.080, 16, 257), 1);
+  // Everything fits (38 + 16 x 7.8 = 162.8 ms): the material's count.
+  EXPECT_EQ(chooseFrameSamples(m, 1e5, 0.163, 16, 256), 16);
+  // Half the pixels: (60 / 0.5 - 38) / 7.8 = 10.5 -> 10, divisor of 256 at most 10: 8.
+  EXPECT_EQ(chooseFrameSamples(m, 5e4, 0.060, 16, 256), 8);
+  // Not even the fixed part fits: 1 sample per frame.
+  EXPECT_EQ(chooseFrameSamples(m, 1e5, 0.020, 16, 256), 1);
+  // No budget, or nothing measured: the material's count.
+  EXPECT_EQ(chooseFrameSamples(m, 1e5, 0.0, 16, 256), 16);
+  EXPECT_EQ(chooseFrameSamples(FrameCostModel{}, 1e5, 0.060, 16, 256), 16);
+}
+
+TEST(FrameBudget, RunTotalIsWholeFrames)
+{
+  EXPECT_EQ(runTotalSamples(256, 16), 256);
+  EXPECT_EQ(runTotalSamples(100, 16), 112); // 7 frames of 16
+  EXPECT_EQ(runTotalSamples(1, 16), 16);
+  EXPECT_EQ(runTotalSamples(0, 0), 1);
+  // Every choice divides the run's total, so frames x samples per frame = total.
+  FrameCostModel m;
+  m.known = true;
+  m.fixedPerPixel = 1e-7;
+  m.perSamplePerPixel = 1e-7;
+  for (int target : {1, 7, 100, 256, 1000, 65536})
+  {
+    const int total = runTotalSamples(target, 16);
+    for (double budget : {0.001, 0.02, 0.05, 0.1})
+    {
+      const int s = chooseFrameSamples(m, 1e5, budget, 16, total);
+      EXPECT_EQ(total % s, 0) << target << " " << budget;
+    }
+  }
+}
+} // namespace
+} // namespace aniso
