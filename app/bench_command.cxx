@@ -23,15 +23,23 @@ Option flag(std::string name, std::string_view help)
 Command benchCommand()
 {
   Command c;
-  c.usage = "aniso bench [--quick] [--out DIR] [--size N]";
+  c.usage = "aniso bench [--quick] [--models LIST] [--out DIR] [--size N]";
   c.summary =
       "Render the benchmark scene set (sphere, torus and a flange under the built-in studio and "
       "the Blender HDRIs, four materials) with every specular method, filtering, half-vector "
       "source and sample count, and VTK's own PBR anisotropy on the same scenes; time each and "
-      "measure its error against the converged CPU reference integrator. Needs an X display; "
-      "where there is none, run it under xvfb-run.";
+      "measure its error against the converged CPU reference integrator. The other shading "
+      "models follow: the lit models under 1, 2 and 4 lights against the core's evaluation of "
+      "the same model, LEADR against a supersampled reference over its slope grid and the "
+      "distance, the microstructure over its K x K grid against its converged CPU evaluation, "
+      "each timed also as a ratio to the environment frame on the same scene. Needs an X "
+      "display; where there is none, run it under xvfb-run.";
   c.options.push_back(flag("--quick", "the small set (the sphere under the studio at 128x128, "
                                       "19 configurations per material): about a minute"));
+  c.options.push_back(textOption(
+      "--models", "LIST",
+      "the families to run, comma-separated: as-env (the environment Ashikhmin-Shirley set, "
+      "its goals and quality model), lit, leadr, micro (default: all)"));
   c.options.push_back(textOption(
       "--out", "DIR", "where bench.csv, bench.md, bench.svg and bench.png go", "bench-out"));
   c.options.push_back(textOption(
@@ -40,12 +48,15 @@ Command benchCommand()
       "scenes keep their sizes (512x512, and the default scene at 800x600)"));
   c.options.push_back(
       textOption("--cache", "DIR", "reference images cache (default $XDG_CACHE_HOME/aniso/bench)"));
-  c.details = "Output: bench.csv (one row per measurement), bench.md (tables, the goals, the "
-              "counters, the quality model), bench.svg and bench.png (error against time), "
+  c.details = "Output: bench.csv (one row per measurement, its model in the model column), "
+              "bench.md (tables, the goals, the counters, the quality model, the other models), "
+              "bench.svg and bench.png (error against time), bench_models.svg and "
+              "bench_models.png (the other models' error against frame time), "
               "quality_model.txt (the fitted table of core/quality).\n"
               "Examples:\n"
               "  xvfb-run -a aniso bench --quick --out /tmp/bench\n"
-              "  xvfb-run -a -s \"-screen 0 1280x1024x24\" aniso bench --out bench-out\n";
+              "  xvfb-run -a -s \"-screen 0 1280x1024x24\" aniso bench --out bench-out\n"
+              "  xvfb-run -a aniso bench --models lit,leadr,micro --out bench-models\n";
   return c;
 }
 } // namespace
@@ -75,6 +86,10 @@ int runBenchCommand(const std::vector<std::string>& args, std::ostream& out)
       throw usageError("--size", "the benchmark renders square images: give one number");
     }
   }
+  if (a.has("--models"))
+  {
+    options.families = bench::parseBenchFamilies(a.text("--models"));
+  }
   options.outDirectory = a.text("--out");
   options.cacheDirectory = a.has("--cache") ? a.text("--cache") : std::string();
   options.commandLine = "aniso bench";
@@ -84,10 +99,12 @@ int runBenchCommand(const std::vector<std::string>& args, std::ostream& out)
   }
   const bench::BenchResult result = bench::runBench(options, out);
   bench::writeBenchOutputs(result, options.outDirectory);
-  out << "\n" << bench::benchMarkdown(result, "bench.svg");
+  out << "\n" << bench::benchMarkdown(result, "bench.svg", "bench_models.svg");
   out << "\nbench: wrote " << (std::filesystem::path(options.outDirectory) / "bench.csv").string()
-      << ", bench.md, bench.svg, bench.png and quality_model.txt in " << options.outDirectory
-      << " (" << result.rows.size() << " rows, " << result.seconds << " s)\n";
+      << ", bench.md, bench.svg, bench.png, bench_models.svg, bench_models.png and "
+         "quality_model.txt in "
+      << options.outDirectory << " (" << result.rows.size() << " rows, " << result.seconds
+      << " s)\n";
   return 0;
 }
 } // namespace aniso::cli

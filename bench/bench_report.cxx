@@ -73,6 +73,19 @@ std::string configText(const BenchRow& r)
   return text;
 }
 
+// A row of the environment set (the Ashikhmin-Shirley configurations and VTK's PBR beside
+// them), as opposed to the other models' rows and their baselines.
+bool environmentSet(const BenchRow& r)
+{
+  return r.model == "as-env" && r.kind != "baseline";
+}
+
+// Frame time over the environment frame on the same scene (0 where none was measured).
+double baselineRatio(const BenchRow& r)
+{
+  return r.baselineFrameSeconds > 0.0 ? r.medianFrameSeconds / r.baselineFrameSeconds : 0.0;
+}
+
 // Time to the image a row measures: one frame, or the frames accumulated so far.
 double timeOf(const BenchRow& r)
 {
@@ -451,6 +464,274 @@ void sweepTables(std::ostream& md, const std::vector<BenchRow>& rows,
     }
   }
 }
+
+std::string ratioText(const BenchRow& r)
+{
+  return r.baselineFrameSeconds > 0.0 ? number(baselineRatio(r), 3) + "x" : std::string("-");
+}
+
+// "12.3 ms (0.41x)": a frame and its ratio to the environment frame on the same scene.
+std::string frameText(const BenchRow& r)
+{
+  return milliseconds(r.medianFrameSeconds) + " (" + ratioText(r) + ")";
+}
+
+const std::vector<glm::dvec3>& palette()
+{
+  static const std::vector<glm::dvec3> colors{
+      {0.84, 0.37, 0.0}, {0.0, 0.45, 0.70}, {0.0, 0.62, 0.45},  {0.8, 0.47, 0.65},
+      {0.55, 0.25, 0.6}, {0.9, 0.6, 0.0},   {0.34, 0.71, 0.91}, {0.2, 0.2, 0.2}};
+  return colors;
+}
+
+std::vector<std::string> uniqueValues(const std::vector<BenchRow>& rows,
+                                      const std::function<bool(const BenchRow&)>& keep,
+                                      const std::function<std::string(const BenchRow&)>& value)
+{
+  std::vector<std::string> values;
+  for (const BenchRow& r : rows)
+  {
+    if (keep(r) && std::find(values.begin(), values.end(), value(r)) == values.end())
+    {
+      values.push_back(value(r));
+    }
+  }
+  return values;
+}
+
+// Error against frame time (as a ratio to the environment frame) of the other models: one panel
+// per family.
+Figure modelsErrorAgainstTime(const BenchResult& result)
+{
+  Figure figure;
+  figure.title = "Other shading models: relative L2 error against frame time (ratio to the AS "
+                 "environment frame on the same scene)";
+  figure.columns = 3;
+  const auto& colors = palette();
+  auto addSeries = [&](PlotPanel& panel, const std::string& label, std::size_t color, Marker marker,
+                       bool connect, double opacity, const std::function<bool(const BenchRow&)>& in)
+  {
+    PlotSeries series;
+    series.label = label;
+    series.color = colors[color % colors.size()];
+    series.marker = marker;
+    series.connect = connect;
+    series.opacity = opacity;
+    for (const BenchRow& r : result.rows)
+    {
+      if (in(r))
+      {
+        series.points.push_back({baselineRatio(r), r.relativeL2});
+      }
+    }
+    if (!series.points.empty())
+    {
+      panel.series.push_back(series);
+    }
+  };
+  const std::string xLabel = "frame time / environment frame";
+  {
+    PlotPanel panel;
+    panel.title = "Lit models vs their CPU evaluation";
+    panel.xLabel = xLabel;
+    panel.yLabel = "relative L2 error";
+    const auto models = uniqueValues(
+        result.rows, [](const BenchRow& r) { return r.kind == "lit"; },
+        [](const BenchRow& r) { return r.model; });
+    for (std::size_t i = 0; i < models.size(); ++i)
+    {
+      for (const char* mesh : {"sphere", "flange"})
+      {
+        const bool sphere = std::string(mesh) == "sphere";
+        addSeries(panel, sphere ? models[i] : std::string(), i,
+                  sphere ? Marker::Circle : Marker::Square, true, sphere ? 1.0 : 0.6,
+                  [&](const BenchRow& r)
+                  { return r.kind == "lit" && r.model == models[i] && r.mesh == mesh; });
+      }
+    }
+    figure.panels.push_back(panel);
+  }
+  {
+    PlotPanel panel;
+    panel.title = "LEADR vs supersampled (line: grid n)";
+    panel.xLabel = xLabel;
+    panel.yLabel = "relative L2 error";
+    const auto distances = uniqueValues(
+        result.rows, [](const BenchRow& r) { return r.kind == "leadr"; },
+        [](const BenchRow& r) { return r.variant; });
+    for (std::size_t i = 0; i < distances.size(); ++i)
+    {
+      for (const char* model : {"leadr", "normal-map"})
+      {
+        const bool leadr = std::string(model) == "leadr";
+        addSeries(panel, (leadr ? "LEADR, " : "normal map, ") + distances[i], i,
+                  leadr ? Marker::Circle : Marker::Square, true, leadr ? 1.0 : 0.6,
+                  [&](const BenchRow& r)
+                  { return r.kind == "leadr" && r.model == model && r.variant == distances[i]; });
+      }
+    }
+    figure.panels.push_back(panel);
+  }
+  {
+    PlotPanel panel;
+    panel.title = "Microstructure vs converged CPU (line: K)";
+    panel.xLabel = xLabel;
+    panel.yLabel = "relative L2 error";
+    const auto variants = uniqueValues(
+        result.rows, [](const BenchRow& r) { return r.kind == "micro"; },
+        [](const BenchRow& r) { return r.variant; });
+    for (std::size_t i = 0; i < variants.size(); ++i)
+    {
+      for (const char* method : {"full-grid", "jittered"})
+      {
+        const bool full = std::string(method) == "full-grid";
+        addSeries(panel, full ? variants[i] : std::string(), i,
+                  full ? Marker::Circle : Marker::Diamond, true, full ? 1.0 : 0.45,
+                  [&](const BenchRow& r)
+                  { return r.kind == "micro" && r.variant == variants[i] && r.method == method; });
+      }
+    }
+    figure.panels.push_back(panel);
+  }
+  figure.panels.erase(std::remove_if(figure.panels.begin(), figure.panels.end(),
+                                     [](const PlotPanel& p) { return p.series.empty(); }),
+                      figure.panels.end());
+  figure.columns = std::max(1, int(figure.panels.size()));
+  return figure;
+}
+
+std::string modelsMarkdown(const BenchResult& result, const std::string& plotFile)
+{
+  const auto& rows = result.rows;
+  if (!find(rows, [](const BenchRow& r) { return r.model != "as-env"; }))
+  {
+    return {};
+  }
+  std::ostringstream md;
+  md << "\n### Other shading models (issue 6)\n\n"
+        "Each scene first times the environment frame (Ashikhmin-Shirley " +
+            lobeText(AsLobe{1000.0, 100.0}) +
+            ", exact, filtered, LUT, 16 samples, built-in studio) in the same session; every "
+            "frame time below is followed by its ratio to that frame, which a loaded machine "
+            "changes far less than the times themselves. Times are medians of 2 to 5 frames "
+            "after a warm-up frame; errors are the relative L2 over RGB and p99 (the 99th "
+            "percentile of the per-pixel error over the image's RMS radiance) on the compared "
+            "pixels.\n\n"
+            "| Scene | Image | Environment frame | Its L2 (vs the reference integrator) |\n"
+            "| --- | --- | --- | --- |\n";
+  for (const BenchRow& r : rows)
+  {
+    if (r.kind == "baseline")
+    {
+      md << "| " << r.mesh << " | " << r.width << "x" << r.height << " | "
+         << milliseconds(r.medianFrameSeconds) << " | " << number(r.relativeL2) << " |\n";
+    }
+  }
+  if (find(rows, [](const BenchRow& r) { return r.kind == "lit"; }))
+  {
+    md << "\n#### Lit models under point and directional lights\n\n"
+          "Brushed metal (a uniform sample material: alpha 0.05 along the parallels, 0.35 "
+          "across, k_s 0.9) under the first 1, 2 or 4 of: dir:-1,-2,1.5, point:1.5,-2,1.5, "
+          "dir:1.5,-1,0.4, point:-1.5,-1,2.5. Error against the core's CPU evaluation of the "
+          "same model and lights (shadeLitModel) at every covered pixel away from the "
+          "silhouette, with the frame the shader builds from the interpolated normal and "
+          "tangent.\n\n"
+          "| Mesh | Model | Lights | Frame (/ env) | Relative L2 | p99 | Pixels |\n"
+          "| --- | --- | --- | --- | --- | --- | --- |\n";
+    for (const BenchRow& r : rows)
+    {
+      if (r.kind == "lit")
+      {
+        md << "| " << r.mesh << " | " << r.model << " | " << r.variant << " | " << frameText(r)
+           << " | " << number(r.relativeL2) << " | " << number(r.percentile99) << " | "
+           << r.comparedPixels << " |\n";
+      }
+    }
+  }
+  if (find(rows, [](const BenchRow& r) { return r.kind == "leadr"; }))
+  {
+    md << "\n#### LEADR against the supersampled reference, with plain normal mapping\n\n"
+          "The plate under a parallel view at 50 degrees, a bumpy height map (96 random-phase "
+          "waves, slope deviation 0.3) baked to LEADR moments, base roughness 0.1, F0 0.9, "
+          "diffuse 0.05, under the studio (specular on the n x n slope grid, SH9 diffuse) and "
+          "one directional light 25 degrees off the mirror direction. Distance is set by the "
+          "relief's texels per pixel (the level is the mean mip level LEADR reads). The "
+          "reference averages the fine-level shading over a grid of points in each pixel's "
+          "footprint (at least 4 per period of the finest wave), each point's lobe integrated "
+          "on a 6 x 6 slope grid reading the environment itself. Normal mapping is the same "
+          "shader given only the filtered mean slope.\n\n"
+          "| Distance | Level | n | LEADR L2 | LEADR p99 | LEADR frame (/ env) | Normal map L2 "
+          "| Normal map p99 | Normal map frame (/ env) |\n"
+          "| --- | --- | --- | --- | --- | --- | --- | --- | --- |\n";
+    for (const BenchRow& r : rows)
+    {
+      if (r.kind != "leadr" || r.model != "leadr")
+      {
+        continue;
+      }
+      const BenchRow* plain = find(rows,
+                                   [&](const BenchRow& x)
+                                   {
+                                     return x.kind == "leadr" && x.model == "normal-map" &&
+                                            x.variant == r.variant && x.grid == r.grid;
+                                   });
+      md << "| " << r.variant << " | " << number(r.mipLevel, 2) << " | " << r.grid << " | "
+         << number(r.relativeL2) << " | " << number(r.percentile99) << " | " << frameText(r)
+         << " | " << (plain ? number(plain->relativeL2) : std::string("-")) << " | "
+         << (plain ? number(plain->percentile99) : std::string("-")) << " | "
+         << (plain ? frameText(*plain) : std::string("-")) << " |\n";
+    }
+  }
+  if (find(rows, [](const BenchRow& r) { return r.kind == "micro"; }))
+  {
+    const BenchRow* any = find(rows, [](const BenchRow& r) { return r.kind == "micro"; });
+    md << "\n#### Microstructure over its K x K grid against the converged CPU evaluation\n\n"
+          "The plate under a parallel view at 50 degrees, "
+       << any->width << "x" << any->height
+       << ", 2.77 structure tiles across a pixel (structures of 64² texels, depth 0.2 tile), "
+          "GGX alpha 0.2, F0 0.5, one directional and one point light. The reference is the "
+          "core's shadeMicroPixel with a full 32 x 32 grid (24 x 24 in the quick set) on the "
+          "same footprints; the full grid samples cell centres, the jittered one a random "
+          "point per cell (per-pixel seeds).\n\n"
+          "| Structure, masking | K | Full L2 | Full p99 | Full frame (/ env) | Jittered L2 | "
+          "Jittered p99 | Jittered frame (/ env) |\n"
+          "| --- | --- | --- | --- | --- | --- | --- | --- |\n";
+    for (const std::string& variant : uniqueValues(
+             rows, [](const BenchRow& r) { return r.kind == "micro"; },
+             [](const BenchRow& r) { return r.variant; }))
+    {
+      for (int k : {1, 2, 4, 8})
+      {
+        auto cell = [&](const char* method)
+        {
+          return find(rows,
+                      [&](const BenchRow& r) {
+                        return r.kind == "micro" && r.variant == variant && r.grid == k &&
+                               r.method == method;
+                      });
+        };
+        const BenchRow* full = cell("full-grid");
+        const BenchRow* jittered = cell("jittered");
+        if (!full && !jittered)
+        {
+          continue;
+        }
+        const std::string none = "-";
+        md << "| " << variant << " | " << k << " | " << (full ? number(full->relativeL2) : none)
+           << " | " << (full ? number(full->percentile99) : none) << " | "
+           << (full ? frameText(*full) : none) << " | "
+           << (jittered ? number(jittered->relativeL2) : none) << " | "
+           << (jittered ? number(jittered->percentile99) : none) << " | "
+           << (jittered ? frameText(*jittered) : none) << " |\n";
+      }
+    }
+  }
+  if (!plotFile.empty())
+  {
+    md << "\n![Other models: error against frame time](" << plotFile << ")\n";
+  }
+  return md.str();
+}
 } // namespace
 
 std::vector<Goal> evaluateGoals(const BenchResult& result)
@@ -510,7 +791,7 @@ std::string benchCsv(const BenchResult& result)
   csv << "kind,mesh,environment,nu,nv,method,filtered,half_vectors,samples,frames,width,height,"
          "covered_pixels,runs,median_frame_ms,first_frame_ms,total_ms,median_frame_cpu_ms,"
          "total_cpu_ms,samples_per_second,relative_l2,p99_error,reference_bound,"
-         "compared_pixels\n";
+         "compared_pixels,model,variant,lights,grid,mip_level,baseline_ratio\n";
   for (const BenchRow& r : result.rows)
   {
     csv << r.kind << "," << csvField(r.mesh) << "," << csvField(r.environment) << ","
@@ -521,12 +802,15 @@ std::string benchCsv(const BenchResult& result)
         << "," << number(r.totalSeconds * 1e3, 6) << "," << number(r.medianFrameCpuSeconds * 1e3, 6)
         << "," << number(r.totalCpuSeconds * 1e3, 6) << "," << number(r.samplesPerSecond, 6) << ","
         << number(r.relativeL2, 6) << "," << number(r.percentile99, 6) << ","
-        << number(r.referenceBound, 6) << "," << r.comparedPixels << "\n";
+        << number(r.referenceBound, 6) << "," << r.comparedPixels << "," << r.model << ","
+        << csvField(r.variant) << "," << r.lights << "," << r.grid << "," << number(r.mipLevel, 4)
+        << "," << number(baselineRatio(r), 6) << "\n";
   }
   return csv.str();
 }
 
-std::string benchMarkdown(const BenchResult& result, const std::string& plotFile)
+std::string benchMarkdown(const BenchResult& result, const std::string& plotFile,
+                          const std::string& modelsPlotFile)
 {
   std::ostringstream md;
   md << "## Time against error (`aniso bench`)\n\n";
@@ -534,8 +818,15 @@ std::string benchMarkdown(const BenchResult& result, const std::string& plotFile
      << "1280x1024x24\"`). Machine: " << result.machine << ", OpenGL " << result.renderer
      << "; load average " << number(result.loadBefore, 2) << " before and "
      << number(result.loadAfter, 2) << " after the run, which took "
-     << number(result.seconds / 60.0, 3) << " min. Images " << result.size << "x" << result.size
-     << (result.quick ? " (quick set)" : "") << ", F0 = aluminium (0.913, 0.922, 0.924), no "
+     << number(result.seconds / 60.0, 3) << " min.";
+  if (!find(result.rows, environmentSet))
+  {
+    md << (result.quick ? " Quick set." : "") << "\n";
+    md << modelsMarkdown(result, modelsPlotFile);
+    return md.str();
+  }
+  md << " Images " << result.size << "x" << result.size << (result.quick ? " (quick set)" : "")
+     << ", F0 = aluminium (0.913, 0.922, 0.924), no "
      << "diffuse, cube map 256² per face, no jitter (pixel centres, as the reference). Times are "
      << "medians of 2 to 5 frames after a warm-up frame (GPU work included); error is the relative "
      << "L2 over RGB against the CPU reference integrator on a regular subset of the covered "
@@ -546,8 +837,11 @@ std::string benchMarkdown(const BenchResult& result, const std::string& plotFile
   double smallestError = std::numeric_limits<double>::infinity();
   for (const BenchRow& r : result.rows)
   {
-    largestBound = std::max(largestBound, r.referenceBound);
-    smallestError = std::min(smallestError, r.relativeL2);
+    if (r.model == "as-env")
+    {
+      largestBound = std::max(largestBound, r.referenceBound);
+      smallestError = std::min(smallestError, r.relativeL2);
+    }
   }
   md << "The references' own error bounds reach at most " << number(largestBound, 2)
      << "; the smallest error reported is " << number(smallestError, 2) << ".\n\n";
@@ -589,7 +883,7 @@ std::string benchMarkdown(const BenchResult& result, const std::string& plotFile
   std::vector<std::string> hdris;
   for (const BenchRow& r : result.rows)
   {
-    if (r.environment != kStudio &&
+    if (environmentSet(r) && r.environment != kStudio &&
         std::find(hdris.begin(), hdris.end(), r.environment) == hdris.end())
     {
       hdris.push_back(r.environment);
@@ -762,6 +1056,7 @@ std::string benchMarkdown(const BenchResult& result, const std::string& plotFile
          << number(samplesFor(0.05), 4) << " |\n";
     }
   }
+  md << modelsMarkdown(result, modelsPlotFile);
   return md.str();
 }
 
@@ -787,7 +1082,14 @@ void writeBenchOutputs(const BenchResult& result, const std::string& directory)
   const Figure figure = errorAgainstTime(result);
   writeText("bench.svg", figureToSvg(figure));
   writeImage((fs::path(directory) / "bench.png").string(), figureToImage(figure));
-  writeText("bench.md", benchMarkdown(result, "bench.svg"));
+  const bool models = find(result.rows, [](const BenchRow& r) { return r.model != "as-env"; });
+  if (models)
+  {
+    const Figure modelsFigure = modelsErrorAgainstTime(result);
+    writeText("bench_models.svg", figureToSvg(modelsFigure));
+    writeImage((fs::path(directory) / "bench_models.png").string(), figureToImage(modelsFigure));
+  }
+  writeText("bench.md", benchMarkdown(result, "bench.svg", models ? "bench_models.svg" : ""));
   std::ostringstream model;
   model << "// Fitted by: " << result.commandLine << "\n// {n_u, n_v, filtered, a, p}: relative "
         << "L2 = a N^-p\n";

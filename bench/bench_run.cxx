@@ -1,5 +1,6 @@
 #include "bench_run.h"
 
+#include "bench_models.h"
 #include "bench_scenes.h"
 #include "error.h"
 #include "reference_image.h"
@@ -204,50 +205,6 @@ std::string lobeText(const AsLobe& lobe)
   return text;
 }
 
-double median(std::vector<double> values)
-{
-  if (values.empty())
-  {
-    return 0.0;
-  }
-  std::sort(values.begin(), values.end());
-  const std::size_t n = values.size();
-  return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
-}
-
-double medianWall(const std::vector<FrameTime>& times)
-{
-  std::vector<double> values;
-  for (const FrameTime& t : times)
-  {
-    values.push_back(t.wall);
-  }
-  return median(values);
-}
-
-double medianCpu(const std::vector<FrameTime>& times)
-{
-  std::vector<double> values;
-  for (const FrameTime& t : times)
-  {
-    values.push_back(t.cpu);
-  }
-  return median(values);
-}
-
-int64_t covered(const Image& image)
-{
-  int64_t count = 0;
-  for (int y = 0; y < image.height; ++y)
-  {
-    for (int x = 0; x < image.width; ++x)
-    {
-      count += image.at(x, y, 3) > 0.0f ? 1 : 0;
-    }
-  }
-  return count;
-}
-
 double loadAverage()
 {
   std::ifstream in("/proc/loadavg");
@@ -370,6 +327,8 @@ public:
     }
   }
 
+  const std::string& cacheDirectory() const { return cache_; }
+
   void runGoalScene()
   {
     RenderSession session(kGoalSize, kGoalSize);
@@ -445,7 +404,7 @@ private:
     row.percentile99 = error.percentile99;
     row.referenceBound = reference.relativeErrorBound;
     row.comparedPixels = static_cast<int>(reference.pixels.size());
-    row.coveredPixels = covered(image);
+    row.coveredPixels = coveredPixels(image);
     if (error.uncovered > 0)
     {
       log_ << "  warning: " << error.uncovered << " compared pixels not covered by the render"
@@ -465,9 +424,9 @@ private:
     const std::vector<FrameTime> timed = session.renderMore(row.runs);
     describeConfig(row, config);
     row.firstFrameSeconds = first.front().wall;
-    row.medianFrameSeconds = medianWall(timed);
+    row.medianFrameSeconds = medianFrameTime(timed).wall;
     row.totalSeconds = row.medianFrameSeconds;
-    row.medianFrameCpuSeconds = medianCpu(timed);
+    row.medianFrameCpuSeconds = medianFrameTime(timed).cpu;
     row.totalCpuSeconds = row.medianFrameCpuSeconds;
     row.samplesPerSecond = double(row.coveredPixels) * config.samples / row.medianFrameSeconds;
     log_ << "  " << row.mesh << " " << row.environment << " " << lobeText(row.lobe) << " "
@@ -502,8 +461,8 @@ private:
       row.frames = checkpoint;
       row.runs = checkpoint;
       row.firstFrameSeconds = times.front().wall;
-      row.medianFrameSeconds = medianWall(times);
-      row.medianFrameCpuSeconds = medianCpu(times);
+      row.medianFrameSeconds = medianFrameTime(times).wall;
+      row.medianFrameCpuSeconds = medianFrameTime(times).cpu;
       for (const FrameTime& t : times)
       {
         row.totalSeconds += t.wall;
@@ -542,9 +501,9 @@ private:
     row.runs = 5;
     const std::vector<FrameTime> timed = session.renderMore(row.runs);
     row.firstFrameSeconds = first.front().wall;
-    row.medianFrameSeconds = medianWall(timed);
+    row.medianFrameSeconds = medianFrameTime(timed).wall;
     row.totalSeconds = row.medianFrameSeconds;
-    row.medianFrameCpuSeconds = medianCpu(timed);
+    row.medianFrameCpuSeconds = medianFrameTime(timed).cpu;
     row.totalCpuSeconds = row.medianFrameCpuSeconds;
     row.samplesPerSecond = double(row.coveredPixels) / row.medianFrameSeconds;
     log_ << "  " << row.mesh << " " << row.environment << " " << lobeText(lobe)
@@ -639,6 +598,36 @@ private:
 };
 } // namespace
 
+const std::vector<std::string>& benchFamilies()
+{
+  static const std::vector<std::string> families{"as-env", "lit", "leadr", "micro"};
+  return families;
+}
+
+std::vector<std::string> parseBenchFamilies(const std::string& list)
+{
+  std::vector<std::string> families;
+  std::istringstream in(list);
+  for (std::string name; std::getline(in, name, ',');)
+  {
+    const auto& known = benchFamilies();
+    if (std::find(known.begin(), known.end(), name) == known.end())
+    {
+      throw errorAbout("--models", "'" + name + "' is not one of as-env, lit, leadr, micro");
+    }
+    if (std::find(families.begin(), families.end(), name) != families.end())
+    {
+      throw errorAbout("--models", "'" + name + "' is given twice");
+    }
+    families.push_back(name);
+  }
+  if (families.empty())
+  {
+    throw errorAbout("--models", "no family given (as-env, lit, leadr, micro)");
+  }
+  return families;
+}
+
 BenchResult runBench(const BenchOptions& options, std::ostream& log)
 {
   const auto start = std::chrono::steady_clock::now();
@@ -648,12 +637,17 @@ BenchResult runBench(const BenchOptions& options, std::ostream& log)
   result.commandLine = options.commandLine;
   result.machine = machineDescription();
   result.loadBefore = loadAverage();
-  const std::vector<ScenePlan> plans =
-      options.quick
-          ? planQuick()
-          : planFull(options.hdriDirectory.empty() ? kBlenderHdriDirectory : options.hdriDirectory);
+  const std::vector<std::string>& families =
+      options.families.empty() ? benchFamilies() : options.families;
+  const auto runs = [&](const char* family)
+  { return std::find(families.begin(), families.end(), family) != families.end(); };
   Runner runner(options, log, result);
+  if (runs("as-env"))
   {
+    const std::vector<ScenePlan> plans =
+        options.quick ? planQuick()
+                      : planFull(options.hdriDirectory.empty() ? kBlenderHdriDirectory
+                                                               : options.hdriDirectory);
     RenderSession session(result.size, result.size);
     log << "bench: " << plans.size() << " scene(s) at " << result.size << "x" << result.size
         << std::endl;
@@ -663,16 +657,34 @@ BenchResult runBench(const BenchOptions& options, std::ostream& log)
       runner.runScene(plan, session);
     }
     result.renderer = session.rendererName();
+    if (!options.quick)
+    {
+      log << "scene: the published method's goal at " << kGoalSize << "x" << kGoalSize << std::endl;
+      runner.runGoalScene();
+      log << "scene: the default scene at " << kDefaultWidth << "x" << kDefaultHeight << std::endl;
+      runner.runDefaultScene();
+    }
   }
-  if (!options.quick)
+  ModelBenchOptions models;
+  models.quick = options.quick;
+  models.size = result.size;
+  models.lit = runs("lit");
+  models.leadr = runs("leadr");
+  models.microstructure = runs("micro");
+  models.cacheDirectory = runner.cacheDirectory();
+  if (models.lit || models.leadr || models.microstructure)
   {
-    log << "scene: the published method's goal at " << kGoalSize << "x" << kGoalSize << std::endl;
-    runner.runGoalScene();
-    log << "scene: the default scene at " << kDefaultWidth << "x" << kDefaultHeight << std::endl;
-    runner.runDefaultScene();
+    const std::string renderer = runModelBenches(models, log, result.rows);
+    if (result.renderer.empty())
+    {
+      result.renderer = renderer;
+    }
   }
-  result.goals = evaluateGoals(result);
-  result.qualityFits = fitQuality(result.rows);
+  if (runs("as-env"))
+  {
+    result.goals = evaluateGoals(result);
+    result.qualityFits = fitQuality(result.rows);
+  }
   result.loadAfter = loadAverage();
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;

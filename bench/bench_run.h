@@ -22,7 +22,16 @@ struct BenchOptions
   std::string cacheDirectory; // reference cache; empty: $XDG_CACHE_HOME/aniso/bench (or ~/.cache)
   std::string hdriDirectory;  // HDRIs of the full set; empty: the Blender studio lights
   std::string commandLine;    // as typed, for the report
+  // Which families run: "as-env" (the environment Ashikhmin-Shirley set with its goals,
+  // counters and quality model), "lit", "leadr", "micro" (bench_models.h). Empty: all of them.
+  std::vector<std::string> families;
 };
+
+// The families `aniso bench --models` accepts, in the order they run.
+const std::vector<std::string>& benchFamilies();
+// The comma-separated LIST as families; throws aniso::Error "--models: reason" for an unknown or
+// repeated name or an empty list.
+std::vector<std::string> parseBenchFamilies(const std::string& list);
 
 struct BenchRow
 {
@@ -51,6 +60,18 @@ struct BenchRow
   double percentile99 = 0.0;
   double referenceBound = 0.0; // the reference's own relative L2 error bound
   int comparedPixels = 0;
+  // The shading model: "as-env" (the environment Ashikhmin-Shirley, and VTK's PBR beside it),
+  // a lit model ("banks", "ward", ...), "leadr", "normal-map" (LEADR's baseline),
+  // "microstructure"; kind "lit", "leadr", "micro", or "baseline" for the environment frame
+  // timed on their scenes.
+  std::string model = "as-env";
+  std::string variant;   // lit: the lights; microstructure: structure, masking and shadowing
+  int lights = 0;        // point and directional lights
+  int grid = 0;          // LEADR: slope grid n (n^2 samples); microstructure: K (K^2 samples)
+  double mipLevel = 0.0; // LEADR: mean mip level of the moments over the compared pixels
+  // The environment frame (exact, filtered, LUT, 16 samples) on the same scene in the same
+  // run; the models' frame times are reported as ratios to it.
+  double baselineFrameSeconds = 0.0;
 };
 
 // One step of the counter check: what changed and what the session counted meanwhile.
@@ -109,9 +130,12 @@ std::vector<Goal> evaluateGoals(const BenchResult& result);
 // sphere-under-the-studio rows of `exact` (LUT half vectors, lobe sampling) with N >= 4.
 std::vector<QualityFit> fitQuality(const std::vector<BenchRow>& rows);
 
-// bench.csv, bench.md, bench.svg, bench.png and quality_model.txt in DIRECTORY (created).
+// bench.csv, bench.md, bench.svg, bench.png and quality_model.txt in DIRECTORY (created), and
+// bench_models.svg and bench_models.png when the run measured the other models.
 void writeBenchOutputs(const BenchResult& result, const std::string& directory);
 
 std::string benchCsv(const BenchResult& result);
-std::string benchMarkdown(const BenchResult& result, const std::string& plotFile);
+// The report; the other models' section embeds MODELSPLOTFILE when it is not empty.
+std::string benchMarkdown(const BenchResult& result, const std::string& plotFile,
+                          const std::string& modelsPlotFile = "");
 } // namespace aniso::bench

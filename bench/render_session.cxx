@@ -76,6 +76,17 @@ vtkSmartPointer<vtkTexture> vtkEnvironmentTexture(const Environment& environment
   return texture;
 }
 
+double median(std::vector<double> values)
+{
+  if (values.empty())
+  {
+    return 0.0;
+  }
+  std::sort(values.begin(), values.end());
+  const std::size_t n = values.size();
+  return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
+}
+
 double processCpuSeconds()
 {
   timespec t{};
@@ -83,6 +94,31 @@ double processCpuSeconds()
   return double(t.tv_sec) + 1e-9 * double(t.tv_nsec);
 }
 } // namespace
+
+FrameTime medianFrameTime(const std::vector<FrameTime>& frames)
+{
+  std::vector<double> wall;
+  std::vector<double> cpu;
+  for (const FrameTime& t : frames)
+  {
+    wall.push_back(t.wall);
+    cpu.push_back(t.cpu);
+  }
+  return {median(wall), median(cpu)};
+}
+
+int64_t coveredPixels(const Image& image)
+{
+  int64_t count = 0;
+  for (int y = 0; y < image.height; ++y)
+  {
+    for (int x = 0; x < image.width; ++x)
+    {
+      count += image.at(x, y, 3) > 0.0f ? 1 : 0;
+    }
+  }
+  return count;
+}
 
 class RenderSession::Impl
 {
@@ -98,6 +134,7 @@ public:
   vtkSmartPointer<vtkTexture> vtkEnvironment;
   std::unique_ptr<AnisoMaterial> material;
   bool materialAttached = false;
+  std::shared_ptr<void> installed; // a material of another model (useInstalled)
   std::set<vtkObject*> programs;
   uint64_t environmentBakes = 0;
   uint64_t uploadsAtStart = 0;
@@ -171,6 +208,7 @@ RenderSession::RenderSession(int width, int height)
 
 RenderSession::~RenderSession()
 {
+  impl_->installed.reset();
   impl_->material.reset();
   impl_->renderer->SetPass(nullptr);
   impl_->window->Finalize();
@@ -186,11 +224,20 @@ void RenderSession::setSurface(vtkSmartPointer<vtkPolyData> surface, const ViewS
   {
     throw errorAbout("mesh", "no surface to render");
   }
-  impl_->mapper->SetInputData(surface);
   glm::dvec3 centre;
   double radius = 0.0;
   boundingSphere(surface, centre, radius);
-  const CameraPlacement placement = placeCamera(view, centre, radius);
+  setSurface(std::move(surface), placeCamera(view, centre, radius));
+}
+
+void RenderSession::setSurface(vtkSmartPointer<vtkPolyData> surface,
+                               const CameraPlacement& placement)
+{
+  if (!surface || surface->GetNumberOfCells() == 0)
+  {
+    throw errorAbout("mesh", "no surface to render");
+  }
+  impl_->mapper->SetInputData(surface);
   vtkCamera* camera = impl_->renderer->GetActiveCamera();
   camera->SetFocalPoint(placement.focalPoint.x, placement.focalPoint.y, placement.focalPoint.z);
   camera->SetPosition(placement.position.x, placement.position.y, placement.position.z);
@@ -230,6 +277,7 @@ void RenderSession::useMaterial(const MaterialSettings& settings)
   {
     throw errorAbout("environment", "set an environment before a material");
   }
+  s.installed.reset();
   s.renderer->UseImageBasedLightingOff();
   s.actor->GetProperty()->SetInterpolationToPhong();
   if (!s.material)
@@ -258,6 +306,7 @@ void RenderSession::useVtkPbr(const VtkPbrMaterial& m)
   {
     throw errorAbout("environment", "set an environment before a material");
   }
+  s.installed.reset();
   if (s.material)
   {
     s.material->detach();
@@ -279,6 +328,25 @@ void RenderSession::useVtkPbr(const VtkPbrMaterial& m)
   // Z is up in the project's world; VTK's environment defaults to Y up.
   s.renderer->SetEnvironmentUp(0.0, 0.0, 1.0);
   s.renderer->SetEnvironmentRight(1.0, 0.0, 0.0);
+}
+
+void RenderSession::useInstalled(const MaterialInstaller& installer)
+{
+  Impl& s = *impl_;
+  if (!s.lighting)
+  {
+    throw errorAbout("environment", "set an environment before a material");
+  }
+  if (s.material)
+  {
+    s.material->detach();
+    s.materialAttached = false;
+  }
+  // The previous material detaches itself when released, before the new one hooks the actor.
+  s.installed.reset();
+  s.renderer->UseImageBasedLightingOff();
+  s.actor->GetProperty()->SetInterpolationToPhong();
+  s.installed = installer(s.actor, s.renderer, s.lighting);
 }
 
 std::vector<FrameTime> RenderSession::render(int frames)

@@ -7,6 +7,7 @@
 // anisotropy), both through the accumulation pass, so both read back as linear float radiance.
 #include "EnvironmentLighting.h"
 #include "MaterialSettings.h"
+#include "OffscreenRenderer.h"
 #include "ViewSettings.h"
 #include "env/environment.h"
 #include "image/image.h"
@@ -42,6 +43,11 @@ struct FrameTime
   double cpu = 0.0;
 };
 
+// The median wall time and the median CPU time of FRAMES (each median taken alone).
+FrameTime medianFrameTime(const std::vector<FrameTime>& frames);
+// Pixels of a read image with coverage > 0.
+int64_t coveredPixels(const Image& image);
+
 // What the session did, for showing that nothing is redone when nothing changed.
 struct SessionCounters
 {
@@ -65,6 +71,8 @@ public:
 
   // The surface (prepared: "Normals", "Tangents") and the camera placed as ViewSettings says.
   void setSurface(vtkSmartPointer<vtkPolyData> surface, const ViewSettings& view);
+  // The surface seen from CAMERA as it is (a close-up that need not show the whole surface).
+  void setSurface(vtkSmartPointer<vtkPolyData> surface, const CameraPlacement& camera);
   // Clip to world of the camera the mappers draw with (for CPU rays through the pixels).
   glm::dmat4 clipToWorld() const;
 
@@ -74,6 +82,9 @@ public:
 
   void useMaterial(const MaterialSettings& settings);
   void useVtkPbr(const VtkPbrMaterial& material);
+  // Another shading model (the lit models, LEADR, microstructure): INSTALLER gives the actor a
+  // new material of that model, replacing whatever drew it before.
+  void useInstalled(const MaterialInstaller& installer);
 
   // Starts a new accumulation and draws FRAMES progressive frames (each with its sample-set
   // shift, no jitter: every frame samples the pixel centres); returns the time of each, GPU

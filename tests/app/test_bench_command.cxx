@@ -4,6 +4,12 @@
 //     the quick set is there for each of the four materials, with VTK's row and the progressive
 //     rows; every error is finite; the error of `exact` falls as N grows; the references' own
 //     error bounds lie below the smallest error reported; the report and both plots exist.
+//     The other models' rows (bench_models.h) are complete and finite, each with its ratio to
+//     the environment frame measured on its scene: the lit models match the core's CPU
+//     evaluation within the render tests' bound, LEADR is closer to the supersampled reference
+//     than plain normal mapping, and the microstructure's error against its converged CPU
+//     evaluation (a 24 x 24 grid) does not rise with K beyond a stated tolerance and falls
+//     overall; the models' plot and report section exist.
 //   - The CPU pixel rays (the reference's geometry) against the analytic unit sphere.
 //   - The flange part against its analytic volume (closed, outward-facing surface).
 //   - The plot's raster and SVG outputs against each other and the series' colour.
@@ -17,6 +23,7 @@
 
 #include <cmath>
 #include <cstdlib>
+#include <functional>
 #include <glm/geometric.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 #include <map>
@@ -37,28 +44,51 @@ bool haveDisplay()
   return display && *display;
 }
 
+// One CSV line's fields: commas inside double quotes belong to the field, "" is a quote.
+std::vector<std::string> csvFields(const std::string& line)
+{
+  std::vector<std::string> fields(1);
+  bool quoted = false;
+  for (std::size_t i = 0; i < line.size(); ++i)
+  {
+    const char c = line[i];
+    if (c == '"' && quoted && i + 1 < line.size() && line[i + 1] == '"')
+    {
+      fields.back() += '"';
+      ++i;
+    }
+    else if (c == '"')
+    {
+      quoted = !quoted;
+    }
+    else if (c == ',' && !quoted)
+    {
+      fields.emplace_back();
+    }
+    else
+    {
+      fields.back() += c;
+    }
+  }
+  return fields;
+}
+
 std::vector<std::map<std::string, std::string>> readCsv(const std::string& text)
 {
   std::istringstream in(text);
   std::string line;
   std::getline(in, line);
-  std::vector<std::string> header;
-  std::istringstream h(line);
-  for (std::string field; std::getline(h, field, ',');)
-  {
-    header.push_back(field);
-  }
+  const std::vector<std::string> header = csvFields(line);
   std::vector<std::map<std::string, std::string>> rows;
   while (std::getline(in, line))
   {
-    std::istringstream fields(line);
+    const std::vector<std::string> fields = csvFields(line);
+    EXPECT_EQ(fields.size(), header.size()) << line;
     std::map<std::string, std::string> row;
-    std::size_t i = 0;
-    for (std::string field; std::getline(fields, field, ',') && i < header.size(); ++i)
+    for (std::size_t i = 0; i < header.size(); ++i)
     {
-      row[header[i]] = field;
+      row[header[i]] = i < fields.size() ? fields[i] : std::string();
     }
-    EXPECT_EQ(row.size(), header.size()) << line;
     rows.push_back(row);
   }
   return rows;
@@ -74,11 +104,21 @@ TEST_F(BenchCommand, QuickRunIsCompleteAndConsistent)
   }
   const Outcome r = run({"bench", "--quick", "--out", path("out").string()});
   ASSERT_EQ(r.exitCode, 0) << r.err << r.out;
-  for (const char* file : {"bench.csv", "bench.md", "bench.svg", "bench.png", "quality_model.txt"})
+  for (const char* file : {"bench.csv", "bench.md", "bench.svg", "bench.png", "quality_model.txt",
+                           "bench_models.svg", "bench_models.png"})
   {
     EXPECT_TRUE(fs::is_regular_file(path("out") / file)) << file;
   }
-  const auto rows = readCsv(slurp(path("out") / "bench.csv"));
+  const auto allRows = readCsv(slurp(path("out") / "bench.csv"));
+  // The environment set: the Ashikhmin-Shirley configurations and VTK's PBR beside them.
+  std::vector<std::map<std::string, std::string>> rows;
+  for (const auto& row : allRows)
+  {
+    if (row.at("model") == "as-env" && row.at("kind") != "baseline")
+    {
+      rows.push_back(row);
+    }
+  }
 
   // The quick set as documented in `aniso bench --help` and docs/BENCHMARKS.md: kind, method,
   // filtered, half vectors, N (frames for the progressive rows).
@@ -168,6 +208,93 @@ TEST_F(BenchCommand, QuickRunIsCompleteAndConsistent)
   const std::string svg = slurp(path("out") / "bench.svg");
   EXPECT_EQ(svg.rfind("<svg", 0), 0u);
   EXPECT_NE(svg.find("</svg>"), std::string::npos);
+
+  // The other models. Every row finite, compared on enough pixels, timed, and given its ratio
+  // to the environment frame of its scene (one baseline row per scene, ratio 1).
+  auto select = [&](const std::function<bool(const std::map<std::string, std::string>&)>& f)
+  {
+    std::vector<std::map<std::string, std::string>> found;
+    for (const auto& row : allRows)
+    {
+      if (f(row))
+      {
+        found.push_back(row);
+      }
+    }
+    return found;
+  };
+  const auto baselines = select([](const auto& x) { return x.at("kind") == "baseline"; });
+  ASSERT_EQ(baselines.size(), 2u);
+  EXPECT_EQ(baselines[0].at("mesh"), "sphere");
+  EXPECT_EQ(baselines[1].at("mesh"), "plate");
+  for (const auto& row : baselines)
+  {
+    EXPECT_DOUBLE_EQ(std::stod(row.at("baseline_ratio")), 1.0);
+  }
+  const auto models = select([](const auto& x) { return x.at("model") != "as-env"; });
+  for (const auto& row : models)
+  {
+    const std::string what = row.at("kind") + " " + row.at("model") + " " + row.at("variant") +
+                             " grid " + row.at("grid") + " " + row.at("method");
+    const double error = std::stod(row.at("relative_l2"));
+    const double p99 = std::stod(row.at("p99_error"));
+    const double ratio = std::stod(row.at("baseline_ratio"));
+    EXPECT_TRUE(std::isfinite(error) && error > 0.0) << what << " " << error;
+    EXPECT_TRUE(std::isfinite(p99) && p99 > 0.0) << what << " " << p99;
+    EXPECT_TRUE(std::isfinite(ratio) && ratio > 0.0) << what << " " << ratio;
+    EXPECT_GT(std::stod(row.at("median_frame_ms")), 0.0) << what;
+    EXPECT_GE(std::stoi(row.at("compared_pixels")), 40) << what;
+  }
+
+  // Lit models: each of the five once, under 2 lights on the sphere. Against the same model on
+  // the CPU the bound of test_render_lit_models holds (2e-2, Heidrich-Seidel's horizon).
+  for (const char* model : {"ashikhmin-shirley", "banks", "blinn-phong", "ward", "heidrich-seidel"})
+  {
+    const auto lit =
+        select([&](const auto& x) { return x.at("kind") == "lit" && x.at("model") == model; });
+    ASSERT_EQ(lit.size(), 1u) << model;
+    EXPECT_EQ(lit[0].at("mesh"), "sphere");
+    EXPECT_EQ(lit[0].at("lights"), "2");
+    EXPECT_LT(std::stod(lit[0].at("relative_l2")), 2e-2) << model;
+  }
+
+  // LEADR at grids 1 and 4 and normal mapping at 4, at one distance (a mip level above 0); with
+  // the relief far below a pixel, LEADR keeps closer to the supersampled reference.
+  const auto leadr = select([](const auto& x) { return x.at("model") == "leadr"; });
+  const auto normalMap = select([](const auto& x) { return x.at("model") == "normal-map"; });
+  ASSERT_EQ(leadr.size(), 2u);
+  ASSERT_EQ(normalMap.size(), 1u);
+  EXPECT_EQ(leadr[0].at("grid"), "1");
+  EXPECT_EQ(leadr[1].at("grid"), "4");
+  EXPECT_EQ(normalMap[0].at("grid"), "4");
+  EXPECT_GT(std::stod(leadr[1].at("mip_level")), 1.0);
+  EXPECT_LT(std::stod(leadr[1].at("relative_l2")), std::stod(normalMap[0].at("relative_l2")));
+
+  // Microstructure: the full grid at K = 1, 2, 4, 8 and the jittered one at K = 4. The error
+  // against the converged evaluation may not rise from one K to the next by more than 10% (a
+  // regular grid can alias with the structure's period) and must halve from K = 1 to K = 8.
+  const auto full = select([](const auto& x)
+                           { return x.at("kind") == "micro" && x.at("method") == "full-grid"; });
+  const auto jittered =
+      select([](const auto& x) { return x.at("kind") == "micro" && x.at("method") == "jittered"; });
+  ASSERT_EQ(full.size(), 4u);
+  ASSERT_EQ(jittered.size(), 1u);
+  EXPECT_EQ(jittered[0].at("grid"), "4");
+  for (std::size_t i = 0; i < full.size(); ++i)
+  {
+    EXPECT_EQ(std::stoi(full[i].at("grid")), 1 << i);
+    if (i > 0)
+    {
+      EXPECT_LT(std::stod(full[i].at("relative_l2")),
+                1.1 * std::stod(full[i - 1].at("relative_l2")))
+          << "K = " << full[i].at("grid") << " against K = " << full[i - 1].at("grid");
+    }
+  }
+  EXPECT_LT(2.0 * std::stod(full[3].at("relative_l2")), std::stod(full[0].at("relative_l2")));
+
+  EXPECT_NE(md.find("### Other shading models"), std::string::npos);
+  const std::string modelsSvg = slurp(path("out") / "bench_models.svg");
+  EXPECT_EQ(modelsSvg.rfind("<svg", 0), 0u);
 }
 
 // The rays through the pixels of a perspective camera hit the faceted built-in sphere where
