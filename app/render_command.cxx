@@ -94,8 +94,11 @@ Command renderCommand()
   c.options.push_back(numberOption(
       "--frames", "N", ParameterType::Integer, 4.0, 1.0, 65536.0, {},
       "progressive frames accumulated, each with a rotated sample set (N x samples per pixel)"));
+  // The error target's default and range are the declared error-target's (the window's).
+  const ParameterSpec& errorTarget = parameterSpec("error-target");
   c.options.push_back(numberOption(
-      "--quality", "ERR", ParameterType::Real, 0.01, 1e-4, 1.0, {},
+      "--quality", "ERR", errorTarget.type, errorTarget.defaultValue[0], errorTarget.minimum,
+      errorTarget.maximum, errorTarget.unit,
       "error target instead of --samples: the relative L2 error of one frame (0.01 = 1%); the "
       "samples follow from the material's roughness and filtering, by the error model that "
       "'aniso bench' measured"));

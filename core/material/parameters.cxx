@@ -117,6 +117,14 @@ std::vector<ParameterSpec> declare()
              "fetched from the half-vector lookup table"),
       number("target-samples", "Quality", T::Integer, 256.0, 1.0, 65536.0, 1.0, S::Logarithmic, {},
              "samples per pixel a still view accumulates by progressive refinement"),
+      // The quality as an error target instead (core/quality/adaptive_quality.h): the samples
+      // follow from the lobe and filtering by the error model that `aniso bench` fitted.
+      choice("quality-mode", "Quality by", {"samples", "error"}, "samples",
+             "what sets a still view's quality: target-samples, or error-target by the error "
+             "model of the material's lobe and filtering"),
+      number("error-target", "Error target", T::Real, 0.01, 1e-4, 1.0, 0.001, S::Logarithmic, {},
+             "relative L2 error a still view refines to with quality-mode error (0.01 = 1%); "
+             "also 'aniso render --quality'"),
       choice("bump", "Bump mapping", {"none", "normal", "quaternion"}, "none",
              "how the maps perturb the shading frame: not at all, by the normal map, or by the "
              "quaternion map (baked from the normal map when none is given)"),

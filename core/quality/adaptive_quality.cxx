@@ -81,7 +81,7 @@ double predictedError(const AsLobe& lobe, bool filtered, int samples)
   return std::exp(logA - p * std::log(std::max(samples, 1)));
 }
 
-QualityChoice chooseSamples(double errorTarget, const AsLobe& lobe, bool filtered)
+QualityChoice chooseSamples(double errorTarget, const AsLobe& lobe, bool filtered, int maxSamples)
 {
   if (!std::isfinite(errorTarget) || errorTarget <= 0.0 || errorTarget > 1.0)
   {
@@ -95,7 +95,8 @@ QualityChoice chooseSamples(double errorTarget, const AsLobe& lobe, bool filtere
   // count below meets the target too (the power's rounding).
   const double exact = std::exp((logA - std::log(errorTarget)) / p);
   QualityChoice choice;
-  choice.samples = static_cast<int>(std::clamp(std::ceil(exact), 1.0, double(kMaxQualitySamples)));
+  choice.samples =
+      static_cast<int>(std::clamp(std::ceil(exact), 1.0, double(std::max(maxSamples, 1))));
   if (choice.samples > 1 && predictedError(lobe, filtered, choice.samples - 1) <= errorTarget)
   {
     --choice.samples;

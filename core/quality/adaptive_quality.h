@@ -16,15 +16,18 @@ constexpr int kMaxQualitySamples = 1024;
 
 struct QualityChoice
 {
-  int samples = 1;             // per pixel and frame, in [1, kMaxQualitySamples]
+  int samples = 1;             // per pixel, in [1, maxSamples]
   double predictedError = 0.0; // relative L2 of one frame at that count, by the model
-  bool reachable = true;       // false: even kMaxQualitySamples stays above the target
+  bool reachable = true;       // false: even maxSamples stays above the target
 };
 
-// The fewest samples whose predicted error is at most errorTarget (relative L2, e.g. 0.01).
-// Throws aniso::Error "quality: reason" unless errorTarget is finite and in (0, 1], and for an
-// invalid lobe (validateLobe).
-QualityChoice chooseSamples(double errorTarget, const AsLobe& lobe, bool filtered);
+// The fewest samples whose predicted error is at most errorTarget (relative L2, e.g. 0.01), at
+// most maxSamples (at least 1). Throws aniso::Error "quality: reason" unless errorTarget is
+// finite and in (0, 1], and for an invalid lobe (validateLobe). For the `exact` method the mean
+// of F frames of S samples is one estimate of F x S samples, so a still view's total follows
+// from the same model (maxSamples then the largest total, e.g. target-samples' maximum).
+QualityChoice chooseSamples(double errorTarget, const AsLobe& lobe, bool filtered,
+                            int maxSamples = kMaxQualitySamples);
 
 // The model's relative L2 of one frame of N >= 1 samples.
 double predictedError(const AsLobe& lobe, bool filtered, int samples);
