@@ -10,7 +10,12 @@
 // points and rotations (as the renderer's relative L2 over covered pixels), "median" = the median
 // over points and rotations of |estimate - reference| / reference (what a typical pixel shows).
 //
-// Usage: bench_variance [--rotations K] [--points P]
+// With --split it compares instead the choices of the lobe share c of one-sample MIS (the
+// shader's strategy): the share from the lobe's width alone (the rule used before), and the
+// share misLobeFraction derives from the lobe and the environment's densities, next to lobe
+// sampling alone, for four lobes at equal sample counts.
+//
+// Usage: bench_variance [--rotations K] [--points P] [--split]
 #include "brdf/ashikhmin_shirley.h"
 #include "env/env_sampling.h"
 #include "env/environment.h"
@@ -118,6 +123,15 @@ struct Method
   const char* name;
 };
 
+// The lobe share used before misLobeFraction took the environment into account: 1/2 up to a
+// lobe width sqrt((n_u + 1)(n_v + 1)) of 16, rising smoothly in log2 of it to 15/16 at 1024.
+double widthRuleFraction(const aniso::AsLobe& lobe)
+{
+  const double width = std::sqrt((lobe.nu + 1.0) * (lobe.nv + 1.0));
+  const double t = std::clamp((std::log2(width) - 4.0) / 6.0, 0.0, 1.0);
+  return 0.5 + (15.0 / 16.0 - 0.5) * t * t * (3.0 - 2.0 * t);
+}
+
 struct Row
 {
   std::string scene;
@@ -128,25 +142,144 @@ struct Row
   double median;
   double nsPerSample;
 };
+// Converged references (luminance) at each point, to 1e-5 relative (below the smallest error
+// reported); *worst receives the largest relative error estimate.
+std::vector<double> references(const Scene& scene, const aniso::AsLobe& lobe, const glm::dvec3& f0,
+                               const std::vector<Point>& points, double* worst)
+{
+  std::vector<double> reference;
+  aniso::ReferenceOptions options;
+  options.relativeTolerance = 1e-5;
+  for (const Point& p : points)
+  {
+    const aniso::ReferenceResult r =
+        scene.sunSky
+            ? aniso::integrateSpecularSunSky(lobe, f0, p.frame, p.view, *scene.sunSky, options)
+            : aniso::integrateSpecular(lobe, f0, p.frame, p.view, *scene.env, options);
+    reference.push_back(luminance(r.value));
+    *worst = std::max(*worst, r.errorEstimate / std::max(luminance(r.value), 1e-300));
+  }
+  return reference;
+}
+
+struct Errors
+{
+  double l2 = 0.0;
+  double median = 0.0;
+};
+
+// Relative L2 and median relative error of one strategy at N samples over the points, each with
+// `rotations` random Cranley-Patterson shifts (the same shifts for every strategy).
+Errors measure(const Scene& scene, const aniso::AsLobe& lobe, const glm::dvec3& f0,
+               const std::vector<Point>& points, const std::vector<double>& reference,
+               aniso::SamplingStrategy strategy, double lobeFraction, uint32_t n, int rotations)
+{
+  std::mt19937_64 random(1234);
+  std::uniform_real_distribution<double> uniform(0.0, 1.0);
+  aniso::EstimatorOptions options;
+  options.strategy = strategy;
+  options.lobeFraction = lobeFraction;
+  options.samples = n;
+  double squaredError = 0.0;
+  double squaredReference = 0.0;
+  std::vector<double> relative;
+  for (std::size_t k = 0; k < points.size(); ++k)
+    for (int r = 0; r < rotations; ++r)
+    {
+      options.shift = {uniform(random), uniform(random)};
+      const double value =
+          luminance(aniso::estimateSpecular(lobe, f0, points[k].frame, points[k].view, *scene.env,
+                                            scene.distribution.get(), options));
+      squaredError += (value - reference[k]) * (value - reference[k]);
+      squaredReference += reference[k] * reference[k];
+      relative.push_back(std::abs(value - reference[k]) / reference[k]);
+    }
+  std::nth_element(relative.begin(), relative.begin() + relative.size() / 2, relative.end());
+  return {std::sqrt(squaredError / squaredReference), relative[relative.size() / 2]};
+}
+
+// The --split table: lobe only, one-sample MIS with the width rule's share and with
+// misLobeFraction's, at equal N.
+void compareSplits(const std::vector<Point>& points, int rotations, const glm::dvec3& f0)
+{
+  const aniso::AsLobe lobes[] = {{10, 10}, {100, 10}, {1000, 100}, {20000, 70}};
+  const uint32_t counts[] = {16, 64, 256};
+  std::printf("\n| Environment | Lobe | c width rule | c new | Strategy |");
+  for (uint32_t n : counts)
+    std::printf(" N=%u |", n);
+  std::printf("\n| --- | --- | --- | --- | --- |");
+  for (std::size_t i = 0; i < std::size(counts); ++i)
+    std::printf(" --- |");
+  std::printf("\n");
+  for (const char* sceneName : {"studio", "sun+sky"})
+  {
+    const Scene scene = makeScene(sceneName);
+    for (const aniso::AsLobe& lobe : lobes)
+    {
+      double worst = 0.0;
+      const std::vector<double> reference = references(scene, lobe, f0, points, &worst);
+      const double before = widthRuleFraction(lobe);
+      const double after = aniso::misLobeFraction(lobe, *scene.distribution);
+      struct Choice
+      {
+        const char* name;
+        aniso::SamplingStrategy strategy;
+        double c;
+      };
+      const Choice choices[] = {{"lobe only", aniso::SamplingStrategy::Brdf, 1.0},
+                                {"MIS, width rule", aniso::SamplingStrategy::MisOneSample, before},
+                                {"MIS, new split", aniso::SamplingStrategy::MisOneSample, after}};
+      for (const Choice& choice : choices)
+      {
+        std::printf("| %s | (%g, %g) | %.3f | %.3f | %s |", sceneName, lobe.nu, lobe.nv, before,
+                    after, choice.name);
+        for (uint32_t n : counts)
+        {
+          const Errors e =
+              measure(scene, lobe, f0, points, reference, choice.strategy, choice.c, n, rotations);
+          std::printf(" %.3g / %.3g |", e.l2, e.median);
+        }
+        std::printf("\n");
+        std::fflush(stdout);
+      }
+      std::fprintf(stderr, "%s (%g, %g): reference error estimate at most %.1e\n", sceneName,
+                   lobe.nu, lobe.nv, worst);
+    }
+  }
+}
 } // namespace
 
 int main(int argc, char** argv)
 {
   int rotations = 64;
   int pointCount = 16;
+  bool split = false;
   for (int i = 1; i < argc; ++i)
   {
+    if (std::strcmp(argv[i], "--split") == 0)
+    {
+      split = true;
+      continue;
+    }
     if (std::strcmp(argv[i], "--rotations") == 0 && i + 1 < argc)
       rotations = std::max(2, std::atoi(argv[++i]));
     else if (std::strcmp(argv[i], "--points") == 0 && i + 1 < argc)
       pointCount = std::max(1, std::atoi(argv[++i]));
     else
     {
-      std::fprintf(stderr, "usage: %s [--rotations K] [--points P]\n", argv[0]);
+      std::fprintf(stderr, "usage: %s [--rotations K] [--points P] [--split]\n", argv[0]);
       return 2;
     }
   }
   const std::vector<Point> points = spherePoints(pointCount);
+  if (split)
+  {
+    std::printf("Points: %d on the sphere, %d rotations each; F0 = (0.95, 0.64, 0.54). "
+                "Relative L2 / median relative error.\n",
+                pointCount, rotations);
+    compareSplits(points, rotations, glm::dvec3(0.95, 0.64, 0.54));
+    return 0;
+  }
   const aniso::AsLobe lobes[] = {{10, 10}, {20000, 70}};
   // The MIS rows share the samples equally between the techniques, but for the last one, which
   // gives the lobe 7/8 of them (what a sharp lobe wants).
@@ -171,53 +304,19 @@ int main(int argc, char** argv)
     {
       char lobeName[32];
       std::snprintf(lobeName, sizeof lobeName, "(%g, %g)", lobe.nu, lobe.nv);
-      // References to 1e-5 (relative), below the smallest error reported.
-      std::vector<double> reference;
       double worstReferenceError = 0.0;
-      aniso::ReferenceOptions referenceOptions;
-      referenceOptions.relativeTolerance = 1e-5;
-      for (const Point& p : points)
-      {
-        const aniso::ReferenceResult r =
-            scene.sunSky
-                ? aniso::integrateSpecularSunSky(lobe, f0, p.frame, p.view, *scene.sunSky,
-                                                 referenceOptions)
-                : aniso::integrateSpecular(lobe, f0, p.frame, p.view, *scene.env, referenceOptions);
-        reference.push_back(luminance(r.value));
-        worstReferenceError =
-            std::max(worstReferenceError, r.errorEstimate / std::max(luminance(r.value), 1e-300));
-      }
+      const std::vector<double> reference =
+          references(scene, lobe, f0, points, &worstReferenceError);
       std::printf("%s %s: reference error estimate at most %.1e (relative)\n", sceneName, lobeName,
                   worstReferenceError);
       for (const Method& method : methods)
         for (uint32_t n : counts)
         {
-          std::mt19937_64 random(1234);
-          std::uniform_real_distribution<double> uniform(0.0, 1.0);
-          aniso::EstimatorOptions options;
-          options.strategy = method.strategy;
-          options.lobeFraction = method.lobeFraction;
-          options.samples = n;
-          double squaredError = 0.0;
-          double squaredReference = 0.0;
-          std::vector<double> relative;
           const auto start = std::chrono::steady_clock::now();
-          for (std::size_t k = 0; k < points.size(); ++k)
-            for (int r = 0; r < rotations; ++r)
-            {
-              options.shift = {uniform(random), uniform(random)};
-              const double value =
-                  luminance(aniso::estimateSpecular(lobe, f0, points[k].frame, points[k].view,
-                                                    *scene.env, scene.distribution.get(), options));
-              squaredError += (value - reference[k]) * (value - reference[k]);
-              squaredReference += reference[k] * reference[k];
-              relative.push_back(std::abs(value - reference[k]) / reference[k]);
-            }
+          const Errors e = measure(scene, lobe, f0, points, reference, method.strategy,
+                                   method.lobeFraction, n, rotations);
           const double seconds = secondsSince(start);
-          std::nth_element(relative.begin(), relative.begin() + relative.size() / 2,
-                           relative.end());
-          rows.push_back({sceneName, lobeName, method.name, n,
-                          std::sqrt(squaredError / squaredReference), relative[relative.size() / 2],
+          rows.push_back({sceneName, lobeName, method.name, n, e.l2, e.median,
                           seconds * 1e9 / (double(n) * double(points.size()) * rotations)});
         }
     }

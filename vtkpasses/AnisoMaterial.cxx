@@ -414,7 +414,9 @@ public:
       bind(program, "anisoEnvGuide", lighting->samplingGuideTexture(window));
       const EnvironmentDistribution& d = lighting->samplingDistribution();
       program->SetUniform2i("anisoEnvGrid", std::array<int, 2>{d.width(), d.height()}.data());
-      program->SetUniformf("anisoLobeFraction", static_cast<float>(misLobeFraction(settings.lobe)));
+      // The split from the lobe and this environment's densities (env_sampling.h).
+      program->SetUniformf("anisoLobeFraction",
+                           static_cast<float>(misLobeFraction(settings.lobe, d)));
     }
     program->SetUniform3fv(
         "anisoIrradianceSH", 9,

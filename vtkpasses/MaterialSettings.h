@@ -72,11 +72,6 @@ struct MaterialSettings
   }
 };
 
-// Share of the lobe technique in the shader's one-sample MIS, from the lobe's width as
-// measured on the CPU (docs/BENCHMARKS.md): 1/2 for broad lobes (a sun next to them needs
-// environment samples), rising to 15/16 for sharp ones (lobe samples alone are best there).
-double misLobeFraction(const AsLobe& lobe);
-
 // The declared parameters (core/material/parameters.h) that a material takes: n_u, n_v, F0,
 // albedo, samples, LUT size and samples, method, filtered, half-vectors, env-sampling,
 // height scale.

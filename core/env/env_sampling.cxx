@@ -2,6 +2,7 @@
 
 #include "env/parallel.h"
 #include "error.h"
+#include "sampling/hammersley.h"
 
 #include <algorithm>
 #include <cmath>
@@ -148,6 +149,21 @@ EnvironmentDistribution::EnvironmentDistribution(const Image& equirect, double u
   for (int y = 1; y <= h; ++y)
     marginal_[std::size_t(y)] /= total;
   marginal_[std::size_t(h)] = 1.0;
+
+  // Density levels half an octave wide, each with its solid-angle-weighted mean density.
+  std::map<int, std::pair<double, double>> levels; // level -> (sum of omega p, sum of omega)
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x)
+    {
+      const double p = density_[std::size_t(y) * std::size_t(w) + std::size_t(x)];
+      if (!(p > 0.0))
+        continue;
+      auto& level = levels[int(std::floor(2.0 * std::log2(p)))];
+      level.first += p * rowSolidAngle[std::size_t(y)];
+      level.second += rowSolidAngle[std::size_t(y)];
+    }
+  for (const auto& [index, sums] : levels)
+    levels_.push_back({sums.first / sums.second, sums.second});
 }
 
 EnvironmentDistribution EnvironmentDistribution::bake(const Environment& env,
@@ -256,6 +272,104 @@ Image EnvironmentDistribution::pdfTable() const
   for (std::size_t i = 0; i < density_.size(); ++i)
     table.data[i] = float(density_[i]);
   return table;
+}
+
+namespace
+{
+double lobeFractionFor(const AsLobe& lobe, const EnvironmentDistribution& distribution)
+{
+  constexpr double kMinFraction = 1.0 / 16.0;
+  constexpr double kMaxFraction = 15.0 / 16.0;
+  // The lobe's density at its own samples (normal view): the sum over x of p_lobe(x)^2 G(x) is
+  // the mean of p_lobe G over them. Directions below the horizon carry no integrand.
+  constexpr uint32_t kLobeSamples = 64;
+  const glm::dvec3 v(0.0, 0.0, 1.0);
+  std::vector<double> lobeDensities;
+  for (uint32_t i = 0; i < kLobeSamples; ++i)
+  {
+    const glm::dvec3 l = reflectAbout(v, sampleHalfVector(lobe, hammersley(i, kLobeSamples)));
+    const double p = pdfLight(lobe, v, l);
+    if (l.z > 0.0 && p > 0.0 && std::isfinite(p))
+      lobeDensities.push_back(p);
+  }
+  const std::vector<DensityLevel>& levels = distribution.densityLevels();
+  if (lobeDensities.empty() || levels.empty())
+    return kMaxFraction;
+  auto secondMoment = [&](double c)
+  {
+    double sum = 0.0;
+    for (const double pLobe : lobeDensities)
+      for (const DensityLevel& level : levels)
+        sum += level.solidAngle * pLobe * level.density * level.density /
+               (c * pLobe + (1.0 - c) * level.density);
+    return sum;
+  };
+  // A sum of reciprocals of functions linear in c: convex, so golden-section search finds its
+  // minimum on the interval.
+  const double ratio = 0.5 * (std::sqrt(5.0) - 1.0);
+  double lo = kMinFraction;
+  double hi = kMaxFraction;
+  double a = hi - ratio * (hi - lo);
+  double b = lo + ratio * (hi - lo);
+  double fa = secondMoment(a);
+  double fb = secondMoment(b);
+  for (int iteration = 0; iteration < 40; ++iteration)
+  {
+    if (fa <= fb)
+    {
+      hi = b;
+      b = a;
+      fb = fa;
+      a = hi - ratio * (hi - lo);
+      fa = secondMoment(a);
+    }
+    else
+    {
+      lo = a;
+      a = b;
+      fa = fb;
+      b = lo + ratio * (hi - lo);
+      fb = secondMoment(b);
+    }
+  }
+  // The model counts independent samples; the shader's lobe samples are a Hammersley set,
+  // stratified, which converges faster where the light is smooth. So among the shares whose
+  // modelled second moment is within kLobePreference of the minimum, the largest is taken (M
+  // rises past the minimum: bisection).
+  constexpr double kLobePreference = 1.1;
+  const double best = 0.5 * (lo + hi);
+  const double limit = kLobePreference * secondMoment(best);
+  if (secondMoment(kMaxFraction) <= limit)
+    return kMaxFraction;
+  lo = best;
+  hi = kMaxFraction;
+  for (int iteration = 0; iteration < 40; ++iteration)
+  {
+    const double mid = 0.5 * (lo + hi);
+    (secondMoment(mid) <= limit ? lo : hi) = mid;
+  }
+  return lo;
+}
+} // namespace
+
+double misLobeFraction(const AsLobe& lobe, const EnvironmentDistribution& distribution)
+{
+  // Every frame of a still view asks again for the same lobe and environment: the last answer
+  // of each thread is kept (by the distribution's content key; unkeyed ones are not kept).
+  struct Last
+  {
+    double nu = -1.0;
+    double nv = -1.0;
+    std::string key;
+    double fraction = 0.0;
+  };
+  thread_local Last last;
+  if (!distribution.key().empty() && last.nu == lobe.nu && last.nv == lobe.nv &&
+      last.key == distribution.key())
+    return last.fraction;
+  const double fraction = lobeFractionFor(lobe, distribution);
+  last = {lobe.nu, lobe.nv, distribution.key(), fraction};
+  return fraction;
 }
 
 std::string distributionKey(const std::string& environmentKey, const EnvSamplingOptions& options)

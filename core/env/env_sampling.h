@@ -11,6 +11,7 @@
 // R32F texture searched by bisection (about log2 W + log2 H texel fetches per sample) and the
 // pdf as a W x H R32F texture (one fetch per direction). Sizes are whatever the caller bakes;
 // 512 x 256 costs 0.5 MB per table.
+#include "brdf/ashikhmin_shirley.h"
 #include "env/environment.h"
 #include "image/image.h"
 
@@ -27,6 +28,13 @@ struct EnvSamplingOptions
   int width = 512;               // grid columns; rows = width / 2. Even, in [2, 8192]
   int supersample = 4;           // radiance samples per texel side when baking from an environment
   double uniformFraction = 0.02; // share of samples spread uniformly over the sphere, in [0, 1]
+};
+
+// Texels of similar density grouped: their mean density and their total solid angle.
+struct DensityLevel
+{
+  double density = 0.0;    // per unit solid angle
+  double solidAngle = 0.0; // steradians
 };
 
 struct EnvSample
@@ -67,6 +75,9 @@ public:
   int width() const { return width_; }
   int height() const { return height_; }
   const std::string& key() const { return key_; }
+  // The values the density takes over the sphere, in levels half an octave wide (ascending):
+  // what the choice of the MIS split needs to know of the environment (misLobeFraction).
+  const std::vector<DensityLevel>& densityLevels() const { return levels_; }
 
   // Shader tables. cdfTable(): (max(W, H) + 1) x (H + 1), one channel; image row y < H holds
   // the conditional CDF of grid row y (columns 0..W, from 0 to 1), row H the marginal CDF over
@@ -82,7 +93,24 @@ private:
   std::vector<double> marginal_;    // height + 1
   std::vector<double> conditional_; // height * (width + 1)
   std::vector<double> density_;     // width * height, per solid angle
+  std::vector<DensityLevel> levels_;
 };
+
+// Share c of the lobe technique in one-sample MIS (each sample from the lobe with probability c,
+// from the environment otherwise, weighted by f (n.l) / (c p_lobe + (1 - c) p_env)), chosen to
+// minimise the second moment of that estimate summed over every orientation of the lobe against
+// the environment, i.e. over the pixels of an image, with the integrand modelled as
+// p_lobe p_env (a radiance proportional to the environment's density). Over uniformly random
+// orientations the pair (p_lobe(x), p_env(y)) is independent, so the sum is the double integral
+// of p_lobe(x)^2 p_env(y)^2 / (c p_lobe(x) + (1 - c) p_env(y)) over x and y: it needs only the
+// values the two densities take (the lobe's from 64 of its own samples at normal view, the
+// environment's from densityLevels), not where. A sun next to a broad lobe gets a small c (the
+// pixels that reflect it dominate the error), soft light next to a sharp lobe a large one.
+// Of the shares within 10% of the modelled minimum the largest is taken (the lobe's Hammersley
+// points are stratified, which the model of independent samples does not credit), within
+// [1/16, 15/16] so neither technique loses its density (a defensive mixture); any c in (0, 1)
+// keeps the estimate unbiased.
+double misLobeFraction(const AsLobe& lobe, const EnvironmentDistribution& distribution);
 
 // Cache key of a bake: the environment's key and every option that changes the tables.
 std::string distributionKey(const std::string& environmentKey, const EnvSamplingOptions& options);

@@ -121,25 +121,6 @@ TEST(SamplingVariant, MisIsAnExactVariantCompiledOnlyWhenOn)
             std::string::npos);
 }
 
-// GL-free: the lobe share of MIS follows the CPU measurements (docs/BENCHMARKS.md): an equal
-// share for broad lobes, most samples on the lobe for sharp ones, never 0 or 1 (each technique
-// must keep a positive density), and never falling as the lobe sharpens.
-TEST(SamplingVariant, LobeShareFollowsRoughness)
-{
-  EXPECT_DOUBLE_EQ(misLobeFraction({10.0, 10.0}), 0.5);
-  EXPECT_GE(misLobeFraction({20000.0, 70.0}), 0.9);
-  EXPECT_DOUBLE_EQ(misLobeFraction({1e6, 1e6}), 15.0 / 16.0);
-  double previous = 0.0;
-  for (double n = 0.0; n <= 1e6; n = n * 2.0 + 1.0)
-  {
-    const double c = misLobeFraction({n, n / 4.0});
-    EXPECT_GE(c, previous) << n;
-    EXPECT_GE(c, 0.5);
-    EXPECT_LE(c, 15.0 / 16.0);
-    previous = c;
-  }
-}
-
 // GL-free: the guide table brackets the interval of every u: for j = floor(u count), the
 // interval found by a linear scan of the float CDF (the largest i < count with cdf(i) <= u) lies
 // between guide(j) and guide(j + 1), in every conditional row and the marginal, for the sun and
