@@ -1,0 +1,165 @@
+// Meshes at the edges of the number range, through the whole CPU path (loadMesh, then
+// prepareSurface): a tetrahedron scaled by 1e30 and by 1e-30, and one of unit size placed 1e7
+// from the origin, keep their four faces and get the same unit normals as at unit size (the
+// analytic face normals of the tetrahedron are the reference) and finite unit tangents
+// orthogonal to them; a vertex beyond the float range (1e39) leaves only slivers, dropped as
+// zero-area faces (docs/MESHES.md states what the renderer then shows). And a mesh without
+// texture coordinates given maps renders without them (the variant holds none of their code)
+// rather than failing, every pixel finite.
+#include "MeshLoader.h"
+#include "OffscreenRenderer.h"
+#include "SurfacePreparation.h"
+#include "env/environment.h"
+#include "error.h"
+#include "mesh_test_helpers.h"
+#include "render_test_helpers.h"
+
+#include <filesystem>
+#include <fstream>
+#include <glm/geometric.hpp>
+#include <gtest/gtest.h>
+#include <memory>
+#include <sstream>
+#include <string>
+#include <unistd.h>
+#include <vector>
+
+namespace fs = std::filesystem;
+
+namespace
+{
+// The corner at the origin and the three unit points, faces wound outwards.
+std::string tetrahedronOff(double scale, double offset)
+{
+  const double corners[4][3] = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+  std::ostringstream text;
+  text.precision(17);
+  text << "OFF\n4 4 0\n";
+  for (const auto& c : corners)
+    text << offset + scale * c[0] << ' ' << offset + scale * c[1] << ' ' << offset + scale * c[2]
+         << '\n';
+  text << "3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n";
+  return text.str();
+}
+
+// The outward normals of those faces.
+const glm::dvec3 kFaceNormals[4] = {{0.0, 0.0, -1.0},
+                                    {0.0, -1.0, 0.0},
+                                    {-1.0, 0.0, 0.0},
+                                    glm::normalize(glm::dvec3(1.0, 1.0, 1.0))};
+
+class MeshExtremes : public ::testing::Test
+{
+protected:
+  void SetUp() override
+  {
+    dir_ = fs::temp_directory_path() / ("aniso_mesh_extremes_" + std::to_string(::getpid()));
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+
+  std::string write(const std::string& name, const std::string& text)
+  {
+    const fs::path path = dir_ / name;
+    std::ofstream(path) << text;
+    return path.string();
+  }
+
+  fs::path dir_;
+};
+
+TEST_F(MeshExtremes, TinyHugeAndFarTetrahedraGetTheNormalsOfTheUnitOne)
+{
+  struct Case
+  {
+    const char* name;
+    double scale;
+    double offset;
+  };
+  for (const Case& c : {Case{"unit.off", 1.0, 0.0}, Case{"huge.off", 1e30, 0.0},
+                        Case{"tiny.off", 1e-30, 0.0}, Case{"far.off", 1.0, 1e7}})
+  {
+    SCOPED_TRACE(c.name);
+    const aniso::LoadedMesh mesh =
+        aniso::loadMesh(write(c.name, tetrahedronOff(c.scale, c.offset)));
+    EXPECT_EQ(mesh.report.triangles, 4);
+    EXPECT_EQ(mesh.report.zeroAreaTrianglesDropped, 0);
+    EXPECT_EQ(mesh.report.nonFiniteVertices, 0);
+    const aniso::PreparedSurface prepared = aniso::prepareSurface(mesh.polyData, {}, c.name);
+    vtkPolyData* surface = prepared.polyData;
+    ASSERT_EQ(surface->GetNumberOfPolys(), 4);
+    vtkDataArray* normals = surface->GetPointData()->GetArray("Normals");
+    vtkDataArray* tangents = surface->GetPointData()->GetArray("Tangents");
+    ASSERT_NE(normals, nullptr);
+    ASSERT_NE(tangents, nullptr);
+    // Every triangle's three vertices carry its analytic face normal (sharp edges split).
+    std::vector<bool> seen(4, false);
+    aniso::test::forEachTriangle(surface,
+                                 [&](vtkIdType a, vtkIdType b, vtkIdType d)
+                                 {
+                                   const glm::dvec3 first = aniso::test::vec3(normals, a);
+                                   int face = -1;
+                                   for (int f = 0; f < 4; ++f)
+                                     if (glm::length(first - kFaceNormals[f]) < 1e-5)
+                                       face = f;
+                                   ASSERT_GE(face, 0)
+                                       << first.x << ' ' << first.y << ' ' << first.z;
+                                   seen[std::size_t(face)] = true;
+                                   for (vtkIdType id : {a, b, d})
+                                   {
+                                     const glm::dvec3 n = aniso::test::vec3(normals, id);
+                                     const glm::dvec3 t = aniso::test::vec3(tangents, id);
+                                     EXPECT_LT(glm::length(n - kFaceNormals[face]), 1e-5);
+                                     EXPECT_NEAR(glm::length(t), 1.0, 1e-5);
+                                     EXPECT_NEAR(glm::dot(t, n), 0.0, 1e-5);
+                                   }
+                                 });
+    for (int f = 0; f < 4; ++f)
+      EXPECT_TRUE(seen[std::size_t(f)]) << "face " << f;
+  }
+}
+
+TEST_F(MeshExtremes, AVertexBeyondTheFloatRangeMakesSliversThatAreDropped)
+{
+  // The corner (0, 0, 1) moved to 1e39 (beyond float; the readers keep doubles): the three faces
+  // using it are needles whose area is below 1e-10 of their longest edge squared, dropped as
+  // zero-area; the base triangle is left, and the far vertex goes with its faces.
+  std::string text = tetrahedronOff(1.0, 0.0);
+  text.replace(text.find("0 0 1\n"), 6, "0 0 1e39\n");
+  const aniso::LoadedMesh mesh = aniso::loadMesh(write("beyond.off", text));
+  EXPECT_EQ(mesh.report.nonFiniteVertices, 0);
+  EXPECT_EQ(mesh.report.zeroAreaTrianglesDropped, 3);
+  EXPECT_EQ(mesh.report.unusedVerticesRemoved, 1);
+  EXPECT_EQ(mesh.report.triangles, 1);
+  EXPECT_TRUE(aniso::test::allFinite(mesh.polyData));
+  double bounds[6];
+  mesh.polyData->GetBounds(bounds);
+  EXPECT_EQ(bounds[5], 0.0); // the base triangle lies in z = 0
+}
+
+TEST_F(MeshExtremes, MapsOnAMeshWithoutTextureCoordinatesAreLeftOut)
+{
+  ANISO_REQUIRE_DISPLAY();
+  const aniso::LoadedMesh mesh = aniso::loadMesh(write("plain.off", tetrahedronOff(1.0, 0.0)));
+  ASSERT_FALSE(mesh.report.hasTCoords);
+  aniso::RenderSettings settings;
+  settings.surface = aniso::prepareSurface(mesh.polyData, {}, "plain.off").polyData;
+  settings.environment = std::make_shared<aniso::StudioEnvironment>();
+  settings.cubeSize = 32;
+  settings.width = 24;
+  settings.height = 24;
+  settings.material.samples = 4;
+  auto flat = std::make_shared<aniso::Image>(4, 4, 3);
+  for (int i = 0; i < 16; ++i)
+    flat->data[std::size_t(3 * i + 2)] = 1.0f; // the unperturbed normal (0, 0, 1)
+  settings.material.normalMap = flat;
+  settings.material.occlusionMap = std::make_shared<aniso::Image>(4, 4, 1);
+  const aniso::RenderResult r = aniso::renderOffscreen(settings);
+  EXPECT_TRUE(r.mapsDropped);
+  EXPECT_FALSE(r.variant.tcoords);
+  EXPECT_FALSE(r.variant.normalMap);
+  EXPECT_FALSE(r.variant.occlusionMap);
+  EXPECT_GT(r.coveredPixels, 0);
+  EXPECT_EQ(aniso::test::nonFiniteValues(r.linear), 0);
+}
+} // namespace
