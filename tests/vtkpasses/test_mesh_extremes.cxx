@@ -3,7 +3,8 @@
 // from the origin, keep their four faces and get the same unit normals as at unit size (the
 // analytic face normals of the tetrahedron are the reference) and finite unit tangents
 // orthogonal to them; a vertex beyond the float range (1e39) leaves only slivers, dropped as
-// zero-area faces (docs/MESHES.md states what the renderer then shows). And a mesh without
+// zero-area faces (docs/MESHES.md states what the renderer then shows). Texture coordinates
+// with a NaN are discarded whole. And a mesh without
 // texture coordinates given maps renders without them (the variant holds none of their code)
 // rather than failing, every pixel finite.
 #include "MeshLoader.h"
@@ -135,6 +136,28 @@ TEST_F(MeshExtremes, AVertexBeyondTheFloatRangeMakesSliversThatAreDropped)
   double bounds[6];
   mesh.polyData->GetBounds(bounds);
   EXPECT_EQ(bounds[5], 0.0); // the base triangle lies in z = 0
+}
+
+// Texture coordinates with a NaN entry are discarded as a whole (a half-kept UV map would tear):
+// the mesh loads without them, the count and the user's note say why, and the tangents fall
+// back to the default brushing (axis:1,0,0), as for a mesh that never had UVs.
+TEST_F(MeshExtremes, TextureCoordinatesWithANanAreDiscardedWhole)
+{
+  const std::string ply = "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\n"
+                          "property float y\nproperty float z\nproperty float s\nproperty float t\n"
+                          "element face 4\nproperty list uchar int vertex_indices\nend_header\n"
+                          "0 0 0 0 0\n1 0 0 1 0\n0 1 0 0 1\n0 0 1 nan 1\n"
+                          "3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n";
+  const aniso::LoadedMesh mesh = aniso::loadMesh(write("nanuv.ply", ply));
+  EXPECT_EQ(mesh.report.triangles, 4);
+  EXPECT_EQ(mesh.report.invalidTCoords, 1);
+  EXPECT_FALSE(mesh.report.hasTCoords);
+  EXPECT_EQ(mesh.polyData->GetPointData()->GetArray("TCoords"), nullptr);
+  const std::vector<std::string> notes = mesh.report.notes();
+  ASSERT_EQ(notes.size(), 1u);
+  EXPECT_EQ(notes[0], "texture coordinates discarded (1 entry is NaN or Inf)");
+  const aniso::PreparedSurface prepared = aniso::prepareSurface(mesh.polyData, {}, "nanuv.ply");
+  EXPECT_EQ(prepared.report.tangentSource, "axis:1,0,0");
 }
 
 TEST_F(MeshExtremes, MapsOnAMeshWithoutTextureCoordinatesAreLeftOut)
