@@ -4,9 +4,8 @@
 // analytic face normals of the tetrahedron are the reference) and finite unit tangents
 // orthogonal to them; a vertex beyond the float range (1e39) leaves only slivers, dropped as
 // zero-area faces (docs/MESHES.md states what the renderer then shows). Texture coordinates
-// with a NaN are discarded whole. And a mesh without
-// texture coordinates given maps renders without them (the variant holds none of their code)
-// rather than failing, every pixel finite.
+// with a NaN are discarded whole. And a mesh without texture coordinates given maps renders
+// without them (the variant holds none of their code) rather than failing, every pixel finite.
 #include "MeshLoader.h"
 #include "OffscreenRenderer.h"
 #include "SurfacePreparation.h"
