@@ -313,6 +313,18 @@ double leadrLevelOfFootprint(const LeadrMips& mips, double tiles, const glm::dve
 class LeadrShadingMaterial::Textures
 {
 public:
+  // A material replaced in a live window gives its textures and their units back.
+  ~Textures()
+  {
+    for (vtkTextureObject* texture : {moments.Get(), momentXY.Get()})
+    {
+      if (texture && window)
+      {
+        texture->ReleaseGraphicsResources(window);
+      }
+    }
+  }
+
   vtkWeakPointer<vtkOpenGLRenderWindow> window;
   vtkSmartPointer<vtkTextureObject> moments;
   vtkSmartPointer<vtkTextureObject> momentXY;

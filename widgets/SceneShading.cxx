@@ -128,6 +128,20 @@ std::string formatLightList(const std::vector<Light>& lights)
   return text;
 }
 
+std::vector<std::string_view> surfaceModelKeys(std::string_view model)
+{
+  if (model == "leadr")
+  {
+    return {"leadr-tiles", "leadr-roughness", "leadr-scale", "leadr-grid", "leadr-filter"};
+  }
+  if (model == "microstructure")
+  {
+    return {"structure", "structure-tiles", "structure-depth", "micro-grid",      "jitter-grid",
+            "masking",   "self-shadow",     "micro-brdf",      "micro-roughness", "blinn-exponent"};
+  }
+  return {};
+}
+
 void installShadingValidators(SceneModel& model)
 {
   model.setValidator("lights", [](const std::string& text, const std::string& subject)

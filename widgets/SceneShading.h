@@ -36,6 +36,10 @@ std::string formatLightList(const std::vector<Light>& lights);
 // Lights a lit model can draw at once (LitModelMaterial::kMaxLights).
 constexpr int kMaxSceneLights = 8;
 
+// The declared parameters (material/parameters.h) of a surface model: LEADR's for "leadr", the
+// microstructure's for "microstructure", none for any other model.
+std::vector<std::string_view> surfaceModelKeys(std::string_view model);
+
 // Makes MODEL reject a "lights" text that parseLightList rejects.
 void installShadingValidators(SceneModel& model);
 } // namespace aniso

@@ -132,15 +132,7 @@ void LitModelView::update()
   try
   {
     lit = litSettingsOf(*model_, settings);
-    const std::string& name = model_->text("model");
-    if (!lit && name != kEnvironmentModel && name != shownModel_)
-    {
-      // The surface models (LEADR, microstructure) have offscreen renderers only.
-      emit errorOccurred(QString::fromStdString("model: " + name +
-                                                " is rendered by `aniso render --model " + name +
-                                                "`; the view shows as-env"));
-    }
-    shownModel_ = name;
+    // The surface models (LEADR, microstructure) are SurfaceModelView's.
     if (lit)
     {
       auto* sceneMapper = vtkPolyDataMapper::SafeDownCast(sceneActor_->GetMapper());

@@ -59,6 +59,5 @@ private:
   vtkNew<vtkActor> actor_;
   vtkNew<vtkOpenGLPolyDataMapper> mapper_;
   std::unique_ptr<LitModelMaterial> material_;
-  std::string shownModel_; // the model of the last update, so a note is given once per choice
 };
 } // namespace aniso

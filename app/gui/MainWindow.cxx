@@ -13,6 +13,7 @@
 #include "OffscreenRenderer.h"
 #include "SceneShading.h"
 #include "SceneView.h"
+#include "SurfaceModelView.h"
 #include "error.h"
 #include "image/image.h"
 
@@ -97,6 +98,7 @@ MainWindow::MainWindow(QWidget* parent)
   view_ = new SceneView(&model_, &assets_, luts_, renderWindow_, this);
   installShadingValidators(model_);
   litView_ = new LitModelView(&model_, view_, this);
+  surfaceView_ = new SurfaceModelView(&model_, &assets_, view_, this);
 
   materialDock_ = new MaterialDock(&editor_, this);
   mapsDock_ = new MapsDock(&editor_, this);
@@ -121,6 +123,7 @@ MainWindow::MainWindow(QWidget* parent)
   connect(environmentDock_, &EnvironmentDock::errorOccurred, this, toStatus);
   connect(lightsDock_, &LightsDock::errorOccurred, this, toStatus);
   connect(litView_, &LitModelView::errorOccurred, this, toStatus);
+  connect(surfaceView_, &SurfaceModelView::errorOccurred, this, toStatus);
   connect(&editor_, &SceneEditor::errorOccurred, this, toStatus);
   connect(view_, &SceneView::errorOccurred, this, toStatus);
   connect(luts_, &LutScheduler::bakeFailed, this, toStatus);
@@ -169,6 +172,7 @@ MainWindow::~MainWindow()
   // The comparison and the lit actor draw the view's mesh: they go before the view, which goes
   // before the widget whose window it draws into.
   delete compareWindow_;
+  delete surfaceView_;
   delete litView_;
   delete view_;
   view_ = nullptr;
@@ -422,6 +426,11 @@ void MainWindow::exportScreenshot(const QString& path, const ScreenshotOptions& 
   {
     settings.installMaterial = litModelInstaller(lit);
   }
+  // So are LEADR and the microstructure.
+  if (MaterialInstaller surface = surfaceModelInstallerOf(model_, assets_))
+  {
+    settings.installMaterial = std::move(surface);
+  }
   if (options.transparent)
   {
     settings.display.background = BackgroundMode::Transparent;
@@ -564,9 +573,16 @@ void MainWindow::setInteractiveResolution(bool interacting)
 
 void MainWindow::showSamples(int samples, int target)
 {
-  samplesLabel_->setText(view_->interacting()
-                             ? tr("Preview")
-                             : tr("Samples %1 / %2").arg(std::min(samples, target)).arg(target));
+  if (view_->interacting())
+  {
+    samplesLabel_->setText(tr("Preview"));
+    return;
+  }
+  // The error the target's sample count is predicted to reach (the quality's error model).
+  samplesLabel_->setText(tr("Samples %1 / %2, predicted error %3%")
+                             .arg(std::min(samples, target))
+                             .arg(target)
+                             .arg(100.0 * view_->quality().predictedError, 0, 'g', 2));
 }
 
 void MainWindow::closeEvent(QCloseEvent* event)

@@ -26,6 +26,7 @@ class CompareWindow;
 class EnvironmentDock;
 class LightsDock;
 class LitModelView;
+class SurfaceModelView;
 class LutScheduler;
 class MapsDock;
 class MaterialDock;
@@ -48,6 +49,7 @@ public:
   SceneModel* model() { return &model_; }
   SceneEditor* editor() { return &editor_; }
   SceneView* view() const { return view_; }
+  SurfaceModelView* surfaceView() const { return surfaceView_; }
   LightsDock* lightsDock() const { return lightsDock_; }
   // The comparison view (View > Compare models), made when first opened.
   CompareWindow* compareWindow() const { return compareWindow_; }
@@ -110,6 +112,7 @@ private:
   QDockWidget* lutDock_;
   LightsDock* lightsDock_;
   LitModelView* litView_ = nullptr;
+  SurfaceModelView* surfaceView_ = nullptr;
   CompareWindow* compareWindow_ = nullptr;
   QMenu* recentMenu_ = nullptr;
   QLabel* samplesLabel_;

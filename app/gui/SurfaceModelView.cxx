@@ -1,0 +1,241 @@
+#include "SurfaceModelView.h"
+
+#include "LeadrMaterial.h"
+#include "LitModelView.h"
+#include "MicrostructureMaterial.h"
+#include "SceneAssets.h"
+#include "SceneShading.h"
+#include "SceneView.h"
+#include "error.h"
+#include "leadr/leadr.h"
+#include "microstructure/microstructure.h"
+#include "render_surface_models.h"
+
+#include <algorithm>
+#include <map>
+#include <vtkActor.h>
+#include <vtkOpenGLPolyDataMapper.h>
+#include <vtkOpenGLRenderer.h>
+#include <vtkPolyData.h>
+
+namespace aniso
+{
+namespace
+{
+// Keys that change the picture of a surface model besides its declared ones.
+bool isSceneKey(const QString& key)
+{
+  return key == "model" || key == "lights" || key == "f0" || key == "albedo" || key == "mesh" ||
+         key == "tangents" || key == "tpr";
+}
+
+glm::dvec3 colourOf(const SceneModel& model, std::string_view key)
+{
+  const std::array<double, 3> c = model.color(key);
+  return {c[0], c[1], c[2]};
+}
+
+// The built-in relief's moments are baked once per scale: moving a light reuses them.
+std::shared_ptr<const LeadrMips> leadrMoments(double scale)
+{
+  static double cachedScale = -1.0;
+  static std::shared_ptr<const LeadrMips> cached;
+  if (!cached || scale != cachedScale)
+  {
+    cached =
+        std::make_shared<const LeadrMips>(bakeLeadrFromHeight(cli::builtinLeadrRelief(), scale));
+    cachedScale = scale;
+  }
+  return cached;
+}
+
+MicroPattern patternOf(const std::string& name)
+{
+  static const std::map<std::string, MicroPattern> patterns = {
+      {"pyramids", MicroPattern::Pyramids},
+      {"inverted-pyramids", MicroPattern::InvertedPyramids},
+      {"grooves", MicroPattern::Grooves},
+      {"silk", MicroPattern::Silk}};
+  const auto found = patterns.find(name);
+  if (found == patterns.end())
+  {
+    throw errorAbout("structure", "unknown structure '" + name + "'");
+  }
+  return found->second;
+}
+} // namespace
+
+MaterialInstaller surfaceModelInstallerOf(const SceneModel& model, SceneAssets& assets)
+{
+  const std::string& name = model.text("model");
+  if (name == "leadr")
+  {
+    // As `aniso render --model leadr` without a map: the built-in relief.
+    LeadrSettings leadr;
+    leadr.moments = leadrMoments(model.real("leadr-scale"));
+    leadr.surface.f0 = colourOf(model, "f0");
+    leadr.surface.diffuse = colourOf(model, "albedo");
+    leadr.surface.baseAlphaX = leadr.surface.baseAlphaY = model.real("leadr-roughness");
+    leadr.tiles = model.real("leadr-tiles");
+    leadr.gridN = static_cast<int>(model.integer("leadr-grid"));
+    leadr.plainNormals = model.text("leadr-filter") == "normal-mapping";
+    leadr.environment = true;
+    leadr.lights = parseLightList(model.text("lights"), "lights");
+    return LeadrShadingMaterial::installer(leadr);
+  }
+  if (name == "microstructure")
+  {
+    MicrostructureSettings micro;
+    micro.structure = std::make_shared<const Microstructure>(
+        makeMicrostructure(patternOf(model.text("structure")), 64, model.real("structure-depth")));
+    MicroShadingOptions& o = micro.options;
+    o.samplesPerAxis = static_cast<int>(model.integer("micro-grid"));
+    o.jittered = model.text("jitter-grid") == "on";
+    const std::string& masking = model.text("masking");
+    o.masking = masking == "normal"     ? MicroMasking::Normal
+                : masking == "parallax" ? MicroMasking::Parallax
+                                        : MicroMasking::ParallaxOcclusion;
+    o.selfShadowing = model.text("self-shadow") == "on";
+    o.brdf = model.text("micro-brdf") == "blinn-phong" ? MicroBrdf::BlinnPhong
+                                                       : MicroBrdf::GgxSmithSchlick;
+    o.roughness = model.real("micro-roughness");
+    o.blinnExponent = model.real("blinn-exponent");
+    o.f0 = colourOf(model, "f0");
+    micro.tiles = model.real("structure-tiles");
+    micro.lights = parseLightList(model.text("lights"), "lights");
+    micro.tprMap = assets.map("tpr", model.text("tpr"));
+    return MicrostructureShadingMaterial::installer(micro);
+  }
+  return {};
+}
+
+SurfaceModelView::SurfaceModelView(SceneModel* model, SceneAssets* assets, SceneView* view,
+                                   QObject* parent)
+    : QObject(parent), model_(model), assets_(assets), view_(view), renderer_(view->renderer())
+{
+  sceneActor_ = firstActorOf(renderer_);
+  if (!sceneActor_)
+  {
+    throw errorAbout("view", "no actor to draw the surface model in place of");
+  }
+  // Connected after the view and the lit model's view, so their changes are in place first.
+  connect(model_, &SceneModel::valueChanged, this, &SurfaceModelView::keyChanged);
+  // A new environment: LEADR's material draws with the lighting it was made with.
+  connect(view_, &SceneView::lightingBusyChanged, this,
+          [this](bool busy)
+          {
+            if (!busy && view_->lighting() != lighting_ &&
+                !surfaceModelKeys(model_->text("model")).empty())
+            {
+              update();
+            }
+          });
+  update();
+}
+
+SurfaceModelView::~SurfaceModelView()
+{
+  material_.reset();
+  if (actor_)
+  {
+    renderer_->RemoveActor(actor_);
+  }
+}
+
+bool SurfaceModelView::active() const
+{
+  return actor_ && actor_->GetVisibility() != 0;
+}
+
+vtkActor* SurfaceModelView::surfaceActor() const
+{
+  return actor_;
+}
+
+void SurfaceModelView::keyChanged(const QString& key)
+{
+  const std::string name = key.toStdString();
+  const std::vector<std::string_view> keys = surfaceModelKeys(model_->text("model"));
+  if (isSceneKey(key) || std::find(keys.begin(), keys.end(), name) != keys.end())
+  {
+    update();
+  }
+  else if (active())
+  {
+    // The lit model's view shows the scene actor again for keys of its own.
+    show(true);
+  }
+}
+
+void SurfaceModelView::show(bool on)
+{
+  if (actor_)
+  {
+    actor_->SetVisibility(on);
+  }
+  if (on)
+  {
+    sceneActor_->VisibilityOff();
+  }
+}
+
+void SurfaceModelView::update()
+{
+  const std::string& name = model_->text("model");
+  if (surfaceModelKeys(name).empty())
+  {
+    // Another model: the lit model's view or the scene actor draws it.
+    reported_.clear();
+    if (active())
+    {
+      show(false);
+      view_->requestRender();
+    }
+    return;
+  }
+  const std::shared_ptr<EnvironmentLighting> lighting = view_->lighting();
+  if (!lighting)
+  {
+    return; // the first environment is still baking; lightingBusyChanged brings it
+  }
+  try
+  {
+    const MaterialInstaller install = surfaceModelInstallerOf(*model_, *assets_);
+    // A fresh actor, so a material that fails to apply leaves the previous one untouched.
+    vtkNew<vtkOpenGLPolyDataMapper> mapper;
+    mapper->ScalarVisibilityOff();
+    auto* sceneMapper = vtkPolyDataMapper::SafeDownCast(sceneActor_->GetMapper());
+    mapper->SetInputData(sceneMapper ? sceneMapper->GetInput() : nullptr);
+    auto actor = vtkSmartPointer<vtkActor>::New();
+    actor->SetMapper(mapper);
+    actor->SetUserMatrix(sceneActor_->GetUserMatrix());
+    std::shared_ptr<void> material = install(actor, renderer_, lighting);
+    if (actor_)
+    {
+      renderer_->RemoveActor(actor_);
+    }
+    material_ = std::move(material);
+    actor_ = actor;
+    lighting_ = lighting;
+    renderer_->AddActor(actor_);
+    reported_.clear();
+  }
+  catch (const Error& e)
+  {
+    const std::string message = e.what();
+    if (message != reported_)
+    {
+      reported_ = message;
+      emit errorOccurred(QString::fromStdString(message));
+    }
+    // The previous picture stays: the surface model drawn before, or the other model's actor.
+    if (active())
+    {
+      show(true);
+    }
+    return;
+  }
+  show(true);
+  view_->requestRender();
+}
+} // namespace aniso
