@@ -1,5 +1,6 @@
 #include "LightsDock.h"
 
+#include "ParameterPanel.h"
 #include "SceneShading.h"
 #include "error.h"
 #include "materials/models.h"
@@ -89,6 +90,38 @@ LightsDock::LightsDock(SceneEditor* editor, QWidget* parent)
   form->addRow(tr("Model"), model_);
   form->addRow(tr("Sample material"), sample_);
   layout->addLayout(form);
+
+  // The declared settings of LEADR and the microstructure, shown while that model is chosen.
+  QList<QWidget*> panels;
+  for (const char* name : {"leadr", "microstructure"})
+  {
+    auto* panel = new ParameterPanel(editor_, body);
+    panel->setObjectName(QString(name) + "Parameters");
+    for (std::string_view key : surfaceModelKeys(name))
+    {
+      panel->addParameter(key);
+    }
+    connect(panel, &ParameterPanel::errorOccurred, this, &LightsDock::errorOccurred);
+    panels.append(panel);
+  }
+  QWidget* surface = scrollableColumn(panels, body);
+  const auto showPanels = [this, panels, surface]
+  {
+    const std::string& model = editor_->model()->text("model");
+    panels[0]->setVisible(model == "leadr");
+    panels[1]->setVisible(model == "microstructure");
+    surface->setVisible(!surfaceModelKeys(model).empty());
+  };
+  connect(editor_->model(), &SceneModel::valueChanged, surface,
+          [showPanels](const QString& key)
+          {
+            if (key == "model")
+            {
+              showPanels();
+            }
+          });
+  showPanels();
+  layout->addWidget(surface, 1);
 
   list_ = new QListWidget(body);
   layout->addWidget(list_);
