@@ -609,11 +609,14 @@ std::string modelsMarkdown(const BenchResult& result, const std::string& plotFil
   }
   std::ostringstream md;
   md << "\n### Other shading models (issue 6)\n\n"
-        "Each scene first times the environment frame (Ashikhmin-Shirley " +
+        "Every configuration is timed right after the environment frame of its scene "
+        "(Ashikhmin-Shirley " +
             lobeText(AsLobe{1000.0, 100.0}) +
-            ", exact, filtered, LUT, 16 samples, built-in studio) in the same session; every "
-            "frame time below is followed by its ratio to that frame, which a loaded machine "
-            "changes far less than the times themselves. Times are medians of 2 to 5 frames "
+            ", exact, filtered, LUT, 16 samples, built-in studio, the median of 3 frames) in the "
+            "same session; every frame time below is followed by its ratio to that neighbour, "
+            "which a changing load moves far less than the times themselves. The table gives "
+            "each scene's environment frame timed alone (9 frames). Times are medians of 2 to 5 "
+            "frames "
             "after a warm-up frame; errors are the relative L2 over RGB and p99 (the 99th "
             "percentile of the per-pixel error over the image's RMS radiance) on the compared "
             "pixels.\n\n"
@@ -634,8 +637,9 @@ std::string modelsMarkdown(const BenchResult& result, const std::string& plotFil
           "across, k_s 0.9) under the first 1, 2 or 4 of: dir:-1,-2,1.5, point:1.5,-2,1.5, "
           "dir:1.5,-1,0.4, point:-1.5,-1,2.5. Error against the core's CPU evaluation of the "
           "same model and lights (shadeLitModel) at every covered pixel away from the "
-          "silhouette, with the frame the shader builds from the interpolated normal and "
-          "tangent.\n\n"
+          "silhouette and the flange's creases (a pixel is compared when its 3x3 neighbours "
+          "are covered and their normals lie within 10 degrees of its own), with the frame the "
+          "shader builds from the interpolated normal and tangent.\n\n"
           "| Mesh | Model | Lights | Frame (/ env) | Relative L2 | p99 | Pixels |\n"
           "| --- | --- | --- | --- | --- | --- | --- |\n";
     for (const BenchRow& r : rows)
@@ -688,8 +692,9 @@ std::string modelsMarkdown(const BenchResult& result, const std::string& plotFil
     md << "\n#### Microstructure over its K x K grid against the converged CPU evaluation\n\n"
           "The plate under a parallel view at 50 degrees, "
        << any->width << "x" << any->height
-       << ", 2.77 structure tiles across a pixel (structures of 64² texels, depth 0.2 tile), "
-          "GGX alpha 0.2, F0 0.5, one directional and one point light. The reference is the "
+       << ", 2.77 structure tiles across a pixel (structures of 64² texels, depth 0.4 tile: "
+          "faces at 39 degrees), GGX alpha 0.2, F0 0.5, a directional light 27 degrees above "
+          "the plate (low enough for self-shadowing) and a point light. The reference is the "
           "core's shadeMicroPixel with a full 32 x 32 grid (24 x 24 in the quick set) on the "
           "same footprints; the full grid samples cell centres, the jittered one a random "
           "point per cell (per-pixel seeds).\n\n"
