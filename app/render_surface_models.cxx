@@ -17,29 +17,28 @@ namespace
 {
 constexpr double kPi = 3.14159265358979323846;
 
-Option number(std::string name, std::string valueName, ParameterType type, double value,
-              double minimum, double maximum, std::string_view help)
+// The option NAME of declared parameter KEY (core/material/parameters.cxx, shared with the
+// window's scene keys): a choice lists its values, a number shows VALUE_NAME.
+Option declaredOption(std::string_view key, std::string name, const std::string& valueName,
+                      std::string_view help = {})
 {
-  Option o;
-  o.name = std::move(name);
-  o.valueName = std::move(valueName);
-  o.spec.type = type;
-  o.spec.defaultValue = {value, 0.0, 0.0};
-  o.spec.minimum = minimum;
-  o.spec.maximum = maximum;
-  o.spec.help = help;
-  return o;
-}
-
-Option choice(std::string name, std::string_view help, std::vector<std::string> choices)
-{
-  Option o = textOption(std::move(name), "", help, choices.front());
-  o.valueName = choices.front();
-  for (std::size_t i = 1; i < choices.size(); ++i)
+  Option o = parameterOption(key, std::move(name), help);
+  for (std::string_view choice : o.spec.choices)
   {
-    o.valueName += "|" + choices[i];
+    o.choices.emplace_back(choice);
   }
-  o.choices = std::move(choices);
+  if (!o.choices.empty())
+  {
+    o.valueName = o.choices.front();
+    for (std::size_t i = 1; i < o.choices.size(); ++i)
+    {
+      o.valueName += "|" + o.choices[i];
+    }
+  }
+  else if (!valueName.empty())
+  {
+    o.valueName = valueName;
+  }
   return o;
 }
 
@@ -137,42 +136,26 @@ Image builtinLeadrRelief()
 
 void addSurfaceModelOptions(Command& c)
 {
-  c.options.push_back(number("--leadr-scale", "S", ParameterType::Real, 1.0, 0.0, 1e6,
-                             "leadr: heights of --height-map times S (texture units)"));
-  c.options.push_back(number("--leadr-tiles", "N", ParameterType::Real, 8.0, 1e-3, 1e6,
-                             "leadr: repeats of the relief per unit of texture coordinate"));
-  c.options.push_back(number("--leadr-roughness", "ALPHA", ParameterType::Real, 0.15,
-                             kLeadrMinAlpha, kLeadrMaxAlpha,
-                             "leadr: base Beckmann roughness added to every texel"));
-  c.options.push_back(number("--leadr-grid", "N", ParameterType::Integer, 4.0, 1.0, 16.0,
-                             "leadr: slope-space grid N x N for the environment and diffuse"));
-  c.options.push_back(choice("--leadr-filter",
-                             "leadr: the slope moments, or only their mean (plain normal mapping)",
-                             {"leadr", "normal-mapping"}));
-  c.options.push_back(choice("--structure",
-                             "microstructure: the repeating structure; it turns with --tpr "
-                             "(grooves with --tpr circular on --builtin disk: a brushed disk)",
-                             {"pyramids", "inverted-pyramids", "grooves", "silk"}));
-  c.options.push_back(number("--grid", "K", ParameterType::Integer, 4.0, 1.0, 64.0,
-                             "microstructure: K x K samples per pixel"));
-  c.options.push_back(
-      choice("--jitter-grid", "microstructure: one random point per grid cell", {"off", "on"}));
-  c.options.push_back(choice("--masking",
-                             "microstructure: normal mapping, parallax or parallax occlusion",
-                             {"pom", "parallax", "normal"}));
-  c.options.push_back(
-      choice("--self-shadow", "microstructure: shadows of the structure per light", {"off", "on"}));
-  c.options.push_back(choice("--micro-brdf",
-                             "microstructure: GGX with Smith-Schlick or normalised Blinn-Phong",
-                             {"ggx", "blinn-phong"}));
-  c.options.push_back(number("--micro-roughness", "ALPHA", ParameterType::Real, 0.3, 1e-3, 1.0,
-                             "microstructure: GGX alpha"));
-  c.options.push_back(number("--blinn-exponent", "E", ParameterType::Real, 100.0, 0.0, 1e6,
-                             "microstructure: Blinn-Phong exponent"));
-  c.options.push_back(number("--structure-depth", "D", ParameterType::Real, 0.1, 1e-3,
-                             kMicroMaxDepth, "microstructure: relief depth in tile widths"));
-  c.options.push_back(number("--structure-tiles", "N", ParameterType::Real, 64.0, 1e-3, 1e6,
-                             "microstructure: tiles per unit of texture coordinate"));
+  c.options.push_back(declaredOption("leadr-scale", "--leadr-scale", "S",
+                                     "leadr: heights of --height-map (or the built-in relief) "
+                                     "times S (texture units)"));
+  c.options.push_back(declaredOption("leadr-tiles", "--leadr-tiles", "N"));
+  c.options.push_back(declaredOption("leadr-roughness", "--leadr-roughness", "ALPHA"));
+  c.options.push_back(declaredOption("leadr-grid", "--leadr-grid", "N"));
+  c.options.push_back(declaredOption("leadr-filter", "--leadr-filter", ""));
+  c.options.push_back(declaredOption("structure", "--structure", "",
+                                     "microstructure: the repeating structure; it turns with "
+                                     "--tpr (grooves with --tpr circular on --builtin disk: a "
+                                     "brushed disk)"));
+  c.options.push_back(declaredOption("micro-grid", "--grid", "K"));
+  c.options.push_back(declaredOption("jitter-grid", "--jitter-grid", ""));
+  c.options.push_back(declaredOption("masking", "--masking", ""));
+  c.options.push_back(declaredOption("self-shadow", "--self-shadow", ""));
+  c.options.push_back(declaredOption("micro-brdf", "--micro-brdf", ""));
+  c.options.push_back(declaredOption("micro-roughness", "--micro-roughness", "ALPHA"));
+  c.options.push_back(declaredOption("blinn-exponent", "--blinn-exponent", "E"));
+  c.options.push_back(declaredOption("structure-depth", "--structure-depth", "D"));
+  c.options.push_back(declaredOption("structure-tiles", "--structure-tiles", "N"));
 }
 
 bool applySurfaceModelOptions(const Arguments& a, RenderSettings& settings)
