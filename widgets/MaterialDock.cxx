@@ -111,10 +111,14 @@ MaterialDock::MaterialDock(SceneEditor* editor, QWidget* parent)
           });
 
   auto* sampling = new ParameterPanel(editor, this);
-  for (const char* key : {"method", "filtered", "samples", "target-samples"})
+  for (const char* key : {"method", "filtered", "samples", "quality-mode"})
   {
     sampling->addParameter(key);
   }
+  // The quality as a sample count or as an error target: the control of the other mode is
+  // shown disabled, its value kept for when the mode comes back.
+  targetSamples_ = sampling->addParameter("target-samples");
+  errorTarget_ = sampling->addParameter("error-target");
   auto* tables = new ParameterPanel(editor, this);
   for (const char* key : {"half-vectors", "lut-size", "lut-samples"})
   {
@@ -132,7 +136,7 @@ MaterialDock::MaterialDock(SceneEditor* editor, QWidget* parent)
   connect(editor->model(), &SceneModel::valueChanged, this,
           [this](const QString& key)
           {
-            if (key == "nu" || key == "nv" || key == "f0")
+            if (key == "nu" || key == "nv" || key == "f0" || key == "quality-mode")
             {
               syncFromModel();
             }
@@ -192,6 +196,9 @@ void MaterialDock::editRoughness(const std::string& key, double alpha)
 void MaterialDock::syncFromModel()
 {
   const SceneModel* model = editor_->model();
+  const bool byError = model->text("quality-mode") == "error";
+  targetSamples_->setEnabled(!byError);
+  errorTarget_->setEnabled(byError);
   {
     const QSignalBlocker blockU(alphaU_);
     const QSignalBlocker blockV(alphaV_);

@@ -2,7 +2,10 @@
 // The material dock: AS exponents n_u, n_v on logarithmic sliders with exact spin boxes, their
 // roughness view, a link that moves both keeping their ratio, F0 with measured metal presets,
 // albedo, specular method, filtered sampling, sample count and quality, and the lookup-table
-// settings. Slider and roughness mappings: SliderMapping.h.
+// settings. The quality is a total sample count (target-samples) or an error target
+// (error-target, whose samples follow from the lobe by core/quality's error model), by
+// quality-mode; the control of the mode not in use is disabled. Slider and roughness mappings:
+// SliderMapping.h.
 #include "SceneEditor.h"
 
 #include <QDockWidget>
@@ -15,6 +18,7 @@ class QDoubleSpinBox;
 
 namespace aniso
 {
+class ParameterControl;
 class ParameterPanel;
 
 struct MetalPreset
@@ -55,6 +59,8 @@ private:
   QDoubleSpinBox* alphaU_;
   QDoubleSpinBox* alphaV_;
   QComboBox* presets_;
+  ParameterControl* targetSamples_ = nullptr;
+  ParameterControl* errorTarget_ = nullptr;
   // The exponents when the current linked gesture began: their ratio is kept.
   double linkNu_ = 1.0;
   double linkNv_ = 1.0;

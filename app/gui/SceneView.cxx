@@ -93,6 +93,16 @@ bool isDisplayKey(const std::string& key)
          key == "background-color";
 }
 
+// Keys that leave the cost of a frame as it was: the measured frame costs stay valid.
+bool keepsFrameCost(const std::string& key)
+{
+  static const char* const keys[] = {
+      "nu",           "nv",           "f0",           "albedo",
+      "samples",      "lut-size",     "lut-samples",  "target-samples",
+      "env-rotation", "height-scale", "quality-mode", "error-target"};
+  return isDisplayKey(key) || std::find(std::begin(keys), std::end(keys), key) != std::end(keys);
+}
+
 bool needsLuts(const MaterialSettings& s)
 {
   return s.method == SpecularMethod::SplitSum || s.halfVectors == HalfVectorSource::Lut;
@@ -190,6 +200,16 @@ SceneView::SceneView(SceneModel* model, SceneAssets* assets, LutScheduler* luts,
     }
   }
 
+  // Every frame the window draws is timed (progressive ones and the interactor's own); those
+  // that drew the surface are what the frame budget learns from.
+  clock_.start();
+  frameTiming_->SetClientData(this);
+  frameTiming_->SetCallback([](vtkObject*, unsigned long event, void* self, void*)
+                            { static_cast<SceneView*>(self)->frameEvent(event); });
+  window_->AddObserver(vtkCommand::StartEvent, frameTiming_);
+  window_->AddObserver(vtkCommand::EndEvent, frameTiming_);
+  mapper_->AddObserver(vtkCommand::StartEvent, frameTiming_);
+
   connect(model_, &SceneModel::valueChanged, this, &SceneView::modelChanged);
   connect(model_, &SceneModel::cameraChanged, this, &SceneView::applyCameraFromModel);
   connect(luts_, &LutScheduler::lutsReady, this, [this] { applyMaterial(); });
@@ -215,6 +235,8 @@ SceneView::~SceneView()
       style->RemoveObserver(interactionObserver_);
     }
   }
+  window_->RemoveObserver(frameTiming_);
+  mapper_->RemoveObserver(frameTiming_);
   material_.reset();
   window_->RemoveRenderer(renderer_);
   vtkOutputWindow::SetInstance(errorOutput_->previous);
@@ -243,6 +265,73 @@ void SceneView::setSettleMs(int ms)
   settle_->setInterval(ms);
 }
 
+void SceneView::setFrameBudgetMs(int ms)
+{
+  frameBudgetMs_ = std::max(ms, 0);
+  try
+  {
+    applyMaterial();
+  }
+  catch (const Error& e)
+  {
+    emit errorOccurred(QString::fromStdString(e.what()));
+  }
+  requestRender();
+}
+
+FrameCostModel SceneView::frameCost() const
+{
+  return fitFrameCost(frameCosts_);
+}
+
+int SceneView::frameSamples() const
+{
+  return interacting_ ? std::min(full_.samples, kInteractiveSamples) : runSamples_;
+}
+
+int SceneView::planRunSamples() const
+{
+  const int* size = window_->GetSize();
+  const double pixels = double(size[0]) * double(size[1]);
+  return chooseFrameSamples(frameCost(), pixels, frameBudgetMs_ * 1e-3, full_.samples,
+                            targetSamples());
+}
+
+void SceneView::frameEvent(unsigned long event)
+{
+  if (event == vtkCommand::StartEvent && window_ && frameStartNs_ < 0)
+  {
+    // The window's start (the mapper's start comes inside it).
+    frameStartNs_ = clock_.nsecsElapsed();
+    frameDrewSurface_ = false;
+    return;
+  }
+  if (event == vtkCommand::StartEvent)
+  {
+    frameDrewSurface_ = true;
+    frameDrawnSamples_ = material_ ? material_->settings().samples : 1;
+    return;
+  }
+  if (frameStartNs_ < 0)
+  {
+    return;
+  }
+  const double seconds = double(clock_.nsecsElapsed() - frameStartNs_) * 1e-9;
+  frameStartNs_ = -1;
+  if (!frameDrewSurface_)
+  {
+    return; // a converged view shown again, or nothing to draw
+  }
+  const int* size = window_->GetSize();
+  frameCosts_.push_back({frameDrawnSamples_, double(size[0]) * double(size[1]), seconds});
+  // The recent frames: the cost changes with the view (how much of it the surface covers).
+  constexpr std::size_t kKept = 12;
+  if (frameCosts_.size() > kKept)
+  {
+    frameCosts_.erase(frameCosts_.begin());
+  }
+}
+
 void SceneView::modelChanged(const QString& qkey)
 {
   const std::string key = qkey.toStdString();
@@ -256,6 +345,16 @@ void SceneView::modelChanged(const QString& qkey)
     {
       requestLighting();
     }
+    else if (key == "env-sampling" && model_->text("env-sampling") != "off" && !lightingSampled_)
+    {
+      // The distribution is baked with a new lighting on the worker; until it is on screen the
+      // material keeps sampling only its lobe.
+      requestLighting();
+    }
+    if (!keepsFrameCost(key))
+    {
+      frameCosts_.clear();
+    }
     else if (key == "env-rotation")
     {
       lighting_->setRotationDegrees(model_->real("env-rotation"));
@@ -265,11 +364,13 @@ void SceneView::modelChanged(const QString& qkey)
       // Exposure and tone mapping apply to the accumulated image: no new frames needed.
       applyDisplay();
     }
-    if (!isDisplayKey(key) && key != "target-samples")
+    const bool qualityKey =
+        key == "target-samples" || key == "quality-mode" || key == "error-target";
+    if (!isDisplayKey(key) && !qualityKey)
     {
       beginInteraction();
     }
-    if (isMaterialKey(key) || key == "target-samples")
+    if (isMaterialKey(key) || qualityKey || key == "env-sampling")
     {
       applyMaterial();
     }
@@ -359,14 +460,14 @@ void SceneView::startLightingBake()
   }
   catch (const Error& e)
   {
-    lightingBaked(id, nullptr, QString::fromStdString(e.what()));
+    lightingBaked(id, nullptr, false, QString::fromStdString(e.what()));
     return;
   }
   if (lighting_ && &lighting_->environment() == environment.get() &&
-      lighting_->cubeSize() == cubeSize)
+      lighting_->cubeSize() == cubeSize && (!sampling || lightingSampled_))
   {
     // Back to what is on screen (an undo, or a change reverted while a bake ran).
-    lightingBaked(id, lighting_, QString());
+    lightingBaked(id, lighting_, lightingSampled_, QString());
     return;
   }
   lightingInFlight_ = true;
@@ -380,7 +481,8 @@ void SceneView::startLightingBake()
           baked = std::make_shared<EnvironmentLighting>(environment, cubeSize);
           if (sampling)
           {
-            // Else baked on the first frame that samples the environment, on the UI thread.
+            // The material samples the environment only with a lighting baked so: never
+            // baked on the UI thread.
             baked->samplingDistribution();
           }
         }
@@ -394,12 +496,13 @@ void SceneView::startLightingBake()
         }
         // Delivered on the UI thread; dropped with the view if it is gone by then.
         QMetaObject::invokeMethod(
-            this, [this, id, baked, message] { lightingBaked(id, baked, message); },
+            this,
+            [this, id, baked, sampling, message] { lightingBaked(id, baked, sampling, message); },
             Qt::QueuedConnection);
       });
 }
 
-void SceneView::lightingBaked(int id, std::shared_ptr<EnvironmentLighting> baked,
+void SceneView::lightingBaked(int id, std::shared_ptr<EnvironmentLighting> baked, bool sampled,
                               const QString& error)
 {
   lightingInFlight_ = false;
@@ -418,8 +521,18 @@ void SceneView::lightingBaked(int id, std::shared_ptr<EnvironmentLighting> baked
   {
     baked->setRotationDegrees(model_->real("env-rotation"));
     lighting_ = std::move(baked);
+    lightingSampled_ = sampled;
     pass_->SetLighting(lighting_);
     material_->setLighting(lighting_);
+    // Environment sampling held back for want of the distribution can start now.
+    try
+    {
+      applyMaterial();
+    }
+    catch (const Error& e)
+    {
+      emit errorOccurred(QString::fromStdString(e.what()));
+    }
     requestRender();
   }
   if (!lightingBusy() && lightingBusyShown_)
@@ -459,15 +572,31 @@ void SceneView::applyMaterial()
       wanted.halfVectors = full_.halfVectors;
     }
   }
+  if (wanted.environmentSampling != EnvironmentSampling::Off && !lightingSampled_)
+  {
+    // Its distribution is being baked on the worker (requestLighting); the lobe alone until then.
+    wanted.environmentSampling = EnvironmentSampling::Off;
+  }
   full_ = wanted;
   MaterialSettings shown = full_;
+  int frames = 1;
   if (interacting_)
   {
     shown.samples = std::min(shown.samples, kInteractiveSamples);
   }
+  else
+  {
+    const int planned = planRunSamples();
+    if (planned != runSamples_)
+    {
+      // Frames of another sample count: the run starts over, every frame with the same weight.
+      runSamples_ = planned;
+      pass_->Reset();
+    }
+    shown.samples = runSamples_;
+    frames = targetSamples() / runSamples_;
+  }
   material_->setSettings(shown);
-  const int frames =
-      interacting_ ? 1 : (model_->integer("target-samples") + shown.samples - 1) / shown.samples;
   pass_->SetTargetFrames(std::max(frames, 1));
   if (material_->mapsDropped())
   {
@@ -562,19 +691,32 @@ RenderSettings SceneView::renderSettings(int width, int height) const
   s.camera = p;
   s.width = width;
   s.height = height;
-  s.frames = std::max(1, (model_->integer("target-samples") + full_.samples - 1) / full_.samples);
+  s.frames = targetSamples() / full_.samples;
   return s;
 }
 
 int SceneView::accumulatedSamples() const
 {
-  const int samples = interacting_ ? std::min(full_.samples, kInteractiveSamples) : full_.samples;
-  return pass_->GetAccumulatedFrames() * samples;
+  return pass_->GetAccumulatedFrames() * frameSamples();
+}
+
+QualityChoice SceneView::quality() const
+{
+  if (model_->text("quality-mode") == "error")
+  {
+    // The largest total the samples mode allows bounds this one too.
+    const int most = static_cast<int>(parameterSpec("target-samples").maximum);
+    return chooseSamples(model_->real("error-target"), full_.lobe, full_.filtered, most);
+  }
+  QualityChoice choice;
+  choice.samples = model_->integer("target-samples");
+  choice.predictedError = predictedError(full_.lobe, full_.filtered, choice.samples);
+  return choice;
 }
 
 int SceneView::targetSamples() const
 {
-  return model_->integer("target-samples");
+  return runTotalSamples(quality().samples, full_.samples);
 }
 
 bool SceneView::converged() const
@@ -630,6 +772,24 @@ void SceneView::renderNow()
       reportRenderError(message.str());
     }
   }
+  if (!interacting_ && !runReplanned_ && pass_->GetAccumulatedFrames() == 1)
+  {
+    // The run's first frame measured its own cost: if the plan was off (made from frames of
+    // another sample count or size), the run starts over with the corrected count, once.
+    runReplanned_ = true;
+    try
+    {
+      if (planRunSamples() != runSamples_)
+      {
+        applyMaterial();
+        requestRender();
+      }
+    }
+    catch (const Error& e)
+    {
+      emit errorOccurred(QString::fromStdString(e.what()));
+    }
+  }
   emit frameRendered(accumulatedSamples(), targetSamples());
   // Progressive refinement: one more frame once pending events are handled, so the window
   // stays responsive between frames.
@@ -660,6 +820,7 @@ void SceneView::beginInteraction()
 void SceneView::settle()
 {
   interacting_ = false;
+  runReplanned_ = false;
   emit interactionChanged(false);
   if (cameraMoved_)
   {

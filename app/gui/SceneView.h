@@ -4,22 +4,30 @@
 // (a drag, a camera interaction) frames are cheap (one sample per pixel; the window draws them
 // at reduced resolution, see interactionChanged); once still for a moment, frames accumulate
 // (progressive refinement) until the quality's sample count is reached, then nothing is drawn
-// until something changes. Lookup tables come from the LutScheduler's bakes, so a new n_u, n_v
-// never bakes on the UI thread: until its tables are ready the material keeps the previous
+// until something changes. Each refinement frame takes as many of the material's samples as the
+// frame budget allows by the measured cost of earlier frames (fewer frames of more samples when
+// they are cheap), a count that divides the run's total, so the converged image is the same
+// mean of the same number of samples. Lookup tables come from the LutScheduler's bakes, so a new
+// n_u, n_v never bakes on the UI thread: until its tables are ready the material keeps the previous
 // exponents. Likewise a new environment or cube size is baked (cubemap, SH9 and, with
 // environment sampling on, its distribution) on a worker thread: the latest request wins, the
 // previous lighting stays on screen until the new one is ready, and a failed bake is reported
-// once and changes nothing.
+// once and changes nothing. Switching environment sampling on bakes a lighting with its
+// distribution the same way; until it is on screen the material samples its lobe only.
 #include "DisplaySettings.h"
 #include "MaterialSettings.h"
 #include "OffscreenRenderer.h"
 #include "SceneModel.h"
+#include "quality/adaptive_quality.h"
+#include "quality/frame_budget.h"
 
+#include <QElapsedTimer>
 #include <QObject>
 #include <QString>
 #include <memory>
 #include <set>
 #include <string>
+#include <vector>
 #include <vtkNew.h>
 #include <vtkSmartPointer.h>
 
@@ -49,6 +57,7 @@ public:
   // Samples per pixel of the frames drawn while something moves.
   static constexpr int kInteractiveSamples = 1;
   static constexpr int kDefaultSettleMs = 300;
+  static constexpr int kDefaultFrameBudgetMs = 60;
 
   SceneView(SceneModel* model, SceneAssets* assets, LutScheduler* luts, vtkRenderWindow* window,
             QObject* parent = nullptr);
@@ -65,10 +74,26 @@ public:
   CameraState currentCamera() const;
 
   int accumulatedSamples() const;
+  // Samples per pixel the still view accumulates: target-samples, or with quality-mode error
+  // the fewest whose predicted error (quality()) meets error-target; rounded up to whole frames
+  // of the material's samples.
   int targetSamples() const;
+  // The quality of the still view by the error model of the material's lobe and filtering
+  // (adaptive_quality.h): the total it asks for and that total's predicted error.
+  QualityChoice quality() const;
   bool converged() const;
   bool interacting() const { return interacting_; }
   void setSettleMs(int ms);
+  // The longest a progressive frame should keep the UI thread (the window's render of it), by
+  // which the samples per frame of a still view's refinement are chosen (frame_budget.h): at most
+  // the material's samples, fewer when frames of that many would take longer, the run's total
+  // unchanged. 0: frames of the material's samples whatever they cost.
+  void setFrameBudgetMs(int ms);
+  int frameBudgetMs() const { return frameBudgetMs_; }
+  // Samples per pixel of each frame of the current refinement run.
+  int frameSamples() const;
+  // The cost model fitted to the frames drawn since the shading last changed.
+  FrameCostModel frameCost() const;
   // True from a change of the environment or cube size until its lighting is on screen (or
   // its bake failed).
   bool lightingBusy() const { return lightingInFlight_ || lightingPending_; }
@@ -95,7 +120,8 @@ private:
   // made meanwhile runs next, and the finished stale one is dropped).
   void requestLighting();
   void startLightingBake();
-  void lightingBaked(int id, std::shared_ptr<EnvironmentLighting> lighting, const QString& error);
+  void lightingBaked(int id, std::shared_ptr<EnvironmentLighting> lighting, bool sampled,
+                     const QString& error);
   // Errors of the renderer (VTK's error output while drawing, glGetError after a frame), each
   // distinct message reported once.
   void reportRenderError(const std::string& message);
@@ -103,6 +129,10 @@ private:
   void applyDisplay();
   void applyCameraFromModel();
   void renderNow();
+  // Window render start and end, the surface's draw in between: a frame's cost.
+  void frameEvent(unsigned long event);
+  // The samples per frame of a still run (the frame budget's choice).
+  int planRunSamples() const;
   void beginInteraction();
   void settle();
 
@@ -126,11 +156,25 @@ private:
   bool interacting_ = false;
   bool applyingCamera_ = false;
   bool cameraMoved_ = false;
+  int frameBudgetMs_ = kDefaultFrameBudgetMs;
+  // Frame costs since the shading last changed (window render time of frames that drew the
+  // surface), the samples per frame of the current run, and whether that run was re-planned
+  // after its first frame.
+  std::vector<FrameCostSample> frameCosts_;
+  int runSamples_ = 1;
+  bool runReplanned_ = false;
+  vtkNew<vtkCallbackCommand> frameTiming_;
+  qint64 frameStartNs_ = -1;
+  bool frameDrewSurface_ = false;
+  int frameDrawnSamples_ = 1;
+  // The lighting on screen has its environment-sampling distribution (baked on the worker).
+  bool lightingSampled_ = false;
   QThreadPool* lightingPool_;
   int lightingRequest_ = 0; // sequence number of the latest lighting request
   bool lightingInFlight_ = false;
   bool lightingPending_ = false;   // a request arrived while a bake ran
   bool lightingBusyShown_ = false; // lightingBusyChanged(true) was the last sent
+  QElapsedTimer clock_;
   std::set<std::string> reportedRenderErrors_;
   bool maxTextureSideKnown_ = false;
   vtkSmartPointer<ErrorForwardingWindow> errorOutput_;

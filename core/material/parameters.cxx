@@ -122,7 +122,7 @@ std::vector<ParameterSpec> declare()
       choice("quality-mode", "Quality by", {"samples", "error"}, "samples",
              "what sets a still view's quality: target-samples, or error-target by the error "
              "model of the material's lobe and filtering"),
-      number("error-target", "Error target", T::Real, 0.01, 1e-4, 1.0, 0.001, S::Logarithmic, {},
+      number("error-target", "Error target", T::Real, 0.01, 1e-4, 1.0, 1e-4, S::Logarithmic, {},
              "relative L2 error a still view refines to with quality-mode error (0.01 = 1%); "
              "also 'aniso render --quality'"),
       choice("bump", "Bump mapping", {"none", "normal", "quaternion"}, "none",

@@ -1,0 +1,288 @@
+// How long the UI thread stalls while the real main window draws: a 5 ms timer on the UI thread
+// records the gaps between its ticks while (a) a camera orbit is dragged for 2 s, (b) the n_u
+// slider is dragged, (c) the view refines to its target once still, (d) environment sampling
+// is switched to mis. Prints, per phase, the largest and the 99th-percentile gap, the frames
+// drawn, the samples per pixel accumulated and the samples per pixel and second.
+// Run (X server needed): xvfb-run -a -s "-screen 0 1920x1080x24" bench_ui_latency [WxH]
+//   [--frame-budget MS] (0: one frame per model sample count, the behaviour without the
+//   frame-time budget)
+#include "LutScheduler.h"
+#include "MainWindow.h"
+#include "ParameterControls.h"
+#include "SceneView.h"
+
+#include <QApplication>
+#include <QElapsedTimer>
+#include <QEventLoop>
+#include <QMouseEvent>
+#include <QSlider>
+#include <QSurfaceFormat>
+#include <QTimer>
+#include <QVTKOpenGLNativeWidget.h>
+#include <QtTest>
+#include <algorithm>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <functional>
+#include <string>
+#include <vector>
+#include <vtkCallbackCommand.h>
+#include <vtkCommand.h>
+#include <vtkNew.h>
+#include <vtkOpenGLRenderer.h>
+#include <vtkRenderWindow.h>
+
+namespace
+{
+struct Phase
+{
+  std::string name;
+  std::vector<double> gapsMs;
+  int frames = 0;
+  long long samples = 0; // per pixel, summed over the frames
+  double seconds = 0.0;
+  double rendererMs = 0.0; // summed: the renderer's passes (scene, accumulation, display)
+  double windowMs = 0.0;   // summed: the whole window render (also the copy to the widget)
+};
+
+// Runs the event loop for MS milliseconds (QTest::qWait sleeps between its passes, which would
+// hide the timer's ticks).
+void pump(int ms)
+{
+  QEventLoop loop;
+  QTimer::singleShot(ms, Qt::PreciseTimer, &loop, &QEventLoop::quit);
+  loop.exec();
+}
+
+double percentile(std::vector<double> v, double q)
+{
+  if (v.empty())
+  {
+    return 0.0;
+  }
+  std::sort(v.begin(), v.end());
+  const auto i = static_cast<std::size_t>(q * static_cast<double>(v.size() - 1) + 0.5);
+  return v[std::min(i, v.size() - 1)];
+}
+} // namespace
+
+int main(int argc, char** argv)
+{
+  QSurfaceFormat::setDefaultFormat(QVTKOpenGLNativeWidget::defaultFormat());
+  QApplication app(argc, argv);
+  int width = 0;
+  int height = 0;
+  int budgetMs = -1; // the view's default
+  for (int i = 1; i < argc; ++i)
+  {
+    if (std::strcmp(argv[i], "--frame-budget") == 0 && i + 1 < argc)
+    {
+      budgetMs = std::atoi(argv[++i]);
+    }
+    else if (std::sscanf(argv[i], "%dx%d", &width, &height) != 2)
+    {
+      std::fprintf(stderr, "usage: bench_ui_latency [WxH] [--frame-budget MS]\n");
+      return 2;
+    }
+  }
+
+  aniso::MainWindow window;
+  window.setErrorDialogs(false);
+  if (width > 0)
+  {
+    window.resize(width, height);
+  }
+  window.show();
+  if (!QTest::qWaitForWindowExposed(&window))
+  {
+    std::fprintf(stderr, "bench_ui_latency: the window was not shown\n");
+    return 1;
+  }
+  aniso::SceneView* view = window.view();
+  if (budgetMs >= 0)
+  {
+    view->setFrameBudgetMs(budgetMs);
+  }
+  QTest::qWait(200);
+  // The first image, compiled shaders and baked tables are not what is measured.
+  QElapsedTimer wait;
+  wait.start();
+  while (!(view->converged() && !window.lutScheduler()->busy()) && wait.elapsed() < 120000)
+  {
+    QTest::qWait(50);
+  }
+
+  Phase* current = nullptr;
+  QElapsedTimer clock;
+  clock.start();
+  qint64 last = 0;
+  QTimer tick;
+  tick.setTimerType(Qt::PreciseTimer);
+  tick.setInterval(5);
+  QObject::connect(&tick, &QTimer::timeout,
+                   [&]
+                   {
+                     const qint64 now = clock.nsecsElapsed();
+                     if (current && last)
+                     {
+                       current->gapsMs.push_back(double(now - last) * 1e-6);
+                     }
+                     last = now;
+                   });
+  // Every frame the window draws (the view's progressive frames and the interactor's own),
+  // counted at the renderer's end.
+  int lastSamples = 0;
+  vtkNew<vtkCallbackCommand> frameEnd;
+  std::function<void()> onFrame = [&]
+  {
+    const int samples = view->accumulatedSamples();
+    if (current)
+    {
+      ++current->frames;
+      // A restart of the accumulation counts its first frame whole.
+      current->samples += samples > lastSamples ? samples - lastSamples : samples;
+    }
+    lastSamples = samples;
+  };
+  frameEnd->SetClientData(&onFrame);
+  frameEnd->SetCallback([](vtkObject*, unsigned long, void* f, void*)
+                        { (*static_cast<std::function<void()>*>(f))(); });
+  view->renderer()->AddObserver(vtkCommand::EndEvent, frameEnd);
+  // Where a frame's time goes: the renderer's part and the whole window's.
+  QElapsedTimer rendererClock;
+  QElapsedTimer windowClock;
+  std::function<void(unsigned long, bool)> onTiming = [&](unsigned long event, bool renderer)
+  {
+    QElapsedTimer& c = renderer ? rendererClock : windowClock;
+    if (event == vtkCommand::StartEvent)
+    {
+      c.start();
+    }
+    else if (current && c.isValid())
+    {
+      (renderer ? current->rendererMs : current->windowMs) += double(c.nsecsElapsed()) * 1e-6;
+    }
+  };
+  vtkNew<vtkCallbackCommand> rendererTiming;
+  vtkNew<vtkCallbackCommand> windowTiming;
+  for (vtkCallbackCommand* command : {rendererTiming.Get(), windowTiming.Get()})
+  {
+    command->SetClientData(&onTiming);
+  }
+  rendererTiming->SetCallback(
+      [](vtkObject*, unsigned long event, void* f, void*)
+      { (*static_cast<std::function<void(unsigned long, bool)>*>(f))(event, true); });
+  windowTiming->SetCallback(
+      [](vtkObject*, unsigned long event, void* f, void*)
+      { (*static_cast<std::function<void(unsigned long, bool)>*>(f))(event, false); });
+  view->renderer()->AddObserver(vtkCommand::StartEvent, rendererTiming);
+  view->renderer()->AddObserver(vtkCommand::EndEvent, rendererTiming);
+  vtkRenderWindow* renderWindow = window.vtkWidget()->renderWindow();
+  renderWindow->AddObserver(vtkCommand::StartEvent, windowTiming);
+  renderWindow->AddObserver(vtkCommand::EndEvent, windowTiming);
+  tick.start();
+
+  std::vector<Phase> phases;
+  phases.reserve(4);
+  const auto run = [&](const char* name, const std::function<void()>& body)
+  {
+    phases.push_back(Phase{name, {}, 0, 0, 0.0});
+    current = &phases.back();
+    last = 0;
+    QElapsedTimer t;
+    t.start();
+    body();
+    current->seconds = double(t.nsecsElapsed()) * 1e-9;
+    current = nullptr;
+  };
+  const auto waitConverged = [&](int limitMs)
+  {
+    QElapsedTimer t;
+    t.start();
+    while (!view->converged() && t.elapsed() < limitMs)
+    {
+      pump(5);
+    }
+  };
+
+  // (a) A 2 s orbit: the pointer moves 4 px every 16 ms with the left button down, as a hand
+  // would; events the UI thread could not take in time pile up as they would for a user.
+  QWidget* widget = window.vtkWidget();
+  run("orbit 2 s",
+      [&]
+      {
+        const QPoint start(widget->width() / 3, widget->height() / 2);
+        QApplication::postEvent(widget,
+                                new QMouseEvent(QEvent::MouseButtonPress, start, Qt::LeftButton,
+                                                Qt::LeftButton, Qt::NoModifier));
+        QElapsedTimer t;
+        t.start();
+        int step = 0;
+        while (t.elapsed() < 2000)
+        {
+          ++step;
+          const QPoint p = start + QPoint((4 * step) % (widget->width() / 3), 0);
+          QApplication::postEvent(widget, new QMouseEvent(QEvent::MouseMove, p, Qt::NoButton,
+                                                          Qt::LeftButton, Qt::NoModifier));
+          pump(16);
+        }
+        QApplication::postEvent(widget,
+                                new QMouseEvent(QEvent::MouseButtonRelease, start, Qt::LeftButton,
+                                                Qt::NoButton, Qt::NoModifier));
+        pump(20);
+      });
+  waitConverged(120000);
+
+  // (b) The n_u slider dragged over two decades in 1.5 s (one step every 30 ms).
+  auto* nu = window.findChild<aniso::NumberControl*>("nu");
+  run("n_u drag 1.5 s",
+      [&]
+      {
+        QSlider* slider = nu->slider();
+        const int from = slider->value();
+        slider->setSliderDown(true);
+        for (int i = 0; i < 50; ++i)
+        {
+          slider->setValue(from - 4 * i);
+          pump(30);
+        }
+        slider->setSliderDown(false);
+      });
+
+  // (c) Still: refinement to the target (the LUT bake of the new exponent included).
+  run("refine to target", [&] { waitConverged(120000); });
+
+  // (d) Environment sampling switched on, then refinement with it.
+  run("env-sampling mis",
+      [&]
+      {
+        window.editor()->edit("env-sampling", aniso::textValue("mis"));
+        pump(50);
+        QElapsedTimer t;
+        t.start();
+        while ((view->lightingBusy() || !view->converged()) && t.elapsed() < 120000)
+        {
+          pump(5);
+        }
+      });
+  tick.stop();
+
+  const int* size = window.vtkWidget()->renderWindow()->GetSize();
+  std::printf("view %dx%d, window %dx%d, frame budget %s\n", size[0], size[1], window.width(),
+              window.height(),
+              budgetMs == 0 ? "off" : std::to_string(view->frameBudgetMs()).append(" ms").c_str());
+  std::printf("%-18s %9s %9s %9s %7s %9s %10s %8s %18s %16s\n", "phase", "max ms", "p99 ms",
+              "p50 ms", "frames", "samples", "samples/s", "time s", "renderer ms/frame",
+              "window ms/frame");
+  for (const Phase& p : phases)
+  {
+    const double maxGap =
+        p.gapsMs.empty() ? 0.0 : *std::max_element(p.gapsMs.begin(), p.gapsMs.end());
+    std::printf("%-18s %9.1f %9.1f %9.1f %7d %9lld %10.1f %8.2f %18.1f %16.1f\n", p.name.c_str(),
+                maxGap, percentile(p.gapsMs, 0.99), percentile(p.gapsMs, 0.5), p.frames, p.samples,
+                p.seconds > 0.0 ? double(p.samples) / p.seconds : 0.0, p.seconds,
+                p.frames ? p.rendererMs / p.frames : 0.0, p.frames ? p.windowMs / p.frames : 0.0);
+  }
+  return 0;
+}
