@@ -127,23 +127,44 @@ Measured renderAndTime(RenderSession& session, int runs)
   return m;
 }
 
-// A reference image from per-pixel values computed on all hardware threads.
+// A reference image from per-pixel values computed on all hardware threads: value(pixel,
+// false). With WITHBOUND, value(pixel, true) is a coarser evaluation of the same quantity (half
+// the resolution of its quadrature), and the relative L2 between the two, the coarser one's
+// error estimated as if the finer one were exact, stands as the reference's own error bound.
 ReferenceImage referenceOf(const RenderSession& session, const std::vector<int>& pixels,
-                           const std::function<glm::dvec3(int pixel)>& value)
+                           const std::function<glm::dvec3(int pixel, bool coarse)>& value,
+                           bool withBound)
 {
   const auto start = std::chrono::steady_clock::now();
   ReferenceImage reference;
   reference.width = session.width();
   reference.height = session.height();
   reference.pixels.resize(pixels.size());
+  std::vector<glm::dvec3> coarse(withBound ? pixels.size() : 0);
   parallelFor(int(pixels.size()),
               [&](int i)
               {
                 ReferencePixel& p = reference.pixels[std::size_t(i)];
                 p.x = pixels[std::size_t(i)] % session.width();
                 p.y = pixels[std::size_t(i)] / session.width();
-                p.value = value(pixels[std::size_t(i)]);
+                p.value = value(pixels[std::size_t(i)], false);
+                if (withBound)
+                {
+                  coarse[std::size_t(i)] = value(pixels[std::size_t(i)], true);
+                }
               });
+  if (withBound)
+  {
+    double difference = 0.0;
+    double norm = 0.0;
+    for (std::size_t i = 0; i < coarse.size(); ++i)
+    {
+      const glm::dvec3 d = coarse[i] - reference.pixels[i].value;
+      difference += glm::dot(d, d);
+      norm += glm::dot(reference.pixels[i].value, reference.pixels[i].value);
+    }
+    reference.relativeErrorBound = norm > 0.0 ? std::sqrt(difference / norm) : 0.0;
+  }
   reference.seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return reference;
@@ -248,14 +269,15 @@ public:
       const std::vector<Light> lights = benchLights(count);
       for (LitModel model : kLitModels)
       {
-        const ReferenceImage reference =
-            referenceOf(session, pixels,
-                        [&](int i)
-                        {
-                          const PixelSample& g = geometry[std::size_t(i)];
-                          const Frame frame = svShadingFrame(g.normal, g.tangent, texel);
-                          return shadeLitModel(model, texel, frame, g.position, g.view, lights);
-                        });
+        const ReferenceImage reference = referenceOf(
+            session, pixels,
+            [&](int i, bool)
+            {
+              const PixelSample& g = geometry[std::size_t(i)];
+              const Frame frame = svShadingFrame(g.normal, g.tangent, texel);
+              return shadeLitModel(model, texel, frame, g.position, g.view, lights);
+            },
+            false);
         LitModelSettings lit;
         lit.model = model;
         lit.lights = lights;
@@ -350,35 +372,39 @@ private:
     {
       const double tiles = texelsPerPixel / (texels * pixelWidth);
       // The reference: each pixel's fine-level shading (the base lobe around each fine slope)
-      // averaged over a sub x sub grid of its footprint, at least 4 points per period of the
+      // averaged over a sub x sub grid of its footprint, at least 8 points per period of the
       // relief's finest wave (a tenth of a tile) along the longer footprint axis; every
-      // point's lobe integrated on a 6 x 6 slope grid reading the environment itself.
-      const SlopeGrid fineGrid = makeSlopeGrid(6);
+      // point's lobe integrated on an 8 x 8 slope grid reading the environment itself.
+      const SlopeGrid fineGrid = makeSlopeGrid(8);
+      const SlopeGrid coarseGrid = makeSlopeGrid(4);
       const double longAxis = texelsPerPixel / std::sin(50.0 * kPi / 180.0);
-      const int sub = std::clamp(int(std::ceil(longAxis * 4.0 / (texels / 6.0))), 4, 48);
+      const int sub = std::clamp(int(std::ceil(longAxis * 8.0 / (texels / 6.0))), 8, 96);
       const ReferenceImage reference = referenceOf(
           session, pixels,
-          [&](int i)
+          [&](int i, bool coarse)
           {
             const PlatePixel p = platePixel(geometry, size, i);
             glm::dvec3 sum(0.0);
-            for (int j = 0; j < sub; ++j)
+            const int points = coarse ? std::max(2, sub / 2) : sub;
+            const SlopeGrid& lobeGrid = coarse ? coarseGrid : fineGrid;
+            for (int j = 0; j < points; ++j)
             {
-              for (int k = 0; k < sub; ++k)
+              for (int k = 0; k < points; ++k)
               {
-                const glm::dvec3 at = p.position + ((k + 0.5) / sub - 0.5) * p.stepX +
-                                      ((j + 0.5) / sub - 0.5) * p.stepY;
+                const glm::dvec3 at = p.position + ((k + 0.5) / points - 0.5) * p.stepX +
+                                      ((j + 0.5) / points - 0.5) * p.stepY;
                 const SlopeStatistics fine =
                     slopeStatistics(sampleLeadr(*mips, plateUv(at) * tiles, 0.0),
                                     surface.baseAlphaX, surface.baseAlphaY);
                 sum +=
-                    shadeLeadr(surface, fine, frame, at, p.view, lights, fineGrid) +
-                    leadrEnvironmentSpecular(fine, surface.f0, frame, p.view, *studio_, fineGrid) +
-                    leadrEnvironmentDiffuse(fine, surface.diffuse, frame, sh, fineGrid);
+                    shadeLeadr(surface, fine, frame, at, p.view, lights, lobeGrid) +
+                    leadrEnvironmentSpecular(fine, surface.f0, frame, p.view, *studio_, lobeGrid) +
+                    leadrEnvironmentDiffuse(fine, surface.diffuse, frame, sh, lobeGrid);
               }
             }
-            return sum / double(sub * sub);
-          });
+            return sum / double(points * points);
+          },
+          true);
       double level = 0.0;
       for (int i : pixels)
       {
@@ -388,8 +414,8 @@ private:
       }
       level /= double(pixels.size());
       log_ << "  reference plate LEADR " << texelsPerPixel << " texels per pixel (level " << level
-           << "): " << pixels.size() << " pixels, " << sub << "^2 points each, "
-           << reference.seconds << " s" << std::endl;
+           << "): " << pixels.size() << " pixels, " << sub << "^2 points each, bound "
+           << reference.relativeErrorBound << ", " << reference.seconds << " s" << std::endl;
       for (int n : grids)
       {
         for (bool plain : {false, true})
@@ -425,10 +451,11 @@ private:
                          const BenchRow& base, double pixelWidth)
   {
     const int size = session.width();
-    // A low sun (27 degrees above the plate), below the structures' 39-degree faces, so the
-    // self-shadowing has something to do.
+    // A low sun (27 degrees above the plate) from the side, below the structures' 39-degree
+    // faces, and across the grooves (which run along y), so the self-shadowing has something to
+    // do.
     Light sun;
-    sun.vector = glm::normalize(glm::dvec3(-0.35, 0.8, 0.45));
+    sun.vector = glm::normalize(glm::dvec3(-0.8, 0.35, 0.45));
     sun.intensity = glm::dvec3(2.0);
     Light lamp;
     lamp.type = LightType::Point;
@@ -440,7 +467,7 @@ private:
     const double tiles = 2.77 / pixelWidth;
     const Frame frame;
     const std::vector<int> pixels = selectPixels(geometry, size, size, options_.quick ? 64 : 400);
-    const int referenceK = options_.quick ? 24 : 32;
+    const int referenceK = options_.quick ? 32 : 64;
     const std::vector<MicroPattern> patterns =
         options_.quick
             ? std::vector<MicroPattern>{MicroPattern::Pyramids}
@@ -467,21 +494,25 @@ private:
         shading.f0 = glm::dvec3(0.5);
         MicroShadingOptions converged = shading;
         converged.samplesPerAxis = referenceK;
-        const ReferenceImage reference =
-            referenceOf(session, pixels,
-                        [&](int i)
-                        {
-                          const PlatePixel p = platePixel(geometry, size, i);
-                          PixelFootprint footprint;
-                          footprint.centre = plateUv(p.position) * tiles;
-                          footprint.axisU = glm::dvec2(p.stepX) / 2.0 * tiles;
-                          footprint.axisV = glm::dvec2(p.stepY) / 2.0 * tiles;
-                          return shadeMicroPixel(*structure, converged, footprint, frame,
-                                                 p.position, p.view, lights);
-                        });
+        MicroShadingOptions halfGrid = shading;
+        halfGrid.samplesPerAxis = referenceK / 2;
+        const ReferenceImage reference = referenceOf(
+            session, pixels,
+            [&](int i, bool coarse)
+            {
+              const PlatePixel p = platePixel(geometry, size, i);
+              PixelFootprint footprint;
+              footprint.centre = plateUv(p.position) * tiles;
+              footprint.axisU = glm::dvec2(p.stepX) / 2.0 * tiles;
+              footprint.axisV = glm::dvec2(p.stepY) / 2.0 * tiles;
+              return shadeMicroPixel(*structure, coarse ? halfGrid : converged, footprint, frame,
+                                     p.position, p.view, lights);
+            },
+            true);
         const std::string name = patternName(pattern) + ", " + variant.name;
         log_ << "  reference plate microstructure " << name << ": " << pixels.size()
-             << " pixels, K = " << referenceK << ", " << reference.seconds << " s" << std::endl;
+             << " pixels, K = " << referenceK << ", bound " << reference.relativeErrorBound << ", "
+             << reference.seconds << " s" << std::endl;
         for (bool jittered : {false, true})
         {
           for (int k : {1, 2, 4, 8})
@@ -542,6 +573,7 @@ private:
     session.useMaterial(baselineMaterial());
     record(row, session, reference, 9);
     rows_.back().baselineFrameSeconds = rows_.back().medianFrameSeconds;
+    rows_.back().baselineFrameCpuSeconds = rows_.back().medianFrameCpuSeconds;
     return rows_.back();
   }
 
@@ -562,7 +594,9 @@ private:
   {
     session.useMaterial(baselineMaterial());
     session.render(1);
-    row.baselineFrameSeconds = medianFrameTime(session.renderMore(3)).wall;
+    const FrameTime baseline = medianFrameTime(session.renderMore(3));
+    row.baselineFrameSeconds = baseline.wall;
+    row.baselineFrameCpuSeconds = baseline.cpu;
     session.useInstalled(installer);
     record(row, session, reference, runs);
   }

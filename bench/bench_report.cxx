@@ -86,6 +86,13 @@ double baselineRatio(const BenchRow& r)
   return r.baselineFrameSeconds > 0.0 ? r.medianFrameSeconds / r.baselineFrameSeconds : 0.0;
 }
 
+// The same with the process CPU time of both frames.
+double baselineCpuRatio(const BenchRow& r)
+{
+  return r.baselineFrameCpuSeconds > 0.0 ? r.medianFrameCpuSeconds / r.baselineFrameCpuSeconds
+                                         : 0.0;
+}
+
 // Time to the image a row measures: one frame, or the frames accumulated so far.
 double timeOf(const BenchRow& r)
 {
@@ -467,10 +474,13 @@ void sweepTables(std::ostream& md, const std::vector<BenchRow>& rows,
 
 std::string ratioText(const BenchRow& r)
 {
-  return r.baselineFrameSeconds > 0.0 ? number(baselineRatio(r), 3) + "x" : std::string("-");
+  return r.baselineFrameSeconds > 0.0
+             ? number(baselineRatio(r), 3) + "x; CPU " + number(baselineCpuRatio(r), 3) + "x"
+             : std::string("-");
 }
 
-// "12.3 ms (0.41x)": a frame and its ratio to the environment frame on the same scene.
+// "12.3 ms (0.41x; CPU 0.38x)": a frame and its ratios to the environment frame timed next to
+// it, by wall time and by process CPU time.
 std::string frameText(const BenchRow& r)
 {
   return milliseconds(r.medianFrameSeconds) + " (" + ratioText(r) + ")";
@@ -613,7 +623,8 @@ std::string modelsMarkdown(const BenchResult& result, const std::string& plotFil
         "(Ashikhmin-Shirley " +
             lobeText(AsLobe{1000.0, 100.0}) +
             ", exact, filtered, LUT, 16 samples, built-in studio, the median of 3 frames) in the "
-            "same session; every frame time below is followed by its ratio to that neighbour, "
+            "same session; every frame time below is followed by its ratios to that neighbour "
+            "(wall time, then process CPU time, which counts the driver's render threads), "
             "which a changing load moves far less than the times themselves. The table gives "
             "each scene's environment frame timed alone (9 frames). Times are medians of 2 to 5 "
             "frames "
@@ -661,9 +672,11 @@ std::string modelsMarkdown(const BenchResult& result, const std::string& plotFil
           "one directional light 25 degrees off the mirror direction. Distance is set by the "
           "relief's texels per pixel (the level is the mean mip level LEADR reads). The "
           "reference averages the fine-level shading over a grid of points in each pixel's "
-          "footprint (at least 4 per period of the finest wave), each point's lobe integrated "
-          "on a 6 x 6 slope grid reading the environment itself. Normal mapping is the same "
-          "shader given only the filtered mean slope.\n\n"
+          "footprint (at least 8 per period of the finest wave), each point's lobe integrated "
+          "on an 8 x 8 slope grid reading the environment itself; its own error bound (in "
+          "bench.csv) is its distance to the same average with half the points per axis and "
+          "a 4 x 4 grid. Normal mapping is the same shader given only the filtered mean "
+          "slope.\n\n"
           "| Distance | Level | n | LEADR L2 | LEADR p99 | LEADR frame (/ env) | Normal map L2 "
           "| Normal map p99 | Normal map frame (/ env) |\n"
           "| --- | --- | --- | --- | --- | --- | --- | --- | --- |\n";
@@ -695,8 +708,9 @@ std::string modelsMarkdown(const BenchResult& result, const std::string& plotFil
        << ", 2.77 structure tiles across a pixel (structures of 64² texels, depth 0.4 tile: "
           "faces at 39 degrees), GGX alpha 0.2, F0 0.5, a directional light 27 degrees above "
           "the plate (low enough for self-shadowing) and a point light. The reference is the "
-          "core's shadeMicroPixel with a full 32 x 32 grid (24 x 24 in the quick set) on the "
-          "same footprints; the full grid samples cell centres, the jittered one a random "
+          "core's shadeMicroPixel with a full 64 x 64 grid (32 x 32 in the quick set) on the "
+          "same footprints, its own error bound (in bench.csv) its distance to the half grid; "
+          "the full grid samples cell centres, the jittered one a random "
           "point per cell (per-pixel seeds).\n\n"
           "| Structure, masking | K | Full L2 | Full p99 | Full frame (/ env) | Jittered L2 | "
           "Jittered p99 | Jittered frame (/ env) |\n"
@@ -796,7 +810,7 @@ std::string benchCsv(const BenchResult& result)
   csv << "kind,mesh,environment,nu,nv,method,filtered,half_vectors,samples,frames,width,height,"
          "covered_pixels,runs,median_frame_ms,first_frame_ms,total_ms,median_frame_cpu_ms,"
          "total_cpu_ms,samples_per_second,relative_l2,p99_error,reference_bound,"
-         "compared_pixels,model,variant,lights,grid,mip_level,baseline_ratio\n";
+         "compared_pixels,model,variant,lights,grid,mip_level,baseline_ratio,baseline_cpu_ratio\n";
   for (const BenchRow& r : result.rows)
   {
     csv << r.kind << "," << csvField(r.mesh) << "," << csvField(r.environment) << ","
@@ -809,7 +823,7 @@ std::string benchCsv(const BenchResult& result)
         << number(r.relativeL2, 6) << "," << number(r.percentile99, 6) << ","
         << number(r.referenceBound, 6) << "," << r.comparedPixels << "," << r.model << ","
         << csvField(r.variant) << "," << r.lights << "," << r.grid << "," << number(r.mipLevel, 4)
-        << "," << number(baselineRatio(r), 6) << "\n";
+        << "," << number(baselineRatio(r), 6) << "," << number(baselineCpuRatio(r), 6) << "\n";
   }
   return csv.str();
 }

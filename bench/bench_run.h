@@ -72,6 +72,7 @@ struct BenchRow
   // The environment frame (exact, filtered, LUT, 16 samples) on the same scene in the same
   // run; the models' frame times are reported as ratios to it.
   double baselineFrameSeconds = 0.0;
+  double baselineFrameCpuSeconds = 0.0; // its process CPU time
 };
 
 // One step of the counter check: what changed and what the session counted meanwhile.
