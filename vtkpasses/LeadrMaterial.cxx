@@ -313,18 +313,6 @@ double leadrLevelOfFootprint(const LeadrMips& mips, double tiles, const glm::dve
 class LeadrShadingMaterial::Textures
 {
 public:
-  // A material replaced in a live window gives its textures and their units back.
-  ~Textures()
-  {
-    for (vtkTextureObject* texture : {moments.Get(), momentXY.Get()})
-    {
-      if (texture && window)
-      {
-        texture->ReleaseGraphicsResources(window);
-      }
-    }
-  }
-
   vtkWeakPointer<vtkOpenGLRenderWindow> window;
   vtkSmartPointer<vtkTextureObject> moments;
   vtkSmartPointer<vtkTextureObject> momentXY;

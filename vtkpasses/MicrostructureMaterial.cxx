@@ -63,18 +63,6 @@ std::uint32_t microPixelSeed(int x, int yFromBottom, std::uint32_t frameSeed)
 class MicrostructureShadingMaterial::Textures
 {
 public:
-  // A material replaced in a live window gives its textures and their units back.
-  ~Textures()
-  {
-    for (vtkTextureObject* texture : {height.Get(), normal.Get(), albedo.Get(), tpr.Get()})
-    {
-      if (texture && window)
-      {
-        texture->ReleaseGraphicsResources(window);
-      }
-    }
-  }
-
   vtkWeakPointer<vtkOpenGLRenderWindow> window;
   vtkSmartPointer<vtkTextureObject> height;
   vtkSmartPointer<vtkTextureObject> normal;

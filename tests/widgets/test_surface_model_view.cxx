@@ -180,13 +180,6 @@ private slots:
       }
       QVERIFY(difference <= 1e-3 * total);
     }
-    // Every change makes a new material: the old ones give their textures back, so many changes
-    // draw without running out of texture units (the view would report VTK's errors).
-    for (int i = 0; i < 40; ++i)
-    {
-      window.editor()->edit("micro-roughness", numberValue(0.1 + 0.01 * i));
-      window.vtkWidget()->renderWindow()->Render();
-    }
     QCOMPARE(errors.count(), 0);
 
     window.editor()->edit("model", textValue("as-env"));
