@@ -2,6 +2,7 @@
 
 #include "LeadrMaterial.h"
 #include "MicrostructureMaterial.h"
+#include "error.h"
 #include "leadr/leadr.h"
 #include "maps/map_files.h"
 #include "materials/texture_sampling.h"
@@ -63,13 +64,21 @@ void refuse(const Arguments& a, const char* const* begin, const char* const* end
 
 MicroPattern patternFromName(const std::string& name)
 {
+  if (name == "pyramids")
+    return MicroPattern::Pyramids;
   if (name == "inverted-pyramids")
     return MicroPattern::InvertedPyramids;
   if (name == "grooves")
     return MicroPattern::Grooves;
   if (name == "silk")
     return MicroPattern::Silk;
-  return MicroPattern::Pyramids;
+  throw errorAbout("structure", "unknown structure '" + name + "'");
+}
+
+// The option of declared parameter KEY: "--" + KEY but for the grid, --grid on the command line.
+std::string optionOf(std::string_view key)
+{
+  return key == "micro-grid" ? std::string("--grid") : "--" + std::string(key);
 }
 
 std::shared_ptr<const LeadrMips> leadrMoments(const Arguments& a)
@@ -134,6 +143,41 @@ Image builtinLeadrRelief()
   return height;
 }
 
+LeadrSettings leadrSettingsOf(const DeclaredValues& values)
+{
+  const auto real = [&values](std::string_view key) { return values(key).number[0]; };
+  LeadrSettings leadr;
+  leadr.surface.baseAlphaX = leadr.surface.baseAlphaY = real("leadr-roughness");
+  leadr.tiles = real("leadr-tiles");
+  leadr.gridN = int(real("leadr-grid"));
+  leadr.plainNormals = values("leadr-filter").text == "normal-mapping";
+  leadr.environment = true;
+  return leadr;
+}
+
+MicrostructureSettings microstructureSettingsOf(const DeclaredValues& values)
+{
+  const auto real = [&values](std::string_view key) { return values(key).number[0]; };
+  const auto text = [&values](std::string_view key) -> const std::string&
+  { return values(key).text; };
+  MicrostructureSettings micro;
+  micro.structure = std::make_shared<const Microstructure>(
+      makeMicrostructure(patternFromName(text("structure")), 64, real("structure-depth")));
+  MicroShadingOptions& o = micro.options;
+  o.samplesPerAxis = int(real("micro-grid"));
+  o.jittered = text("jitter-grid") == "on";
+  const std::string& masking = text("masking");
+  o.masking = masking == "normal"     ? MicroMasking::Normal
+              : masking == "parallax" ? MicroMasking::Parallax
+                                      : MicroMasking::ParallaxOcclusion;
+  o.selfShadowing = text("self-shadow") == "on";
+  o.brdf = text("micro-brdf") == "blinn-phong" ? MicroBrdf::BlinnPhong : MicroBrdf::GgxSmithSchlick;
+  o.roughness = real("micro-roughness");
+  o.blinnExponent = real("blinn-exponent");
+  micro.tiles = real("structure-tiles");
+  return micro;
+}
+
 void addSurfaceModelOptions(Command& c)
 {
   c.options.push_back(declaredOption("leadr-scale", "--leadr-scale", "S",
@@ -169,40 +213,22 @@ bool applySurfaceModelOptions(const Arguments& a, RenderSettings& settings)
   {
     refuse(a, std::begin(kMicroOptions), std::end(kMicroOptions), "microstructure");
   }
+  const DeclaredValues values = [&a](std::string_view key) -> const ParameterValue&
+  { return a.value(optionOf(key)); };
   if (model == "leadr")
   {
-    LeadrSettings leadr;
+    LeadrSettings leadr = leadrSettingsOf(values);
     leadr.moments = leadrMoments(a);
     leadr.surface.f0 = settings.material.f0;
     leadr.surface.diffuse = settings.material.albedo;
-    leadr.surface.baseAlphaX = leadr.surface.baseAlphaY = a.real("--leadr-roughness");
-    leadr.tiles = a.real("--leadr-tiles");
-    leadr.gridN = a.integer("--leadr-grid");
-    leadr.plainNormals = a.text("--leadr-filter") == "normal-mapping";
-    leadr.environment = true;
     leadr.lights = lightsFromOptions(a);
     settings.installMaterial = LeadrShadingMaterial::installer(leadr);
     return true;
   }
   if (model == "microstructure")
   {
-    MicrostructureSettings micro;
-    micro.structure = std::make_shared<const Microstructure>(makeMicrostructure(
-        patternFromName(a.text("--structure")), 64, a.real("--structure-depth")));
-    MicroShadingOptions& o = micro.options;
-    o.samplesPerAxis = a.integer("--grid");
-    o.jittered = a.text("--jitter-grid") == "on";
-    const std::string masking = a.text("--masking");
-    o.masking = masking == "normal"     ? MicroMasking::Normal
-                : masking == "parallax" ? MicroMasking::Parallax
-                                        : MicroMasking::ParallaxOcclusion;
-    o.selfShadowing = a.text("--self-shadow") == "on";
-    o.brdf = a.text("--micro-brdf") == "blinn-phong" ? MicroBrdf::BlinnPhong
-                                                     : MicroBrdf::GgxSmithSchlick;
-    o.roughness = a.real("--micro-roughness");
-    o.blinnExponent = a.real("--blinn-exponent");
-    o.f0 = settings.material.f0;
-    micro.tiles = a.real("--structure-tiles");
+    MicrostructureSettings micro = microstructureSettingsOf(values);
+    micro.options.f0 = settings.material.f0;
     micro.lights = lightsFromOptions(a);
     if (a.has("--tpr"))
     {

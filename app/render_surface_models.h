@@ -2,9 +2,14 @@
 // The options of `aniso render` for the LEADR and microstructure models (--model leadr,
 // --model microstructure): the relief LEADR filters (--height-map, --normal-map or a built-in
 // one) and the structure, grid, masking, shadowing and BRDF of the microstructure sampling.
+#include "LeadrMaterial.h"
+#include "MicrostructureMaterial.h"
 #include "OffscreenRenderer.h"
 #include "cli.h"
 #include "image/image.h"
+
+#include <functional>
+#include <string_view>
 
 namespace aniso::cli
 {
@@ -15,6 +20,18 @@ void addSurfaceModelOptions(Command& command);
 // lights (render_models.h) and returns true; false for any other model, after checking that
 // none of these options was given (UsageError otherwise).
 bool applySurfaceModelOptions(const Arguments& arguments, RenderSettings& settings);
+
+// The value of a declared parameter (core/material/parameters.cxx) by its key: an option of the
+// command line or a scene key of the window, which share those declarations.
+using DeclaredValues = std::function<const ParameterValue&(std::string_view key)>;
+
+// LEADR's settings from the declared leadr-* parameters: tiles, slope grid, base roughness,
+// filter; the environment on. The moments, surface colours and lights are the caller's.
+LeadrSettings leadrSettingsOf(const DeclaredValues& values);
+// The microstructure's structure, options and tiles from the declared parameters (structure,
+// micro-grid, masking, ...); lights, F0 and the TPR map are the caller's. Throws aniso::Error
+// "structure: reason" for an unknown structure.
+MicrostructureSettings microstructureSettingsOf(const DeclaredValues& values);
 
 // The built-in relief of --model leadr without a map: 64 x 64 heights of 96 random-phase waves
 // (integer frequencies up to 6 per tile, slopes of about 0.3 deviation per axis), tiling.

@@ -12,7 +12,6 @@
 #include "render_surface_models.h"
 
 #include <algorithm>
-#include <map>
 #include <vtkActor.h>
 #include <vtkOpenGLPolyDataMapper.h>
 #include <vtkOpenGLRenderer.h>
@@ -49,59 +48,27 @@ std::shared_ptr<const LeadrMips> leadrMoments(double scale)
   return cached;
 }
 
-MicroPattern patternOf(const std::string& name)
-{
-  static const std::map<std::string, MicroPattern> patterns = {
-      {"pyramids", MicroPattern::Pyramids},
-      {"inverted-pyramids", MicroPattern::InvertedPyramids},
-      {"grooves", MicroPattern::Grooves},
-      {"silk", MicroPattern::Silk}};
-  const auto found = patterns.find(name);
-  if (found == patterns.end())
-  {
-    throw errorAbout("structure", "unknown structure '" + name + "'");
-  }
-  return found->second;
-}
 } // namespace
 
 MaterialInstaller surfaceModelInstallerOf(const SceneModel& model, SceneAssets& assets)
 {
   const std::string& name = model.text("model");
+  const cli::DeclaredValues values = [&model](std::string_view key) -> const ParameterValue&
+  { return model.value(key); };
   if (name == "leadr")
   {
     // As `aniso render --model leadr` without a map: the built-in relief.
-    LeadrSettings leadr;
+    LeadrSettings leadr = cli::leadrSettingsOf(values);
     leadr.moments = leadrMoments(model.real("leadr-scale"));
     leadr.surface.f0 = colourOf(model, "f0");
     leadr.surface.diffuse = colourOf(model, "albedo");
-    leadr.surface.baseAlphaX = leadr.surface.baseAlphaY = model.real("leadr-roughness");
-    leadr.tiles = model.real("leadr-tiles");
-    leadr.gridN = static_cast<int>(model.integer("leadr-grid"));
-    leadr.plainNormals = model.text("leadr-filter") == "normal-mapping";
-    leadr.environment = true;
     leadr.lights = parseLightList(model.text("lights"), "lights");
     return LeadrShadingMaterial::installer(leadr);
   }
   if (name == "microstructure")
   {
-    MicrostructureSettings micro;
-    micro.structure = std::make_shared<const Microstructure>(
-        makeMicrostructure(patternOf(model.text("structure")), 64, model.real("structure-depth")));
-    MicroShadingOptions& o = micro.options;
-    o.samplesPerAxis = static_cast<int>(model.integer("micro-grid"));
-    o.jittered = model.text("jitter-grid") == "on";
-    const std::string& masking = model.text("masking");
-    o.masking = masking == "normal"     ? MicroMasking::Normal
-                : masking == "parallax" ? MicroMasking::Parallax
-                                        : MicroMasking::ParallaxOcclusion;
-    o.selfShadowing = model.text("self-shadow") == "on";
-    o.brdf = model.text("micro-brdf") == "blinn-phong" ? MicroBrdf::BlinnPhong
-                                                       : MicroBrdf::GgxSmithSchlick;
-    o.roughness = model.real("micro-roughness");
-    o.blinnExponent = model.real("blinn-exponent");
-    o.f0 = colourOf(model, "f0");
-    micro.tiles = model.real("structure-tiles");
+    MicrostructureSettings micro = cli::microstructureSettingsOf(values);
+    micro.options.f0 = colourOf(model, "f0");
     micro.lights = parseLightList(model.text("lights"), "lights");
     micro.tprMap = assets.map("tpr", model.text("tpr"));
     return MicrostructureShadingMaterial::installer(micro);
