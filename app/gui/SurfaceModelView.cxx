@@ -22,7 +22,7 @@ namespace aniso
 namespace
 {
 // Keys that change the picture of a surface model besides its declared ones.
-bool isSceneKey(const QString& key)
+bool changesTheSurface(const QString& key)
 {
   return key == "model" || key == "lights" || key == "f0" || key == "albedo" || key == "mesh" ||
          key == "tangents" || key == "tpr";
@@ -47,7 +47,6 @@ std::shared_ptr<const LeadrMips> leadrMoments(double scale)
   }
   return cached;
 }
-
 } // namespace
 
 MaterialInstaller surfaceModelInstallerOf(const SceneModel& model, SceneAssets& assets)
@@ -123,7 +122,7 @@ void SurfaceModelView::keyChanged(const QString& key)
 {
   const std::string name = key.toStdString();
   const std::vector<std::string_view> keys = surfaceModelKeys(model_->text("model"));
-  if (isSceneKey(key) || std::find(keys.begin(), keys.end(), name) != keys.end())
+  if (changesTheSurface(key) || std::find(keys.begin(), keys.end(), name) != keys.end())
   {
     update();
   }
