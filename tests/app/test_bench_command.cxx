@@ -15,8 +15,10 @@
 //   - The flange part against its analytic volume (closed, outward-facing surface).
 //   - The plot's raster and SVG outputs against each other and the series' colour.
 #include "MeshValidation.h"
+#include "bench_run.h"
 #include "bench_scenes.h"
 #include "cli_runner.h"
+#include "error.h"
 #include "flange_mesh.h"
 #include "image/image.h"
 #include "pixel_geometry.h"
@@ -296,6 +298,26 @@ TEST_F(BenchCommand, QuickRunIsCompleteAndConsistent)
   EXPECT_NE(md.find("### Other shading models"), std::string::npos);
   const std::string modelsSvg = slurp(path("out") / "bench_models.svg");
   EXPECT_EQ(modelsSvg.rfind("<svg", 0), 0u);
+}
+
+// `--models` takes a comma-separated subset of the families in any order and refuses an
+// unknown, repeated or missing name, naming the option.
+TEST(BenchFamilies, ParsesTheListAndRefusesUnknownOrRepeatedNames)
+{
+  EXPECT_EQ(parseBenchFamilies("micro,lit"), (std::vector<std::string>{"micro", "lit"}));
+  EXPECT_EQ(parseBenchFamilies("as-env,lit,leadr,micro"), benchFamilies());
+  for (const char* bad : {"lit,gpu", "lit,lit", "", "lit,,micro"})
+  {
+    try
+    {
+      parseBenchFamilies(bad);
+      ADD_FAILURE() << "accepted '" << bad << "'";
+    }
+    catch (const Error& e)
+    {
+      EXPECT_EQ(std::string(e.what()).rfind("--models: ", 0), 0u) << e.what();
+    }
+  }
 }
 
 // The rays through the pixels of a perspective camera hit the faceted built-in sphere where
