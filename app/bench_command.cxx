@@ -34,8 +34,10 @@ Command benchCommand()
       "distance, the microstructure over its K x K grid against its converged CPU evaluation, "
       "each timed also as a ratio to the environment frame on the same scene. Needs an X "
       "display; where there is none, run it under xvfb-run.";
-  c.options.push_back(flag("--quick", "the small set (the sphere under the studio at 128x128, "
-                                      "19 configurations per material): about a minute"));
+  c.options.push_back(flag("--quick",
+                           "the small set (the sphere under the studio at 128x128, 19 "
+                           "configurations per material; each other model once or a few times "
+                           "at 128x128 or 64x64): about a minute"));
   c.options.push_back(textOption(
       "--models", "LIST",
       "the families to run, comma-separated: as-env (the environment Ashikhmin-Shirley set, "
@@ -44,8 +46,9 @@ Command benchCommand()
       "--out", "DIR", "where bench.csv, bench.md, bench.svg and bench.png go", "bench-out"));
   c.options.push_back(textOption(
       "--size", "N",
-      "image side in pixels of the scene set (default 128 with --quick, else 256); the goal "
-      "scenes keep their sizes (512x512, and the default scene at 800x600)"));
+      "image side in pixels of the scene set and the lit models (default 128 with --quick, else "
+      "256; LEADR and the microstructure draw the plate at half of it); the goal scenes keep "
+      "their sizes (512x512, and the default scene at 800x600)"));
   c.options.push_back(
       textOption("--cache", "DIR", "reference images cache (default $XDG_CACHE_HOME/aniso/bench)"));
   c.details = "Output: bench.csv (one row per measurement, its model in the model column), "
