@@ -153,7 +153,7 @@ private slots:
       aniso::cli::applyModelOptions(arguments, settings);
       const aniso::RenderResult offscreen = aniso::renderOffscreen(settings);
       const Comparison c = compareWithWindow(rw, offscreen.display);
-      std::printf("%s: window against the offscreen render, mean difference %.4f over %dx%d, "
+      std::printf("%s: window against the offscreen render, mean difference %.2e over %dx%d, "
                   "%.0f%% of the window lit\n",
                   model.c_str(), c.meanDifference, size[0], size[1], 100.0 * c.covered);
       // The sphere fills a good part of the view, so the comparison covers the model's shading.
