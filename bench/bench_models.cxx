@@ -436,7 +436,8 @@ private:
           row.kind = "leadr";
           row.model = plain ? "normal-map" : "leadr";
           row.method = row.model;
-          row.variant = std::to_string(int(texelsPerPixel)) + " texels per pixel";
+          row.variant = std::to_string(int(texelsPerPixel)) +
+                        (texelsPerPixel == 1.0 ? " texel per pixel" : " texels per pixel");
           row.lights = 1;
           row.grid = n;
           row.samples = n * n;

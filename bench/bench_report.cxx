@@ -659,8 +659,9 @@ std::string modelsMarkdown(const BenchResult& result, const std::string& plotFil
   if (find(rows, [](const BenchRow& r) { return r.kind == "lit"; }))
   {
     md << "\n#### Lit models under point and directional lights\n\n"
-          "Brushed metal (a uniform sample material: alpha 0.05 along the parallels, 0.35 "
-          "across, k_s 0.9) under the first 1, 2 or 4 of: dir:-1,-2,1.5, point:1.5,-2,1.5, "
+          "Brushed metal (a uniform sample material: alpha 0.05 along the tangent, i.e. the "
+          "parallels of the sphere and the circles around Z of the flange, 0.35 across, k_s "
+          "0.9) under the first 1, 2 or 4 of: dir:-1,-2,1.5, point:1.5,-2,1.5, "
           "dir:1.5,-1,0.4, point:-1.5,-1,2.5. Error against the core's CPU evaluation of the "
           "same model and lights (shadeLitModel) at every covered pixel away from the "
           "silhouette and the flange's creases (a pixel is compared when its 3x3 neighbours "
