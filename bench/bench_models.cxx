@@ -172,7 +172,7 @@ ReferenceImage referenceOf(const RenderSession& session, const std::vector<int>&
 
 // A 64 x 64 tiling height map of 96 random-phase waves (integer frequencies up to 6 per tile,
 // amplitudes falling as 1 / frequency) scaled to a slope deviation of 0.3 per axis: close to
-// the Gaussian slopes LEADR assumes, with detail at every scale up to a tenth of a tile.
+// the Gaussian slopes LEADR assumes, with detail at every scale down to a sixth of a tile.
 LeadrMips bumpyMoments()
 {
   constexpr int size = 64;
@@ -373,7 +373,7 @@ private:
       const double tiles = texelsPerPixel / (texels * pixelWidth);
       // The reference: each pixel's fine-level shading (the base lobe around each fine slope)
       // averaged over a sub x sub grid of its footprint, at least 8 points per period of the
-      // relief's finest wave (a tenth of a tile) along the longer footprint axis; every
+      // relief's finest wave (a sixth of a tile) along the longer footprint axis; every
       // point's lobe integrated on an 8 x 8 slope grid reading the environment itself.
       const SlopeGrid fineGrid = makeSlopeGrid(8);
       const SlopeGrid coarseGrid = makeSlopeGrid(4);
