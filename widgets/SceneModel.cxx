@@ -38,8 +38,9 @@ std::vector<SceneKey> makeKeys()
   }
   // Assets are paths (or the names of built-in ones), not tunable values, so the declaration of
   // tunable parameters does not hold them.
-  keys.push_back(asset("mesh", "Mesh", "builtin:torus",
-                       "the mesh: a file path or builtin:sphere, builtin:torus, builtin:plate, builtin:disk"));
+  keys.push_back(
+      asset("mesh", "Mesh", "builtin:torus",
+            "the mesh: a file path or builtin:sphere, builtin:torus, builtin:plate, builtin:disk"));
   keys.push_back(asset("normal-map", "Normal map", {}, "tangent-space normal map"));
   keys.push_back(asset("quaternion-map", "Quaternion map", {},
                        "quaternion map (a, b, c); baked from the normal map when absent"));
