@@ -9,9 +9,9 @@
 #include "env/parallel.h"
 #include "error.h"
 #include "leadr/leadr.h"
+#include "materials/height_field.h"
 #include "materials/models.h"
 #include "materials/samples.h"
-#include "materials/texture_sampling.h"
 #include "microstructure/microstructure.h"
 #include "reference_image.h"
 #include "render_session.h"
@@ -170,48 +170,12 @@ ReferenceImage referenceOf(const RenderSession& session, const std::vector<int>&
   return reference;
 }
 
-// A 64 x 64 tiling height map of 96 random-phase waves (integer frequencies up to 6 per tile,
-// amplitudes falling as 1 / frequency) scaled to a slope deviation of 0.3 per axis: close to
-// the Gaussian slopes LEADR assumes, with detail at every scale down to a sixth of a tile.
+// A 64 x 64 tiling relief of 96 random-phase waves (up to 6 per tile) with a slope deviation of
+// 0.3 per axis: close to the Gaussian slopes LEADR assumes, with detail at every scale down to
+// a sixth of a tile.
 LeadrMips bumpyMoments()
 {
-  constexpr int size = 64;
-  struct Wave
-  {
-    double fx, fy, amplitude, phase;
-  };
-  std::vector<Wave> relief;
-  double slopeVariance = 0.0; // of dh/du and dh/dv together, per unit amplitude
-  for (std::uint32_t k = 0; relief.size() < 96; ++k)
-  {
-    const double fx = std::floor(hashedUniform(7, k, 0) * 13.0) - 6.0;
-    const double fy = std::floor(hashedUniform(7, k, 1) * 13.0) - 6.0;
-    const double f = std::hypot(fx, fy);
-    if (f < 1.0)
-    {
-      continue;
-    }
-    relief.push_back({fx, fy, 1.0 / f, 2.0 * kPi * hashedUniform(7, k, 2)});
-    // A wave of amplitude 1 / f and frequency f has slopes of amplitude 2 pi.
-    slopeVariance += 0.5 * std::pow(2.0 * kPi, 2.0);
-  }
-  const double scale = 0.3 * std::sqrt(2.0 / slopeVariance);
-  Image height(size, size, 1);
-  for (int y = 0; y < size; ++y)
-  {
-    for (int x = 0; x < size; ++x)
-    {
-      const double u = (x + 0.5) / size;
-      const double v = 1.0 - (y + 0.5) / size;
-      double h = 0.0;
-      for (const Wave& w : relief)
-      {
-        h += w.amplitude * std::sin(2.0 * kPi * (w.fx * u + w.fy * v) + w.phase);
-      }
-      height.at(x, y, 0) = float(scale * h);
-    }
-  }
-  return bakeLeadrFromHeight(height, 1.0);
+  return bakeLeadrFromHeight(randomWaveHeight(64, 0.3), 1.0);
 }
 
 struct MicroVariant

@@ -1,6 +1,7 @@
 #include "materials/height_field.h"
 
 #include "error.h"
+#include "materials/texture_sampling.h"
 
 #include <algorithm>
 #include <cmath>
@@ -64,5 +65,45 @@ glm::dvec2 slopeOfNormal(const glm::dvec3& n)
 glm::dvec3 normalOfSlope(const glm::dvec2& slope)
 {
   return glm::normalize(glm::dvec3(-slope.x, -slope.y, 1.0));
+}
+Image randomWaveHeight(int size, double slopeDeviation, int waves, int maxFrequency,
+                       std::uint32_t seed)
+{
+  if (size < 4 || waves < 1 || maxFrequency < 1)
+    throw errorAbout("wave relief", "needs a size of at least 4, one wave and a frequency");
+  if (!std::isfinite(slopeDeviation) || slopeDeviation < 0.0)
+    throw errorAbout("wave relief", "the slope deviation must be finite and >= 0");
+  constexpr double kTwoPi = 6.283185307179586;
+  struct Wave
+  {
+    double fx, fy, amplitude, phase;
+  };
+  std::vector<Wave> relief;
+  const int choices = 2 * maxFrequency + 1;
+  for (std::uint32_t k = 0; relief.size() < std::size_t(waves); ++k)
+  {
+    const double fx = std::floor(hashedUniform(seed, k, 0) * choices) - maxFrequency;
+    const double fy = std::floor(hashedUniform(seed, k, 1) * choices) - maxFrequency;
+    const double f = std::hypot(fx, fy);
+    if (f >= 1.0)
+      relief.push_back({fx, fy, 1.0 / f, kTwoPi * hashedUniform(seed, k, 2)});
+  }
+  // A wave of amplitude 1 / f has a gradient of length 2 pi and mean square (2 pi)^2 / 2, half
+  // of it on each axis on average over directions.
+  const double scale = slopeDeviation / std::sqrt(waves * kTwoPi * kTwoPi / 4.0);
+  Image height(size, size, 1);
+  for (int y = 0; y < size; ++y)
+  {
+    for (int x = 0; x < size; ++x)
+    {
+      const double u = (x + 0.5) / size;
+      const double v = 1.0 - (y + 0.5) / size;
+      double h = 0.0;
+      for (const Wave& w : relief)
+        h += w.amplitude * std::sin(kTwoPi * (w.fx * u + w.fy * v) + w.phase);
+      height.at(x, y, 0) = float(scale * h);
+    }
+  }
+  return height;
 }
 } // namespace aniso

@@ -5,6 +5,7 @@
 // normal of a slope (x, y) is normalize(-x, -y, 1), so slope = (-n.x / n.z, -n.y / n.z).
 #include "image/image.h"
 
+#include <cstdint>
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
@@ -23,4 +24,14 @@ Image normalsFromSlopes(const Image& slopes);
 // large finite slopes rather than infinities.
 glm::dvec2 slopeOfNormal(const glm::dvec3& n);
 glm::dvec3 normalOfSlope(const glm::dvec2& slope);
+
+// A size x size tiling height map (texture units) of `waves` random-phase plane waves with
+// integer frequencies of up to maxFrequency per tile along each axis (the zero wave left out),
+// amplitudes 1 / frequency so that each wave adds the same slope variance, scaled so that each
+// slope axis has deviation slopeDeviation: a sum of many independent waves, so its slopes are
+// close to Gaussian (the relief LEADR assumes). The same map for the same seed on every machine.
+// Throws aniso::Error "wave relief: reason" unless size >= 4, waves >= 1, maxFrequency >= 1 and
+// slopeDeviation is finite and >= 0.
+Image randomWaveHeight(int size, double slopeDeviation, int waves = 96, int maxFrequency = 6,
+                       std::uint32_t seed = 7);
 } // namespace aniso
