@@ -5,11 +5,12 @@
 // 1. Source: the fragment code the material compiles for the baseline and for each feature,
 //    after the preprocessor (the variants are #defines): its size, and whether each feature's
 //    identifiers (uniforms, functions) are in it. The baseline must hold none of them.
-// 2. Frame time: every configuration is drawn in each of R rounds, one after the other, so a
-//    change of the machine's load reaches all of them alike; each round gives a ratio to the
-//    baseline of the same round, and the table prints the median ratio over the rounds (and the
-//    spread). "Parameters set, feature off" rows set what a feature reads while the feature stays
-//    off: their ratio is the noise floor, and should equal the baseline drawn again.
+// 2. Frame time: in each of R rounds every configuration is drawn right after the baseline (on
+//    the same mesh), F frames each, the fastest after the first kept; the ratio to that baseline
+//    is taken per round, and the table prints the median over the rounds and their range (wall
+//    time, and the process CPU time, llvmpipe's threads included). "Parameters set, feature off"
+//    rows set what a feature reads while the feature stays off: their ratio is the noise floor, and
+//    should equal the baseline drawn again.
 // 3. Display transform and background (drawn by the accumulation pass, not the material):
 //    timed likewise through renderOffscreen, each round a fresh window.
 // 4. Counters: what a redraw, a return to a variant drawn before, and a return to a lobe baked
@@ -414,17 +415,17 @@ double median(std::vector<double> v)
   return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
 }
 
-// Median of the frames after the first (which may compile a shader or upload a texture).
+// The fastest of the frames after the first (which may compile a shader or upload a texture):
+// on a machine shared with other work, the frame least slowed down by it.
 aniso::bench::FrameTime steadyFrame(const std::vector<aniso::bench::FrameTime>& frames)
 {
-  std::vector<double> wall;
-  std::vector<double> cpu;
+  aniso::bench::FrameTime best{1e30, 1e30};
   for (std::size_t i = 1; i < frames.size(); ++i)
   {
-    wall.push_back(frames[i].wall);
-    cpu.push_back(frames[i].cpu);
+    best.wall = std::min(best.wall, frames[i].wall);
+    best.cpu = std::min(best.cpu, frames[i].cpu);
   }
-  return {median(wall), median(cpu)};
+  return best;
 }
 
 struct Ratios
@@ -537,41 +538,40 @@ int main(int argc, char** argv)
     session.setEnvironment(studio, 256);
     std::vector<Ratios> ratios(features.size());
     bool tcoordsShown = true;
-    // Round -1 warms up: every variant compiled, every texture uploaded, not counted.
+    auto draw = [&](const Feature& f)
+    {
+      if (f.tcoords != tcoordsShown)
+      {
+        session.setSurface(f.tcoords ? torus : bare, view);
+        tcoordsShown = f.tcoords;
+      }
+      session.useMaterial(f.material);
+      return steadyFrame(session.render(frames));
+    };
+    const Feature& baseline = features.front();
+    const Feature& bareBaseline = *std::find_if(features.begin(), features.end(),
+                                                [](const Feature& f) { return !f.tcoords; });
+    // Round -1 warms up: every variant compiled, every texture uploaded, not counted. In each
+    // round every configuration is drawn right after the baseline on the same mesh, and its
+    // ratio is to that baseline: a change of the machine's load in between is short.
     for (int round = -1; round < rounds; ++round)
     {
-      std::vector<aniso::bench::FrameTime> times;
-      for (const Feature& f : features)
-      {
-        if (f.tcoords != tcoordsShown)
-        {
-          session.setSurface(f.tcoords ? torus : bare, view);
-          tcoordsShown = f.tcoords;
-        }
-        session.useMaterial(f.material);
-        times.push_back(steadyFrame(session.render(frames)));
-      }
-      if (round < 0)
-      {
-        std::printf("Renderer: %s; %dx%d, torus, studio, %d rounds of %d frames (first "
-                    "dropped) after a warm-up round\n\n",
-                    session.rendererName().c_str(), size, size, rounds, frames);
-        continue;
-      }
-      // Ratios to the baseline on the same mesh, in the same round.
-      const std::size_t bareBaseline =
-          std::size_t(std::find_if(features.begin(), features.end(),
-                                   [](const Feature& f) { return !f.tcoords; }) -
-                      features.begin());
       for (std::size_t i = 0; i < features.size(); ++i)
       {
-        const aniso::bench::FrameTime& base = times[features[i].tcoords ? 0 : bareBaseline];
-        ratios[i].wall.push_back(times[i].wall / base.wall);
-        ratios[i].cpu.push_back(times[i].cpu / base.cpu);
-        ratios[i].baselineWall.push_back(times[i].wall);
+        const aniso::bench::FrameTime base = draw(features[i].tcoords ? baseline : bareBaseline);
+        const aniso::bench::FrameTime time = draw(features[i]);
+        if (round < 0)
+          continue;
+        ratios[i].wall.push_back(time.wall / base.wall);
+        ratios[i].cpu.push_back(time.cpu / base.cpu);
+        ratios[i].baselineWall.push_back(time.wall);
       }
+      if (round < 0)
+        std::printf("Renderer: %s; %dx%d, torus, studio, %d rounds; each configuration after "
+                    "the baseline, %d frames each, the fastest of all but the first kept\n\n",
+                    session.rendererName().c_str(), size, size, rounds, frames);
     }
-    std::printf("## Frame time against the baseline of the same round\n\n"
+    std::printf("## Frame time against the baseline drawn just before\n\n"
                 "| Configuration | Feature | Wall ratio (median) | Wall ratio (range) | CPU ratio "
                 "(median) | Frame (median) |\n| --- | --- | --- | --- | --- | --- |\n");
     for (std::size_t i = 0; i < features.size(); ++i)
@@ -609,34 +609,32 @@ int main(int argc, char** argv)
       displays.push_back({"background environment", true, d});
     }
     std::vector<Ratios> displayRatios(displays.size());
-    for (int round = -1; round < rounds; ++round)
+    auto drawDisplay = [&](const aniso::DisplaySettings& display)
     {
-      std::vector<double> wall;
-      for (const DisplayCase& c : displays)
-      {
-        aniso::RenderSettings r;
-        r.surface = torus;
-        r.environment = studio;
-        r.material = baselineMaterial();
-        r.display = c.display;
-        r.view = view;
-        r.width = size;
-        r.height = size;
-        r.frames = frames;
-        r.jitter = false;
-        const aniso::RenderResult result = aniso::renderOffscreen(r);
-        std::vector<double> steady(result.frameSeconds.begin() + 1, result.frameSeconds.end());
-        wall.push_back(median(steady));
-      }
-      if (round < 0)
-        continue;
+      aniso::RenderSettings r;
+      r.surface = torus;
+      r.environment = studio;
+      r.material = baselineMaterial();
+      r.display = display;
+      r.view = view;
+      r.width = size;
+      r.height = size;
+      r.frames = frames;
+      r.jitter = false;
+      const aniso::RenderResult result = aniso::renderOffscreen(r);
+      return *std::min_element(result.frameSeconds.begin() + 1, result.frameSeconds.end());
+    };
+    for (int round = -1; round < rounds; ++round)
       for (std::size_t i = 0; i < displays.size(); ++i)
       {
-        displayRatios[i].wall.push_back(wall[i] / wall[0]);
+        const double base = drawDisplay(displays.front().display);
+        const double time = drawDisplay(displays[i].display);
+        if (round < 0)
+          continue;
+        displayRatios[i].wall.push_back(time / base);
         displayRatios[i].cpu.push_back(std::nan(""));
-        displayRatios[i].baselineWall.push_back(wall[i]);
+        displayRatios[i].baselineWall.push_back(time);
       }
-    }
     std::printf("\n## Display transform and background (renderOffscreen, wall time only)\n\n"
                 "| Configuration | Feature | Wall ratio (median) | Wall ratio (range) | CPU ratio "
                 "(median) | Frame (median) |\n| --- | --- | --- | --- | --- | --- |\n");
