@@ -539,12 +539,16 @@ Figure modelsErrorAgainstTime(const BenchResult& result)
       panel.series.push_back(series);
     }
   };
-  const std::string xLabel = "frame time / environment frame";
+  auto newPanel = [](const std::string& title)
   {
     PlotPanel panel;
-    panel.title = "Lit models vs their CPU evaluation";
-    panel.xLabel = xLabel;
+    panel.title = title;
+    panel.xLabel = "frame time / environment frame";
     panel.yLabel = "relative L2 error";
+    return panel;
+  };
+  {
+    PlotPanel panel = newPanel("Lit models vs their CPU evaluation");
     const auto models = uniqueValues(
         result.rows, [](const BenchRow& r) { return r.kind == "lit"; },
         [](const BenchRow& r) { return r.model; });
@@ -562,10 +566,7 @@ Figure modelsErrorAgainstTime(const BenchResult& result)
     figure.panels.push_back(panel);
   }
   {
-    PlotPanel panel;
-    panel.title = "LEADR vs supersampled (line: grid n)";
-    panel.xLabel = xLabel;
-    panel.yLabel = "relative L2 error";
+    PlotPanel panel = newPanel("LEADR vs supersampled (line: grid n)");
     const auto distances = uniqueValues(
         result.rows, [](const BenchRow& r) { return r.kind == "leadr"; },
         [](const BenchRow& r) { return r.variant; });
@@ -583,10 +584,7 @@ Figure modelsErrorAgainstTime(const BenchResult& result)
     figure.panels.push_back(panel);
   }
   {
-    PlotPanel panel;
-    panel.title = "Microstructure vs converged CPU (line: K)";
-    panel.xLabel = xLabel;
-    panel.yLabel = "relative L2 error";
+    PlotPanel panel = newPanel("Microstructure vs converged CPU (line: K)");
     // Per structure: the dearest masking (POM with shadows) on the full and the jittered grid,
     // and the cheapest (normal) on the full grid; the other masking modes are in the table.
     auto structureOf = [](const BenchRow& r) { return r.variant.substr(0, r.variant.find(',')); };
