@@ -21,6 +21,7 @@
 #include "env/environment.h"
 #include "env/sun_sky.h"
 #include "frame.h"
+#include "mis_width_rule.h"
 #include "reference/mc_estimator.h"
 #include "reference/reference_integrator.h"
 
@@ -123,15 +124,6 @@ struct Method
   const char* name;
 };
 
-// The lobe share used before misLobeFraction took the environment into account: 1/2 up to a
-// lobe width sqrt((n_u + 1)(n_v + 1)) of 16, rising smoothly in log2 of it to 15/16 at 1024.
-double widthRuleFraction(const aniso::AsLobe& lobe)
-{
-  const double width = std::sqrt((lobe.nu + 1.0) * (lobe.nv + 1.0));
-  const double t = std::clamp((std::log2(width) - 4.0) / 6.0, 0.0, 1.0);
-  return 0.5 + (15.0 / 16.0 - 0.5) * t * t * (3.0 - 2.0 * t);
-}
-
 struct Row
 {
   std::string scene;
@@ -218,7 +210,7 @@ void compareSplits(const std::vector<Point>& points, int rotations, const glm::d
     {
       double worst = 0.0;
       const std::vector<double> reference = references(scene, lobe, f0, points, &worst);
-      const double before = widthRuleFraction(lobe);
+      const double before = aniso::bench::widthRuleFraction(lobe);
       const double after = aniso::misLobeFraction(lobe, *scene.distribution);
       struct Choice
       {

@@ -414,9 +414,11 @@ public:
       bind(program, "anisoEnvGuide", lighting->samplingGuideTexture(window));
       const EnvironmentDistribution& d = lighting->samplingDistribution();
       program->SetUniform2i("anisoEnvGrid", std::array<int, 2>{d.width(), d.height()}.data());
-      // The split from the lobe and this environment's densities (env_sampling.h).
-      program->SetUniformf("anisoLobeFraction",
-                           static_cast<float>(misLobeFraction(settings.lobe, d)));
+      // The split from the lobe and this environment's densities (env_sampling.h), unless set.
+      const double share = settings.misLobeShare > 0.0 && settings.misLobeShare < 1.0
+                               ? settings.misLobeShare
+                               : misLobeFraction(settings.lobe, d);
+      program->SetUniformf("anisoLobeFraction", static_cast<float>(share));
     }
     program->SetUniform3fv(
         "anisoIrradianceSH", 9,

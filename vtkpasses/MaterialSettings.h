@@ -42,6 +42,10 @@ struct MaterialSettings
   // from bands into noise that progressive frames average out. Off by default: a single
   // frame's error against the reference is as large or larger (docs/BENCHMARKS.md).
   bool pixelDecorrelation = false;
+  // Share of the lobe technique in environment MIS: 0 = chosen from the lobe and the
+  // environment (misLobeFraction, core/env/env_sampling.h); a value in (0, 1) is used as it is
+  // (benchmarks compare rules with it).
+  double misLobeShare = 0.0;
 
   // Variants.
   SpecularMethod method = SpecularMethod::Exact;
