@@ -281,7 +281,19 @@ void SceneView::setFrameBudgetMs(int ms)
 
 FrameCostModel SceneView::frameCost() const
 {
-  return fitFrameCost(frameCosts_);
+  const int* size = window_->GetSize();
+  const long long pixels = static_cast<long long>(size[0]) * size[1];
+  // Only frames of this size: a frame also has costs that do not grow with its pixels, so
+  // costs per pixel of other sizes would mislead.
+  std::vector<FrameCostSample> measured;
+  for (const auto& [key, seconds] : frameCosts_)
+  {
+    if (key.first == pixels)
+    {
+      measured.push_back({key.second, static_cast<double>(pixels), seconds});
+    }
+  }
+  return fitFrameCost(measured);
 }
 
 int SceneView::frameSamples() const
@@ -291,10 +303,39 @@ int SceneView::frameSamples() const
 
 int SceneView::planRunSamples() const
 {
+  const int total = targetSamples();
+  if (frameBudgetMs_ <= 0)
+  {
+    return full_.samples;
+  }
+  const FrameCostModel cost = frameCost();
+  if (!cost.known)
+  {
+    // Nothing measured at this size: a first frame as cheap as can be, which measures it.
+    return 1;
+  }
+  if (!cost.separated)
+  {
+    // One sample count measured: a frame of another tells the fixed cost from the samples'.
+    const int* size = window_->GetSize();
+    const long long pixels = static_cast<long long>(size[0]) * size[1];
+    int measured = 1;
+    for (const auto& entry : frameCosts_)
+    {
+      if (entry.first.first == pixels)
+      {
+        measured = entry.first.second;
+      }
+    }
+    const int probe = largestDivisorAtMost(total, measured == 1 ? std::min(4, full_.samples) : 1);
+    if (probe != measured)
+    {
+      return probe;
+    }
+  }
   const int* size = window_->GetSize();
-  const double pixels = double(size[0]) * double(size[1]);
-  return chooseFrameSamples(frameCost(), pixels, frameBudgetMs_ * 1e-3, full_.samples,
-                            targetSamples());
+  return chooseFrameSamples(cost, double(size[0]) * double(size[1]), frameBudgetMs_ * 1e-3,
+                            full_.samples, total);
 }
 
 void SceneView::frameEvent(unsigned long event)
@@ -323,13 +364,11 @@ void SceneView::frameEvent(unsigned long event)
     return; // a converged view shown again, or nothing to draw
   }
   const int* size = window_->GetSize();
-  frameCosts_.push_back({frameDrawnSamples_, double(size[0]) * double(size[1]), seconds});
-  // The recent frames: the cost changes with the view (how much of it the surface covers).
-  constexpr std::size_t kKept = 12;
-  if (frameCosts_.size() > kKept)
-  {
-    frameCosts_.erase(frameCosts_.begin());
-  }
+  const auto key = std::make_pair(static_cast<long long>(size[0]) * size[1], frameDrawnSamples_);
+  // A running mean that follows the view (how much of it the surface covers) within a few
+  // frames.
+  const auto known = frameCosts_.find(key);
+  frameCosts_[key] = known == frameCosts_.end() ? seconds : 0.7 * known->second + 0.3 * seconds;
 }
 
 void SceneView::modelChanged(const QString& qkey)
@@ -734,10 +773,40 @@ void SceneView::requestRender()
 
 void SceneView::renderNow()
 {
+  // A refinement frame in the middle of a run goes into the mean without reaching the screen:
+  // showing a frame (the widget's copy, the window's composition and buffer swap) costs about
+  // as much as drawing one of few samples. Every kPresentIntervalMs the mean so far is shown by
+  // a step of its own (presentFrame), so the two costs never add up in one stall. The first
+  // frame of a run, the last, and frames while things move are shown as they are drawn.
+  const int before = pass_->GetAccumulatedFrames();
+  const bool hide = frameBudgetMs_ > 0 && !interacting_ && !presentNext_ && before >= 1 &&
+                    before + 1 < pass_->GetTargetFrames();
   errorOutput_->drawing = true;
   errorOutput_->spoke = false;
+  const bool swap = window_->GetSwapBuffers() != 0;
+  if (hide)
+  {
+    window_->SwapBuffersOff();
+  }
   window_->Render();
+  if (hide && swap)
+  {
+    window_->SwapBuffersOn();
+  }
   errorOutput_->drawing = false;
+  const int after = pass_->GetAccumulatedFrames();
+  // A run that restarted or completed within a hidden frame is shown by the next one.
+  presentNext_ = hide && (after <= 1 || pass_->IsConverged());
+  if (!hide)
+  {
+    presentClock_.start();
+  }
+  else if (!presentNext_ &&
+           (!presentClock_.isValid() || presentClock_.elapsed() >= kPresentIntervalMs))
+  {
+    presentClock_.start();
+    QTimer::singleShot(0, this, &SceneView::presentFrame);
+  }
   auto* gl = vtkOpenGLRenderWindow::SafeDownCast(window_);
   if (gl && gl->IsCurrent())
   {
@@ -772,11 +841,12 @@ void SceneView::renderNow()
       reportRenderError(message.str());
     }
   }
-  if (!interacting_ && !runReplanned_ && pass_->GetAccumulatedFrames() == 1)
+  if (!interacting_ && runReplans_ < 2 && pass_->GetAccumulatedFrames() == 1)
   {
-    // The run's first frame measured its own cost: if the plan was off (made from frames of
-    // another sample count or size), the run starts over with the corrected count, once.
-    runReplanned_ = true;
+    // The run's first frame measured its own cost: if the plan was off (nothing measured at
+    // this size yet, or one sample count only), the run starts over with the corrected count,
+    // at most twice.
+    ++runReplans_;
     try
     {
       if (planRunSamples() != runSamples_)
@@ -790,12 +860,26 @@ void SceneView::renderNow()
       emit errorOccurred(QString::fromStdString(e.what()));
     }
   }
-  emit frameRendered(accumulatedSamples(), targetSamples());
+  if (!hide)
+  {
+    emit frameRendered(accumulatedSamples(), targetSamples());
+  }
   // Progressive refinement: one more frame once pending events are handled, so the window
   // stays responsive between frames.
-  if (!interacting_ && !pass_->IsConverged())
+  if ((!interacting_ && !pass_->IsConverged()) || presentNext_)
   {
     requestRender();
+  }
+}
+
+void SceneView::presentFrame()
+{
+  // The window's last drawing (the mean after the latest hidden frame) to the screen.
+  if (window_->GetSwapBuffers())
+  {
+    window_->MakeCurrent();
+    window_->Frame();
+    emit frameRendered(accumulatedSamples(), targetSamples());
   }
 }
 
@@ -820,7 +904,7 @@ void SceneView::beginInteraction()
 void SceneView::settle()
 {
   interacting_ = false;
-  runReplanned_ = false;
+  runReplans_ = 0;
   emit interactionChanged(false);
   if (cameraMoved_)
   {

@@ -24,6 +24,7 @@
 #include <QElapsedTimer>
 #include <QObject>
 #include <QString>
+#include <map>
 #include <memory>
 #include <set>
 #include <string>
@@ -58,6 +59,9 @@ public:
   static constexpr int kInteractiveSamples = 1;
   static constexpr int kDefaultSettleMs = 300;
   static constexpr int kDefaultFrameBudgetMs = 60;
+  // With a frame budget, the mean of a refinement run reaches the screen this often (and with
+  // its first and last frames).
+  static constexpr int kPresentIntervalMs = 250;
 
   SceneView(SceneModel* model, SceneAssets* assets, LutScheduler* luts, vtkRenderWindow* window,
             QObject* parent = nullptr);
@@ -92,7 +96,8 @@ public:
   int frameBudgetMs() const { return frameBudgetMs_; }
   // Samples per pixel of each frame of the current refinement run.
   int frameSamples() const;
-  // The cost model fitted to the frames drawn since the shading last changed.
+  // The cost model fitted to the frames of the window's current size drawn since the shading
+  // last changed.
   FrameCostModel frameCost() const;
   // True from a change of the environment or cube size until its lighting is on screen (or
   // its bake failed).
@@ -105,6 +110,7 @@ public slots:
   void requestRender();
 
 signals:
+  // A frame reached the screen, SAMPLES of targetSamples per pixel accumulated.
   void frameRendered(int samples, int targetSamples);
   void errorOccurred(const QString& message);
   void noteAdded(const QString& note);
@@ -129,6 +135,8 @@ private:
   void applyDisplay();
   void applyCameraFromModel();
   void renderNow();
+  // Shows what the window drew last (a hidden frame's mean), without drawing.
+  void presentFrame();
   // Window render start and end, the surface's draw in between: a frame's cost.
   void frameEvent(unsigned long event);
   // The samples per frame of a still run (the frame budget's choice).
@@ -158,17 +166,19 @@ private:
   bool cameraMoved_ = false;
   int frameBudgetMs_ = kDefaultFrameBudgetMs;
   // Frame costs since the shading last changed (window render time of frames that drew the
-  // surface), the samples per frame of the current run, and whether that run was re-planned
-  // after its first frame.
-  std::vector<FrameCostSample> frameCosts_;
+  // surface), a running mean per window size and sample count; the samples per frame of the
+  // current run, and how often that run was re-planned after its first frame.
+  std::map<std::pair<long long, int>, double> frameCosts_;
   int runSamples_ = 1;
-  bool runReplanned_ = false;
+  int runReplans_ = 0;
   vtkNew<vtkCallbackCommand> frameTiming_;
   qint64 frameStartNs_ = -1;
   bool frameDrewSurface_ = false;
   int frameDrawnSamples_ = 1;
   // The lighting on screen has its environment-sampling distribution (baked on the worker).
   bool lightingSampled_ = false;
+  QElapsedTimer presentClock_; // since a frame last reached the screen
+  bool presentNext_ = false;
   QThreadPool* lightingPool_;
   int lightingRequest_ = 0; // sequence number of the latest lighting request
   bool lightingInFlight_ = false;

@@ -93,10 +93,15 @@ int chooseFrameSamples(const FrameCostModel& model, double pixels, double budget
     affordable = static_cast<int>(std::clamp(count, 1.0, static_cast<double>(most)));
   }
   // The largest divisor of the run's total within reach: the run keeps its sample count.
-  const int total = std::max(runTotal, 1);
-  for (int s = affordable; s > 1; --s)
+  return largestDivisorAtMost(runTotal, affordable);
+}
+
+int largestDivisorAtMost(int total, int limit)
+{
+  const int t = std::max(total, 1);
+  for (int s = std::min(limit, t); s > 1; --s)
   {
-    if (total % s == 0)
+    if (t % s == 0)
     {
       return s;
     }

@@ -45,6 +45,9 @@ FrameCostModel fitFrameCost(const std::vector<FrameCostSample>& measured);
 int chooseFrameSamples(const FrameCostModel& model, double pixels, double budgetSeconds,
                        int maxSamples, int runTotal);
 
+// The largest divisor of total (>= 1) that is at most limit (at least 1).
+int largestDivisorAtMost(int total, int limit);
+
 // The samples per pixel a run accumulates for a target of targetSamples at samplesPerFrame per
 // frame: whole frames, so targetSamples rounded up to a multiple of samplesPerFrame.
 int runTotalSamples(int targetSamples, int samplesPerFrame);

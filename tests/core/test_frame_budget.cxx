@@ -88,6 +88,16 @@ TEST(FrameBudget, ChoosesTheLargestDivisorWithinTheBudget)
   EXPECT_EQ(chooseFrameSamples(FrameCostModel{}, 1e5, 0.060, 16, 256), 16);
 }
 
+TEST(FrameBudget, LargestDivisor)
+{
+  EXPECT_EQ(largestDivisorAtMost(256, 5), 4);
+  EXPECT_EQ(largestDivisorAtMost(300, 7), 6);
+  EXPECT_EQ(largestDivisorAtMost(257, 100), 1);
+  EXPECT_EQ(largestDivisorAtMost(257, 257), 257);
+  EXPECT_EQ(largestDivisorAtMost(12, 100), 12);
+  EXPECT_EQ(largestDivisorAtMost(12, 0), 1);
+}
+
 TEST(FrameBudget, RunTotalIsWholeFrames)
 {
   EXPECT_EQ(runTotalSamples(256, 16), 256);
