@@ -162,16 +162,37 @@ public:
 
   ~Impl() { detach(); }
 
-  // Takes new settings: their LUTs first (which may throw), then everything at once.
-  void adopt(const MaterialSettings& s)
+  static bool matches(const std::shared_ptr<const HalfVectorLut>& lut, const MaterialSettings& s)
+  {
+    return lut && lut->size == s.lutSize && lut->lobe.nu == s.lobe.nu && lut->lobe.nv == s.lobe.nv;
+  }
+  static bool matches(const std::shared_ptr<const BrdfLut>& lut, const MaterialSettings& s)
+  {
+    return lut && lut->size == s.lutSize && lut->samples == s.brdfLutSamples &&
+           lut->lobe.nu == s.lobe.nu && lut->lobe.nv == s.lobe.nv;
+  }
+
+  // Takes new settings: their LUTs first (which may throw), then everything at once. Tables
+  // given or held already are not asked of the cache again (which may have dropped them from
+  // memory and would read their files).
+  void adopt(const MaterialSettings& s, const std::shared_ptr<const HalfVectorLut>& givenHalf = {},
+             const std::shared_ptr<const BrdfLut>& givenBrdf = {})
   {
     // Only what the variant reads: the in-shader variant of `exact` needs no table at all.
-    auto halfVectors = s.halfVectors == HalfVectorSource::Lut
-                           ? LutCache::shared().halfVector(s.lobe, s.lutSize)
-                           : nullptr;
-    auto brdf = s.method == SpecularMethod::SplitSum
-                    ? LutCache::shared().brdf(s.lobe, s.lutSize, s.brdfLutSamples)
-                    : nullptr;
+    std::shared_ptr<const HalfVectorLut> halfVectors;
+    if (s.halfVectors == HalfVectorSource::Lut)
+    {
+      halfVectors = matches(givenHalf, s)       ? givenHalf
+                    : matches(halfVectorLut, s) ? halfVectorLut
+                                                : LutCache::shared().halfVector(s.lobe, s.lutSize);
+    }
+    std::shared_ptr<const BrdfLut> brdf;
+    if (s.method == SpecularMethod::SplitSum)
+    {
+      brdf = matches(givenBrdf, s) ? givenBrdf
+             : matches(brdfLut, s) ? brdfLut
+                                   : LutCache::shared().brdf(s.lobe, s.lutSize, s.brdfLutSamples);
+    }
     halfVectorLut = std::move(halfVectors);
     brdfLut = std::move(brdf);
     settings = s;
@@ -531,8 +552,15 @@ void AnisoMaterial::detach()
 
 void AnisoMaterial::setSettings(const MaterialSettings& settings)
 {
+  setSettings(settings, nullptr, nullptr);
+}
+
+void AnisoMaterial::setSettings(const MaterialSettings& settings,
+                                std::shared_ptr<const HalfVectorLut> halfVector,
+                                std::shared_ptr<const BrdfLut> brdf)
+{
   validate(settings);
-  impl_->adopt(settings);
+  impl_->adopt(settings, halfVector, brdf);
   if (impl_->installed)
   {
     impl_->updateVariant();

@@ -17,6 +17,8 @@ class vtkRenderer;
 namespace aniso
 {
 class EnvironmentLighting;
+struct BrdfLut;
+struct HalfVectorLut;
 
 class AnisoMaterial
 {
@@ -39,6 +41,12 @@ public:
   // shader is rebuilt only if the variant changed. Throws aniso::Error "name: reason" for an
   // invalid value and keeps the previous settings.
   void setSettings(const MaterialSettings& settings);
+  // The same with lookup tables already at hand (baked or read on a worker): a table whose
+  // inputs match the settings is used as it is, as is one the material holds already, so the
+  // cache is asked (and may read a file or bake) only for tables neither provides.
+  void setSettings(const MaterialSettings& settings,
+                   std::shared_ptr<const HalfVectorLut> halfVector,
+                   std::shared_ptr<const BrdfLut> brdf);
   const MaterialSettings& settings() const;
 
   void setLighting(std::shared_ptr<EnvironmentLighting> lighting);

@@ -635,7 +635,9 @@ void SceneView::applyMaterial()
     shown.samples = runSamples_;
     frames = targetSamples() / runSamples_;
   }
-  material_->setSettings(shown);
+  // The scheduler's tables as its worker delivered them: nothing is read or baked here, even
+  // when the cache has dropped them from memory since.
+  material_->setSettings(shown, ready.halfVector, ready.brdf);
   pass_->SetTargetFrames(std::max(frames, 1));
   if (material_->mapsDropped())
   {

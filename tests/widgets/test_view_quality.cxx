@@ -7,6 +7,9 @@
 //   - switching environment sampling to mis never bakes its distribution on the UI thread: the
 //     lighting on screen stays, the material keeps sampling the lobe only and the view says it
 //     is busy until the worker's lighting (with the distribution) replaces it;
+//   - with the shared LUT cache holding nothing in memory (a budget of one byte), exponents the
+//     worker read back from disk or baked reach the material without the UI thread asking the
+//     cache for anything (its counters move only on the worker);
 //   - with quality-mode error, the still view's total is the fewest samples N with
 //     a N^-p <= error-target for the lobe's fitted a and p (computed here from the model's
 //     table entry for the lobe, n_u = n_v = 10 unfiltered: a = 3.259, p = 0.9757).
@@ -15,6 +18,7 @@
 #include "MainWindow.h"
 #include "SceneView.h"
 #include "image/image.h"
+#include "lut/lut_cache.h"
 #include "quality/adaptive_quality.h"
 #include "vtkAnisoAccumulationPass.h"
 
@@ -196,6 +200,40 @@ private slots:
     QVERIFY(!view->lightingBusy());
     QCOMPARE(view->renderSettings(64, 64).material.environmentSampling,
              aniso::EnvironmentSampling::Mis);
+  }
+
+  void evictedTablesAreNotReadOnTheUiThread()
+  {
+    aniso::MainWindow window;
+    window.setErrorDialogs(false);
+    window.model()->setValues({{"mesh", textValue("builtin:sphere")},
+                               {"samples", numberValue(1.0)},
+                               {"target-samples", numberValue(1.0)}});
+    window.resize(640, 480);
+    window.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&window));
+    aniso::LutScheduler* luts = window.lutScheduler();
+    aniso::SceneView* view = window.view();
+    QVERIFY(QTest::qWaitFor([&] { return !luts->busy(); }, 60000));
+    aniso::LutCache& cache = luts->cache();
+    cache.setMemoryBudget(1);
+    // Back and forth between two exponents: the second visit finds its tables dropped from
+    // memory, so the worker reads (or bakes) them again.
+    for (double nu : {321.0, 654.0, 321.0, 654.0})
+    {
+      window.editor()->edit("nu", numberValue(nu));
+      luts->requestNow();
+      luts->waitForIdle();
+      const aniso::LutCacheStats worker = cache.stats();
+      QVERIFY(QTest::qWaitFor([&] { return view->renderSettings(1, 1).material.lobe.nu == nu; },
+                              10000));
+      QTest::qWait(50); // the frames that follow draw with them
+      const aniso::LutCacheStats ui = cache.stats();
+      QCOMPARE(ui.bakes, worker.bakes);
+      QCOMPARE(ui.diskHits, worker.diskHits);
+      QCOMPARE(ui.memoryHits, worker.memoryHits);
+    }
+    cache.setMemoryBudget(aniso::LutCache::kDefaultMemoryBudget);
   }
 
   void errorTargetSetsTheTotal()
