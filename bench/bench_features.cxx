@@ -432,15 +432,29 @@ struct Ratios
 {
   std::vector<double> wall;
   std::vector<double> cpu;
-  std::vector<double> baselineWall; // the baseline's frame in the same round
+  std::vector<double> frame; // this configuration's frame (wall) in each round
 };
 
-void printRatioRow(const std::string& name, const std::string& state, const Ratios& r,
-                   const std::string& extra)
+// One table row per configuration: the median ratio over the rounds, their range, the median
+// CPU ratio (when measured) and the configuration's median frame.
+void printRatioTable(const char* heading, const std::vector<std::string>& names,
+                     const std::vector<bool>& featureOn, const std::vector<Ratios>& ratios,
+                     bool withCpu)
 {
-  const auto [lo, hi] = std::minmax_element(r.wall.begin(), r.wall.end());
-  std::printf("| %s | %s | %.3f | %.2f-%.2f | %.3f | %.1f ms |%s\n", name.c_str(), state.c_str(),
-              median(r.wall), *lo, *hi, median(r.cpu), 1e3 * median(r.baselineWall), extra.c_str());
+  std::printf("%s\n\n| Configuration | Feature | Wall ratio (median) | Wall ratio (range) |%s "
+              "Frame (median) |\n| --- | --- | --- | --- |%s --- |\n",
+              heading, withCpu ? " CPU ratio (median) |" : "", withCpu ? " --- |" : "");
+  for (std::size_t i = 0; i < names.size(); ++i)
+  {
+    const Ratios& r = ratios[i];
+    const auto [lo, hi] = std::minmax_element(r.wall.begin(), r.wall.end());
+    std::printf("| %s | %s | %.3f | %.2f-%.2f |", names[i].c_str(),
+                featureOn[i] ? "on" : "off, parameters set", median(r.wall), *lo, *hi);
+    if (withCpu)
+      std::printf(" %.3f |", median(r.cpu));
+    std::printf(" %.1f ms |\n", 1e3 * median(r.frame));
+  }
+  std::fflush(stdout);
 }
 
 // ---- Counters --------------------------------------------------------------------------------
@@ -564,20 +578,22 @@ int main(int argc, char** argv)
           continue;
         ratios[i].wall.push_back(time.wall / base.wall);
         ratios[i].cpu.push_back(time.cpu / base.cpu);
-        ratios[i].baselineWall.push_back(time.wall);
+        ratios[i].frame.push_back(time.wall);
       }
       if (round < 0)
         std::printf("Renderer: %s; %dx%d, torus, studio, %d rounds; each configuration after "
                     "the baseline, %d frames each, the fastest of all but the first kept\n\n",
                     session.rendererName().c_str(), size, size, rounds, frames);
     }
-    std::printf("## Frame time against the baseline drawn just before\n\n"
-                "| Configuration | Feature | Wall ratio (median) | Wall ratio (range) | CPU ratio "
-                "(median) | Frame (median) |\n| --- | --- | --- | --- | --- | --- |\n");
-    for (std::size_t i = 0; i < features.size(); ++i)
-      printRatioRow(features[i].name, features[i].featureOn ? "on" : "off, parameters set",
-                    ratios[i], "");
-    std::fflush(stdout);
+    std::vector<std::string> names;
+    std::vector<bool> featureOn;
+    for (const Feature& f : features)
+    {
+      names.push_back(f.name);
+      featureOn.push_back(f.featureOn);
+    }
+    printRatioTable("## Frame time against the baseline drawn just before", names, featureOn,
+                    ratios, true);
 
     // 3. Display transform and background: the accumulation pass's variants.
     struct DisplayCase
@@ -632,16 +648,17 @@ int main(int argc, char** argv)
         if (round < 0)
           continue;
         displayRatios[i].wall.push_back(time / base);
-        displayRatios[i].cpu.push_back(std::nan(""));
-        displayRatios[i].baselineWall.push_back(time);
+        displayRatios[i].frame.push_back(time);
       }
-    std::printf("\n## Display transform and background (renderOffscreen, wall time only)\n\n"
-                "| Configuration | Feature | Wall ratio (median) | Wall ratio (range) | CPU ratio "
-                "(median) | Frame (median) |\n| --- | --- | --- | --- | --- | --- |\n");
-    for (std::size_t i = 0; i < displays.size(); ++i)
-      printRatioRow(displays[i].name, displays[i].featureOn ? "on" : "off, parameters set",
-                    displayRatios[i], "");
-    std::fflush(stdout);
+    names.clear();
+    featureOn.clear();
+    for (const DisplayCase& c : displays)
+    {
+      names.push_back(c.name);
+      featureOn.push_back(c.featureOn);
+    }
+    printRatioTable("\n## Display transform and background (renderOffscreen, wall time only)",
+                    names, featureOn, displayRatios, false);
 
     // 4. Counters: what each change costs the next frame.
     std::printf("\n## What the next frame redoes (counters)\n\n"
