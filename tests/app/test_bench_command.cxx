@@ -247,6 +247,13 @@ TEST_F(BenchCommand, QuickRunIsCompleteAndConsistent)
     EXPECT_TRUE(std::isfinite(ratio) && ratio > 0.0) << what << " " << ratio;
     EXPECT_GT(std::stod(row.at("median_frame_ms")), 0.0) << what;
     EXPECT_GE(std::stoi(row.at("compared_pixels")), 40) << what;
+    // The supersampled and converged references' own error (their distance to the same
+    // quadrature at half the resolution) lies below every error they measure.
+    if (row.at("kind") == "leadr" || row.at("kind") == "micro")
+    {
+      const double bound = std::stod(row.at("reference_bound"));
+      EXPECT_TRUE(bound > 0.0 && bound < error) << what << ": bound " << bound;
+    }
   }
 
   // Lit models: each of the five once, under 2 lights on the sphere. Against the same model on
