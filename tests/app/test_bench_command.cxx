@@ -11,6 +11,7 @@
 //     evaluation (a 32 x 32 grid) does not rise with K beyond a stated tolerance and falls
 //     overall; the LEADR and microstructure references' own error bounds lie below the errors
 //     they measure; the models' plot and report section exist.
+//   - `--models`: the families' list parsed, unknown and repeated names refused.
 //   - The CPU pixel rays (the reference's geometry) against the analytic unit sphere.
 //   - The flange part against its analytic volume (closed, outward-facing surface).
 //   - The plot's raster and SVG outputs against each other and the series' colour.
