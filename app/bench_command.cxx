@@ -3,6 +3,7 @@
 #include "bench_run.h"
 #include "cli.h"
 
+#include <algorithm>
 #include <filesystem>
 
 namespace aniso::cli
@@ -102,10 +103,12 @@ int runBenchCommand(const std::vector<std::string>& args, std::ostream& out)
   }
   const bench::BenchResult result = bench::runBench(options, out);
   bench::writeBenchOutputs(result, options.outDirectory);
-  out << "\n" << bench::benchMarkdown(result, "bench.svg", "bench_models.svg");
+  const bool models = std::any_of(result.rows.begin(), result.rows.end(),
+                                  [](const bench::BenchRow& r) { return r.model != "as-env"; });
+  out << "\n" << bench::benchMarkdown(result, "bench.svg", models ? "bench_models.svg" : "");
   out << "\nbench: wrote " << (std::filesystem::path(options.outDirectory) / "bench.csv").string()
-      << ", bench.md, bench.svg, bench.png, bench_models.svg, bench_models.png and "
-         "quality_model.txt in "
+      << ", bench.md, bench.svg, bench.png, "
+      << (models ? "bench_models.svg, bench_models.png, " : "") << "quality_model.txt in "
       << options.outDirectory << " (" << result.rows.size() << " rows, " << result.seconds
       << " s)\n";
   return 0;

@@ -424,9 +424,10 @@ private:
     const std::vector<FrameTime> timed = session.renderMore(row.runs);
     describeConfig(row, config);
     row.firstFrameSeconds = first.front().wall;
-    row.medianFrameSeconds = medianFrameTime(timed).wall;
+    const FrameTime median = medianFrameTime(timed);
+    row.medianFrameSeconds = median.wall;
     row.totalSeconds = row.medianFrameSeconds;
-    row.medianFrameCpuSeconds = medianFrameTime(timed).cpu;
+    row.medianFrameCpuSeconds = median.cpu;
     row.totalCpuSeconds = row.medianFrameCpuSeconds;
     row.samplesPerSecond = double(row.coveredPixels) * config.samples / row.medianFrameSeconds;
     log_ << "  " << row.mesh << " " << row.environment << " " << lobeText(row.lobe) << " "
@@ -461,8 +462,9 @@ private:
       row.frames = checkpoint;
       row.runs = checkpoint;
       row.firstFrameSeconds = times.front().wall;
-      row.medianFrameSeconds = medianFrameTime(times).wall;
-      row.medianFrameCpuSeconds = medianFrameTime(times).cpu;
+      const FrameTime median = medianFrameTime(times);
+      row.medianFrameSeconds = median.wall;
+      row.medianFrameCpuSeconds = median.cpu;
       for (const FrameTime& t : times)
       {
         row.totalSeconds += t.wall;
@@ -501,9 +503,10 @@ private:
     row.runs = 5;
     const std::vector<FrameTime> timed = session.renderMore(row.runs);
     row.firstFrameSeconds = first.front().wall;
-    row.medianFrameSeconds = medianFrameTime(timed).wall;
+    const FrameTime median = medianFrameTime(timed);
+    row.medianFrameSeconds = median.wall;
     row.totalSeconds = row.medianFrameSeconds;
-    row.medianFrameCpuSeconds = medianFrameTime(timed).cpu;
+    row.medianFrameCpuSeconds = median.cpu;
     row.totalCpuSeconds = row.medianFrameCpuSeconds;
     row.samplesPerSecond = double(row.coveredPixels) / row.medianFrameSeconds;
     log_ << "  " << row.mesh << " " << row.environment << " " << lobeText(lobe)
