@@ -5,7 +5,7 @@
 #include "error.h"
 #include "leadr/leadr.h"
 #include "maps/map_files.h"
-#include "materials/texture_sampling.h"
+#include "materials/height_field.h"
 #include "microstructure/microstructure.h"
 #include "render_models.h"
 
@@ -16,8 +16,6 @@ namespace aniso::cli
 {
 namespace
 {
-constexpr double kPi = 3.14159265358979323846;
-
 // The option NAME of declared parameter KEY (core/material/parameters.cxx, shared with the
 // window's scene keys): a choice lists its values, a number shows VALUE_NAME.
 Option declaredOption(std::string_view key, std::string name, const std::string& valueName,
@@ -106,41 +104,8 @@ std::shared_ptr<const LeadrMips> leadrMoments(const Arguments& a)
 
 Image builtinLeadrRelief()
 {
-  constexpr int size = 64;
-  constexpr int waves = 96;
-  struct Wave
-  {
-    double fx, fy, amplitude, phase;
-  };
-  std::vector<Wave> relief;
-  for (std::uint32_t k = 0; relief.size() < std::size_t(waves); ++k)
-  {
-    const double fx = std::floor(hashedUniform(7, k, 0) * 13.0) - 6.0;
-    const double fy = std::floor(hashedUniform(7, k, 1) * 13.0) - 6.0;
-    const double f = std::hypot(fx, fy);
-    if (f >= 1.0)
-    {
-      // Amplitude 1 / f: every wave adds the same slope variance, (2 pi)^2 / 2.
-      relief.push_back({fx, fy, 1.0 / f, 2.0 * kPi * hashedUniform(7, k, 2)});
-    }
-  }
-  const double scale = 0.3 * std::sqrt(2.0 / (waves * 0.5 * 4.0 * kPi * kPi));
-  Image height(size, size, 1);
-  for (int y = 0; y < size; ++y)
-  {
-    for (int x = 0; x < size; ++x)
-    {
-      const double u = (x + 0.5) / size;
-      const double v = 1.0 - (y + 0.5) / size;
-      double h = 0.0;
-      for (const Wave& w : relief)
-      {
-        h += w.amplitude * std::sin(2.0 * kPi * (w.fx * u + w.fy * v) + w.phase);
-      }
-      height.at(x, y, 0) = float(scale * h);
-    }
-  }
-  return height;
+  // Slope deviation 0.3 per axis over a 64 x 64 tile: close to Gaussian, as LEADR assumes.
+  return randomWaveHeight(64, 0.3);
 }
 
 LeadrSettings leadrSettingsOf(const DeclaredValues& values)

@@ -21,7 +21,7 @@
 #include "env/environment.h"
 #include "frame.h"
 #include "leadr/leadr.h"
-#include "materials/texture_sampling.h"
+#include "materials/height_field.h"
 #include "render_test_helpers.h"
 
 #include <cmath>
@@ -36,45 +36,14 @@ namespace
 {
 constexpr double kPi = 3.14159265358979323846;
 
-// A 64 x 64 tiling height map of 96 random-phase waves (integer frequencies up to 6 per tile,
-// amplitudes falling as 1 / frequency), scaled to a slope deviation of 0.3 per axis: by the
-// central limit theorem its slopes are close to Gaussian, the distribution LEADR assumes (the
-// remaining difference, about 12% of the highlight's density below, is LEADR's approximation).
+// A 64 x 64 tiling height map of 96 random-phase waves (core's randomWaveHeight: integer
+// frequencies up to 6 per tile, amplitudes falling as 1 / frequency), scaled to a slope deviation
+// of 0.3 per axis: by the central limit theorem its slopes are close to Gaussian, the distribution
+// LEADR assumes (the remaining difference, about 12% of the highlight's density below, is LEADR's
+// approximation).
 LeadrMips bumpyMoments()
 {
-  constexpr int size = 64;
-  constexpr int waves = 96;
-  struct Wave
-  {
-    double fx, fy, amplitude, phase;
-  };
-  std::vector<Wave> relief;
-  double slopeVariance = 0.0; // of dh/du and dh/dv together, per unit amplitude
-  for (std::uint32_t k = 0; relief.size() < std::size_t(waves); ++k)
-  {
-    const double fx = std::floor(hashedUniform(7, k, 0) * 13.0) - 6.0;
-    const double fy = std::floor(hashedUniform(7, k, 1) * 13.0) - 6.0;
-    const double f = std::hypot(fx, fy);
-    if (f < 1.0)
-      continue;
-    relief.push_back({fx, fy, 1.0 / f, 2.0 * kPi * hashedUniform(7, k, 2)});
-    slopeVariance += 0.5 * std::pow(2.0 * kPi / f, 2.0) * f * f;
-  }
-  const double scale = 0.3 * std::sqrt(2.0 / slopeVariance);
-  Image height(size, size, 1);
-  for (int y = 0; y < size; ++y)
-  {
-    for (int x = 0; x < size; ++x)
-    {
-      const double u = (x + 0.5) / size;
-      const double v = 1.0 - (y + 0.5) / size;
-      double h = 0.0;
-      for (const Wave& w : relief)
-        h += w.amplitude * std::sin(2.0 * kPi * (w.fx * u + w.fy * v) + w.phase);
-      height.at(x, y, 0) = float(scale * h);
-    }
-  }
-  return bakeLeadrFromHeight(height, 1.0);
+  return bakeLeadrFromHeight(randomWaveHeight(64, 0.3), 1.0);
 }
 
 // Looking at the plate's centre from the -Y side at `elevation` degrees, the view filling
