@@ -9,8 +9,10 @@
 #include <cctype>
 #include <cerrno>
 #include <chrono>
+#include <cmath>
 #include <csignal>
 #include <cstdint>
+#include <cstdlib>
 #include <cstring>
 #include <fcntl.h>
 #include <filesystem>
@@ -27,6 +29,7 @@
 #include <vtkDataArray.h>
 #include <vtkDataObjectTreeIterator.h>
 #include <vtkDataSet.h>
+#include <vtkDataSetAttributes.h>
 #include <vtkDataSetReader.h>
 #include <vtkDataSetSurfaceFilter.h>
 #include <vtkErrorCode.h>
@@ -685,6 +688,75 @@ std::string meshFilePatterns()
   return patterns;
 }
 
+namespace
+{
+// vtkOBJReader reads numbers with an input stream, which stops at "nan" or "inf" and leaves 0 or
+// the previous line's value in their place: a NaN texture coordinate or normal in the file would
+// arrive finite and wrong, where sanitizeSurface cannot see it. So the file's own vt and vn
+// lines are checked, and the counts decide as sanitizeSurface does for the other readers.
+struct ObjNonFiniteEntries
+{
+  int64_t tcoords = 0; // vt lines with a NaN or Inf among their first two numbers
+  int64_t normals = 0; // vn lines with a NaN or Inf among their three numbers
+};
+
+ObjNonFiniteEntries countObjNonFiniteEntries(const std::string& path)
+{
+  ObjNonFiniteEntries counts;
+  std::ifstream in(path, std::ios::binary);
+  std::string line;
+  while (std::getline(in, line))
+  {
+    const char* p = line.c_str();
+    while (*p == ' ' || *p == '\t')
+    {
+      ++p;
+    }
+    int fields = 0;
+    int64_t* count = nullptr;
+    if (std::strncmp(p, "vt", 2) == 0 && (p[2] == ' ' || p[2] == '\t'))
+    {
+      fields = 2;
+      count = &counts.tcoords;
+    }
+    else if (std::strncmp(p, "vn", 2) == 0 && (p[2] == ' ' || p[2] == '\t'))
+    {
+      fields = 3;
+      count = &counts.normals;
+    }
+    if (!count)
+    {
+      continue;
+    }
+    p += 2;
+    for (int f = 0; f < fields; ++f)
+    {
+      char* end = nullptr;
+      const double value = std::strtod(p, &end);
+      if (end == p)
+      {
+        break; // not a number: the reader's own error handling applies
+      }
+      if (!std::isfinite(value))
+      {
+        ++*count;
+        break;
+      }
+      p = end;
+    }
+  }
+  return counts;
+}
+
+void removeActiveArray(vtkDataSetAttributes* data, vtkDataArray* array)
+{
+  if (array && array->GetName())
+  {
+    data->RemoveArray(array->GetName());
+  }
+}
+} // namespace
+
 LoadedMesh loadMesh(const std::string& path)
 {
   const std::filesystem::path file(path);
@@ -719,7 +791,25 @@ LoadedMesh loadMesh(const std::string& path)
   {
     throw errorAbout(path, std::string("the reader failed: ") + e.what());
   }
+  ObjNonFiniteEntries objNonFinite;
+  if (ext == ".obj")
+  {
+    objNonFinite = countObjNonFiniteEntries(path);
+    vtkPointData* pd = raw->GetPointData();
+    if (objNonFinite.tcoords > 0)
+    {
+      removeActiveArray(pd, pd->GetTCoords());
+      pd->RemoveArray("TCoords");
+    }
+    if (objNonFinite.normals > 0)
+    {
+      removeActiveArray(pd, pd->GetNormals());
+      pd->RemoveArray("Normals");
+    }
+  }
   mesh.polyData = sanitizeSurface(raw, path, mesh.report);
+  mesh.report.invalidTCoords += objNonFinite.tcoords;
+  mesh.report.invalidNormals += objNonFinite.normals;
   return mesh;
 }
 } // namespace aniso

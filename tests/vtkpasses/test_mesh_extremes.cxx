@@ -14,6 +14,9 @@
 #include "mesh_test_helpers.h"
 #include "render_test_helpers.h"
 
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <glm/geometric.hpp>
@@ -159,6 +162,47 @@ TEST_F(MeshExtremes, TextureCoordinatesWithANanAreDiscardedWhole)
   EXPECT_EQ(prepared.report.tangentSource, "axis:1,0,0");
 }
 
+// The same for OBJ, read by VTK's reader, whose number parsing turns "nan" into a finite value
+// without a word: the loader checks the file's vt and vn lines itself. A NaN normal discards
+// the file's normals the same way (they are then recomputed).
+TEST_F(MeshExtremes, ObjTextureCoordinatesAndNormalsWithANanAreDiscardedWhole)
+{
+  const std::string corners = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\n";
+  const std::string uvs = "vt 0 0\nvt 1 0\nvt 0 1\nvt nan 1\n";
+  {
+    const aniso::LoadedMesh mesh =
+        aniso::loadMesh(write("nanuv.obj", corners + uvs +
+                                               "f 1/1 3/3 2/2\nf 1/1 2/2 4/4\nf 1/1 4/4 3/3\n"
+                                               "f 2/2 3/3 4/4\n"));
+    EXPECT_EQ(mesh.report.triangles, 4);
+    EXPECT_EQ(mesh.report.invalidTCoords, 1);
+    EXPECT_FALSE(mesh.report.hasTCoords);
+    EXPECT_EQ(mesh.polyData->GetPointData()->GetTCoords(), nullptr);
+    const std::vector<std::string> notes = mesh.report.notes();
+    ASSERT_EQ(notes.size(), 1u);
+    EXPECT_EQ(notes[0], "texture coordinates discarded (1 entry is NaN or Inf)");
+    const aniso::PreparedSurface prepared = aniso::prepareSurface(mesh.polyData, {}, "nanuv.obj");
+    EXPECT_EQ(prepared.report.tangentSource, "axis:1,0,0");
+  }
+  {
+    // Finite texture coordinates stay (the check does not discard valid files).
+    const aniso::LoadedMesh mesh = aniso::loadMesh(
+        write("uv.obj", corners + "vt 0 0\nvt 1 0\nvt 0 1\nvt 0.5 1\n" +
+                            "f 1/1 3/3 2/2\nf 1/1 2/2 4/4\nf 1/1 4/4 3/3\nf 2/2 3/3 4/4\n"));
+    EXPECT_EQ(mesh.report.invalidTCoords, 0);
+    EXPECT_TRUE(mesh.report.hasTCoords);
+  }
+  {
+    const aniso::LoadedMesh mesh = aniso::loadMesh(
+        write("nann.obj", corners + "vn 0 0 1\nvn inf 0 1\n" +
+                              "f 1//1 3//1 2//1\nf 1//2 2//2 4//2\nf 1//1 4//1 3//1\n"
+                              "f 2//1 3//1 4//1\n"));
+    EXPECT_EQ(mesh.report.invalidNormals, 1);
+    EXPECT_FALSE(mesh.report.hasNormals);
+    EXPECT_EQ(mesh.polyData->GetPointData()->GetNormals(), nullptr);
+  }
+}
+
 TEST_F(MeshExtremes, MapsOnAMeshWithoutTextureCoordinatesAreLeftOut)
 {
   ANISO_REQUIRE_DISPLAY();
@@ -185,3 +229,63 @@ TEST_F(MeshExtremes, MapsOnAMeshWithoutTextureCoordinatesAreLeftOut)
   EXPECT_EQ(aniso::test::nonFiniteValues(r.linear), 0);
 }
 } // namespace
+
+namespace
+{
+aniso::RenderResult renderTetrahedron(const std::string& path)
+{
+  const aniso::LoadedMesh mesh = aniso::loadMesh(path);
+  aniso::RenderSettings settings;
+  settings.surface = aniso::prepareSurface(mesh.polyData, {}, path).polyData;
+  settings.environment = std::make_shared<aniso::StudioEnvironment>();
+  settings.cubeSize = 32;
+  settings.width = 48;
+  settings.height = 48;
+  settings.material.samples = 8;
+  settings.jitter = false;
+  settings.view.direction = glm::dvec3(1.0, -2.0, 1.5); // three faces in view
+  return aniso::renderOffscreen(settings);
+}
+} // namespace
+
+// The view is invariant under scaling and translating the mesh (the camera frames the object,
+// the environment lighting depends on directions only), so the unit tetrahedron at the origin
+// is the reference for the same one scaled by 1e30 or 1e-30 or moved 1e7 away: the renderer
+// draws each in a frame normalised to the unit bounding sphere, and the images must agree up to
+// float rounding of the vertex positions (bound: every channel within 1e-3 of the unit image's
+// brightest radiance, coverage included, and the same pixels covered). Before that frame, 1e30 drew
+// a black surface on a uniform background, 1e-30 nothing, and 1e7 streaks.
+TEST_F(MeshExtremes, TinyHugeAndFarTetrahedraDrawLikeTheUnitOne)
+{
+  ANISO_REQUIRE_DISPLAY();
+  const aniso::RenderResult unit = renderTetrahedron(write("unit.off", tetrahedronOff(1.0, 0.0)));
+  ASSERT_EQ(aniso::test::nonFiniteValues(unit.linear), 0);
+  ASSERT_GT(unit.coveredPixels, 48 * 48 / 10);
+  float peak = 0.0f;
+  for (std::size_t i = 0; i < unit.linear.data.size(); ++i)
+    if (i % 4 != 3) // radiance, not coverage
+      peak = std::max(peak, unit.linear.data[i]);
+  ASSERT_GT(peak, 0.0f);
+  struct Case
+  {
+    const char* name;
+    double scale;
+    double offset;
+  };
+  for (const Case& c :
+       {Case{"huge.off", 1e30, 0.0}, Case{"tiny.off", 1e-30, 0.0}, Case{"far.off", 1.0, 1e7}})
+  {
+    SCOPED_TRACE(c.name);
+    const aniso::RenderResult r =
+        renderTetrahedron(write(c.name, tetrahedronOff(c.scale, c.offset)));
+    ASSERT_EQ(aniso::test::nonFiniteValues(r.linear), 0);
+    EXPECT_EQ(r.coveredPixels, unit.coveredPixels);
+    ASSERT_EQ(r.linear.data.size(), unit.linear.data.size());
+    double worst = 0.0;
+    for (std::size_t i = 0; i < r.linear.data.size(); ++i)
+      worst = std::max(worst, double(std::abs(r.linear.data[i] - unit.linear.data[i])));
+    std::printf("%s: largest channel difference to the unit image %.3g (unit peak %.3g)\n", c.name,
+                worst, double(peak));
+    EXPECT_LE(worst, 1e-3 * double(peak));
+  }
+}
