@@ -1,5 +1,6 @@
 #include "LeadrMaterial.h"
 
+#include "DrawingFrame.h"
 #include "EnvironmentLighting.h"
 #include "RendererMatrices.h"
 #include "ShaderHook.h"
@@ -156,9 +157,7 @@ public:
   std::string name;
   ShaderHook hook;
   bool installed = false;
-  std::vector<float> lightVectors;     // 4 per light
-  std::vector<float> lightIntensities; // 3 per light
-  int lightCount = 0;
+  std::vector<Light> lights;
   SurfaceShaderMaterial* owner = nullptr;
 
   // The code is the same for every mesh that has the arrays: install it once.
@@ -213,11 +212,25 @@ public:
     setUniformMatrix(program, "leadrNormalToWorld",
                      det != 0.0 && std::isfinite(det) ? glm::transpose(glm::inverse(toWorld))
                                                       : toWorld);
-    program->SetUniformi("leadrLightCount", lightCount);
-    if (lightCount > 0)
+    // Point lights move with the surface into the frame it is drawn in (DrawingFrame.h).
+    const DrawingFrame drawing = drawingFrame(actor);
+    std::vector<float> vectors;     // 4 per light
+    std::vector<float> intensities; // 3 per light
+    for (const Light& given : lights)
     {
-      program->SetUniform4fv("leadrLightVector", lightCount, lightVectors.data());
-      program->SetUniform3fv("leadrLightIntensity", lightCount, lightIntensities.data());
+      const Light light = drawing.lightToDrawing(given);
+      const bool point = light.type == LightType::Point;
+      const glm::dvec3 v = point ? light.vector : glm::normalize(light.vector);
+      vectors.insert(vectors.end(), {float(v.x), float(v.y), float(v.z), point ? 1.0f : 0.0f});
+      intensities.insert(intensities.end(), {float(light.intensity.x), float(light.intensity.y),
+                                             float(light.intensity.z)});
+    }
+    const int count = static_cast<int>(lights.size());
+    program->SetUniformi("leadrLightCount", count);
+    if (count > 0)
+    {
+      program->SetUniform4fv("leadrLightVector", count, vectors.data());
+      program->SetUniform3fv("leadrLightIntensity", count, intensities.data());
     }
     owner->setModelUniforms(program, window);
   }
@@ -268,19 +281,7 @@ void SurfaceShaderMaterial::detach()
 void SurfaceShaderMaterial::setLights(const std::vector<Light>& lights)
 {
   validateShaderLights(lights);
-  impl_->lightVectors.clear();
-  impl_->lightIntensities.clear();
-  for (const Light& light : lights)
-  {
-    const bool point = light.type == LightType::Point;
-    const glm::dvec3 v = point ? light.vector : glm::normalize(light.vector);
-    impl_->lightVectors.insert(impl_->lightVectors.end(),
-                               {float(v.x), float(v.y), float(v.z), point ? 1.0f : 0.0f});
-    impl_->lightIntensities.insert(
-        impl_->lightIntensities.end(),
-        {float(light.intensity.x), float(light.intensity.y), float(light.intensity.z)});
-  }
-  impl_->lightCount = static_cast<int>(lights.size());
+  impl_->lights = lights;
   changed();
 }
 

@@ -1,5 +1,6 @@
 #include "LitModelMaterial.h"
 
+#include "DrawingFrame.h"
 #include "MaterialShaderSource.h"
 #include "RendererMatrices.h"
 #include "ShaderHook.h"
@@ -178,9 +179,10 @@ public:
     float vectors[kMaxLights][4] = {};
     float intensities[kMaxLights][3] = {};
     const int count = static_cast<int>(settings.lights.size());
+    const DrawingFrame drawing = drawingFrame(actor); // point lights move with the surface
     for (int i = 0; i < count; ++i)
     {
-      const Light& light = settings.lights[std::size_t(i)];
+      const Light light = drawing.lightToDrawing(settings.lights[std::size_t(i)]);
       const bool point = light.type == LightType::Point;
       const glm::dvec3 vector = point ? light.vector : glm::normalize(light.vector);
       for (int c = 0; c < 3; ++c)

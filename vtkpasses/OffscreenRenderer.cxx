@@ -1,6 +1,7 @@
 #include "OffscreenRenderer.h"
 
 #include "AnisoMaterial.h"
+#include "DrawingFrame.h"
 #include "EnvironmentLighting.h"
 #include "error.h"
 #include "vtkAnisoAccumulationPass.h"
@@ -85,38 +86,6 @@ void requireDisplay()
   }
 }
 
-// The GL pipeline computes in single precision: positions, the view and projection matrices, the
-// clipping range and the shaders' view vectors (camera minus surface point) lose everything at
-// 1e30 (overflow of squares), at 1e-30 (underflow) and far from the origin (rounding). So the
-// surface is drawn in a frame where its bounding sphere is the unit sphere at the origin, mapped
-// from the mesh's own coordinates in double precision. The view is invariant under this map
-// (the camera moves with it), and the environment lighting only depends on directions.
-struct DrawingFrame
-{
-  glm::dvec3 centre{0.0};
-  double radius = 1.0;
-
-  glm::dvec3 toDrawing(const glm::dvec3& p) const { return (p - centre) / radius; }
-};
-
-vtkSmartPointer<vtkPolyData> inDrawingFrame(vtkPolyData* surface, const DrawingFrame& frame)
-{
-  auto drawn = vtkSmartPointer<vtkPolyData>::New();
-  drawn->ShallowCopy(surface); // cells and attributes are shared; directions do not change
-  vtkPoints* in = surface->GetPoints();
-  vtkNew<vtkPoints> out;
-  out->SetDataTypeToFloat();
-  out->SetNumberOfPoints(in->GetNumberOfPoints());
-  for (vtkIdType i = 0; i < in->GetNumberOfPoints(); ++i)
-  {
-    double p[3];
-    in->GetPoint(i, p);
-    const glm::dvec3 q = frame.toDrawing(glm::dvec3(p[0], p[1], p[2]));
-    out->SetPoint(i, q.x, q.y, q.z);
-  }
-  drawn->SetPoints(out);
-  return drawn;
-}
 } // namespace
 
 double medianSeconds(std::vector<double> seconds)
@@ -138,17 +107,15 @@ RenderResult renderOffscreen(const RenderSettings& s)
   auto lighting = std::make_shared<EnvironmentLighting>(s.environment, s.cubeSize);
   lighting->setRotationDegrees(s.environmentRotationDegrees);
 
-  DrawingFrame drawing;
-  boundingSphere(s.surface, drawing.centre, drawing.radius);
-  if (!(drawing.radius > 0.0) || !std::isfinite(drawing.radius))
-  {
-    throw errorAbout("view", "the object has no extent");
-  }
+  // Drawn in the frame of the surface's bounding sphere (DrawingFrame.h): any size or distance
+  // from the origin draws like a unit mesh at the origin.
+  const DrawingFrame drawing = drawingFrameOf(s.surface);
   vtkNew<vtkOpenGLPolyDataMapper> mapper;
   mapper->SetInputData(inDrawingFrame(s.surface, drawing));
   mapper->ScalarVisibilityOff();
   vtkNew<vtkActor> actor;
   actor->SetMapper(mapper);
+  setDrawingFrame(actor, drawing); // for the point lights of the materials installed on it
 
   vtkNew<vtkOpenGLRenderer> renderer;
   renderer->AddActor(actor);
@@ -160,14 +127,8 @@ RenderResult renderOffscreen(const RenderSettings& s)
   window->AddRenderer(renderer);
 
   // A given camera is in the mesh's coordinates, like the surface: mapped the same way.
-  CameraPlacement placement = placeCamera(s.view, glm::dvec3(0.0), 1.0);
-  if (s.camera)
-  {
-    placement = *s.camera;
-    placement.position = drawing.toDrawing(s.camera->position);
-    placement.focalPoint = drawing.toDrawing(s.camera->focalPoint);
-    placement.parallelScale = s.camera->parallelScale / drawing.radius;
-  }
+  const CameraPlacement placement =
+      s.camera ? drawing.cameraToDrawing(*s.camera) : placeCamera(s.view, glm::dvec3(0.0), 1.0);
   vtkCamera* camera = renderer->GetActiveCamera();
   camera->SetFocalPoint(placement.focalPoint.x, placement.focalPoint.y, placement.focalPoint.z);
   camera->SetPosition(placement.position.x, placement.position.y, placement.position.z);

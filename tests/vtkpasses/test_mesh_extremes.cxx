@@ -3,14 +3,18 @@
 // from the origin, keep their four faces and get the same unit normals as at unit size (the
 // analytic face normals of the tetrahedron are the reference) and finite unit tangents
 // orthogonal to them; a vertex beyond the float range (1e39) leaves only slivers, dropped as
-// zero-area faces (docs/MESHES.md states what the renderer then shows). Texture coordinates
-// with a NaN are discarded whole. And a mesh without texture coordinates given maps renders
-// without them (the variant holds none of their code) rather than failing, every pixel finite.
+// zero-area faces. Texture coordinates (and normals) with a NaN are discarded whole, from PLY
+// and from OBJ (VTK's reader). A mesh without texture coordinates given maps renders without
+// them (the variant holds none of their code) rather than failing, every pixel finite. And the
+// tiny, huge and far tetrahedra render the image of the unit one (the view is invariant under
+// scaling and moving mesh, camera and lights together).
+#include "LitModelMaterial.h"
 #include "MeshLoader.h"
 #include "OffscreenRenderer.h"
 #include "SurfacePreparation.h"
 #include "env/environment.h"
 #include "error.h"
+#include "lights/light.h"
 #include "mesh_test_helpers.h"
 #include "render_test_helpers.h"
 
@@ -232,7 +236,18 @@ TEST_F(MeshExtremes, MapsOnAMeshWithoutTextureCoordinatesAreLeftOut)
 
 namespace
 {
-aniso::RenderResult renderTetrahedron(const std::string& path)
+// What the drawing depends on, given in the mesh's coordinates: the mesh scaled by SCALE about
+// the origin and moved by OFFSET along (1, 1, 1); the camera (placed around the mesh's bounding
+// sphere, as the window's is) and the point light moved with it, the light's intensity times
+// SCALE^2 so that its irradiance on the surface stays the same.
+enum class Shading
+{
+  Environment, // the anisotropic material under the studio, the camera placed by the renderer
+  PointLight   // the lit AS model under one point light, a given camera
+};
+
+aniso::RenderResult renderTetrahedron(const std::string& path, double scale, double offset,
+                                      Shading shading)
 {
   const aniso::LoadedMesh mesh = aniso::loadMesh(path);
   aniso::RenderSettings settings;
@@ -244,48 +259,69 @@ aniso::RenderResult renderTetrahedron(const std::string& path)
   settings.material.samples = 8;
   settings.jitter = false;
   settings.view.direction = glm::dvec3(1.0, -2.0, 1.5); // three faces in view
+  if (shading == Shading::PointLight)
+  {
+    glm::dvec3 centre;
+    double radius = 0.0;
+    aniso::boundingSphere(settings.surface, centre, radius);
+    settings.camera = aniso::placeCamera(settings.view, centre, radius);
+    aniso::LitModelSettings lit;
+    aniso::Light light;
+    light.type = aniso::LightType::Point;
+    light.vector = glm::dvec3(1.5, -2.0, 2.0) * scale + glm::dvec3(offset);
+    light.intensity = glm::dvec3(6.0) * (scale * scale);
+    lit.lights = {light};
+    settings.installMaterial = aniso::litModelInstaller(lit);
+  }
   return aniso::renderOffscreen(settings);
 }
 } // namespace
 
-// The view is invariant under scaling and translating the mesh (the camera frames the object,
-// the environment lighting depends on directions only), so the unit tetrahedron at the origin
-// is the reference for the same one scaled by 1e30 or 1e-30 or moved 1e7 away: the renderer
-// draws each in a frame normalised to the unit bounding sphere, and the images must agree up to
-// float rounding of the vertex positions (bound: every channel within 1e-3 of the unit image's
-// brightest radiance, coverage included, and the same pixels covered). Before that frame, 1e30 drew
-// a black surface on a uniform background, 1e-30 nothing, and 1e7 streaks.
+// The view is invariant under scaling and translating the mesh together with the camera and the
+// point lights (the camera frames the object, the environment lighting depends on directions
+// only), so the unit tetrahedron at the origin is the reference for the same one scaled by 1e30
+// or 1e-30 or moved 1e7 away: the renderer draws each in a frame normalised to the unit bounding
+// sphere, and the images must agree up to float rounding of the vertex positions (bound: every
+// channel within 1e-3 of the unit image's brightest radiance, coverage included, and the same
+// pixels covered). Before that frame, 1e30 drew a black surface on a uniform background, 1e-30
+// nothing, and 1e7 streaks.
 TEST_F(MeshExtremes, TinyHugeAndFarTetrahedraDrawLikeTheUnitOne)
 {
   ANISO_REQUIRE_DISPLAY();
-  const aniso::RenderResult unit = renderTetrahedron(write("unit.off", tetrahedronOff(1.0, 0.0)));
-  ASSERT_EQ(aniso::test::nonFiniteValues(unit.linear), 0);
-  ASSERT_GT(unit.coveredPixels, 48 * 48 / 10);
-  float peak = 0.0f;
-  for (std::size_t i = 0; i < unit.linear.data.size(); ++i)
-    if (i % 4 != 3) // radiance, not coverage
-      peak = std::max(peak, unit.linear.data[i]);
-  ASSERT_GT(peak, 0.0f);
-  struct Case
+  for (Shading shading : {Shading::Environment, Shading::PointLight})
   {
-    const char* name;
-    double scale;
-    double offset;
-  };
-  for (const Case& c :
-       {Case{"huge.off", 1e30, 0.0}, Case{"tiny.off", 1e-30, 0.0}, Case{"far.off", 1.0, 1e7}})
-  {
-    SCOPED_TRACE(c.name);
-    const aniso::RenderResult r =
-        renderTetrahedron(write(c.name, tetrahedronOff(c.scale, c.offset)));
-    ASSERT_EQ(aniso::test::nonFiniteValues(r.linear), 0);
-    EXPECT_EQ(r.coveredPixels, unit.coveredPixels);
-    ASSERT_EQ(r.linear.data.size(), unit.linear.data.size());
-    double worst = 0.0;
-    for (std::size_t i = 0; i < r.linear.data.size(); ++i)
-      worst = std::max(worst, double(std::abs(r.linear.data[i] - unit.linear.data[i])));
-    std::printf("%s: largest channel difference to the unit image %.3g (unit peak %.3g)\n", c.name,
-                worst, double(peak));
-    EXPECT_LE(worst, 1e-3 * double(peak));
+    SCOPED_TRACE(shading == Shading::Environment ? "environment" : "point light");
+    const aniso::RenderResult unit =
+        renderTetrahedron(write("unit.off", tetrahedronOff(1.0, 0.0)), 1.0, 0.0, shading);
+    ASSERT_EQ(aniso::test::nonFiniteValues(unit.linear), 0);
+    ASSERT_GT(unit.coveredPixels, 48 * 48 / 10);
+    float peak = 0.0f;
+    for (std::size_t i = 0; i < unit.linear.data.size(); ++i)
+      if (i % 4 != 3) // radiance, not coverage
+        peak = std::max(peak, unit.linear.data[i]);
+    ASSERT_GT(peak, 0.0f);
+    struct Case
+    {
+      const char* name;
+      double scale;
+      double offset;
+    };
+    for (const Case& c :
+         {Case{"huge.off", 1e30, 0.0}, Case{"tiny.off", 1e-30, 0.0}, Case{"far.off", 1.0, 1e7}})
+    {
+      SCOPED_TRACE(c.name);
+      const aniso::RenderResult r = renderTetrahedron(
+          write(c.name, tetrahedronOff(c.scale, c.offset)), c.scale, c.offset, shading);
+      ASSERT_EQ(aniso::test::nonFiniteValues(r.linear), 0);
+      EXPECT_EQ(r.coveredPixels, unit.coveredPixels);
+      ASSERT_EQ(r.linear.data.size(), unit.linear.data.size());
+      double worst = 0.0;
+      for (std::size_t i = 0; i < r.linear.data.size(); ++i)
+        worst = std::max(worst, double(std::abs(r.linear.data[i] - unit.linear.data[i])));
+      std::printf("%s, %s: largest channel difference to the unit image %.3g (unit peak %.3g)\n",
+                  shading == Shading::Environment ? "environment" : "point light", c.name, worst,
+                  double(peak));
+      EXPECT_LE(worst, 1e-3 * double(peak));
+    }
   }
 }
