@@ -762,7 +762,7 @@ int SceneView::targetSamples() const
 
 bool SceneView::converged() const
 {
-  return !interacting_ && !lightingBusy() && pass_->IsConverged();
+  return !interacting_ && !lightingBusy() && pass_->IsConverged() && !presentPending_;
 }
 
 void SceneView::requestRender()
@@ -775,14 +775,13 @@ void SceneView::requestRender()
 
 void SceneView::renderNow()
 {
-  // A refinement frame in the middle of a run goes into the mean without reaching the screen:
+  frame_->setInterval(0);
+  // With a frame budget a refinement frame goes into the mean without reaching the screen:
   // showing a frame (the widget's copy, the window's composition and buffer swap) costs about
-  // as much as drawing one of few samples. Every kPresentIntervalMs the mean so far is shown by
-  // a step of its own (presentFrame), so the two costs never add up in one stall. The first
-  // frame of a run, the last, and frames while things move are shown as they are drawn.
-  const int before = pass_->GetAccumulatedFrames();
-  const bool hide = frameBudgetMs_ > 0 && !interacting_ && !presentNext_ && before >= 1 &&
-                    before + 1 < pass_->GetTargetFrames();
+  // as much as drawing one of few samples. The mean is shown by a step of its own
+  // (presentFrame) after the first frame of a run, every kPresentIntervalMs and after the last,
+  // so the two costs never add up in one stall. Frames while things move are shown as drawn.
+  const bool hide = frameBudgetMs_ > 0 && !interacting_ && !pass_->IsConverged();
   errorOutput_->drawing = true;
   errorOutput_->spoke = false;
   const bool swap = window_->GetSwapBuffers() != 0;
@@ -796,17 +795,16 @@ void SceneView::renderNow()
     window_->SwapBuffersOn();
   }
   errorOutput_->drawing = false;
-  const int after = pass_->GetAccumulatedFrames();
-  // A run that restarted or completed within a hidden frame is shown by the next one.
-  presentNext_ = hide && (after <= 1 || pass_->IsConverged());
   if (!hide)
   {
     presentClock_.start();
   }
-  else if (!presentNext_ &&
-           (!presentClock_.isValid() || presentClock_.elapsed() >= kPresentIntervalMs))
+  else if (!presentPending_ &&
+           (pass_->GetAccumulatedFrames() <= 1 || pass_->IsConverged() ||
+            !presentClock_.isValid() || presentClock_.elapsed() >= kPresentIntervalMs))
   {
     presentClock_.start();
+    presentPending_ = true;
     QTimer::singleShot(0, this, &SceneView::presentFrame);
   }
   auto* gl = vtkOpenGLRenderWindow::SafeDownCast(window_);
@@ -868,7 +866,7 @@ void SceneView::renderNow()
   }
   // Progressive refinement: one more frame once pending events are handled, so the window
   // stays responsive between frames.
-  if ((!interacting_ && !pass_->IsConverged()) || presentNext_)
+  if (!interacting_ && !pass_->IsConverged())
   {
     requestRender();
   }
@@ -876,11 +874,18 @@ void SceneView::renderNow()
 
 void SceneView::presentFrame()
 {
+  presentPending_ = false;
   // The window's last drawing (the mean after the latest hidden frame) to the screen.
   if (window_->GetSwapBuffers())
   {
     window_->MakeCurrent();
     window_->Frame();
+    // The widget paints in the next pass of the event loop; the next frame waits a little, so
+    // the two are not handled back to back without the events between them.
+    if (frame_->isActive())
+    {
+      frame_->start(kAfterPresentMs);
+    }
     emit frameRendered(accumulatedSamples(), targetSamples());
   }
 }

@@ -58,10 +58,11 @@ public:
   // Samples per pixel of the frames drawn while something moves.
   static constexpr int kInteractiveSamples = 1;
   static constexpr int kDefaultSettleMs = 300;
-  static constexpr int kDefaultFrameBudgetMs = 60;
-  // With a frame budget, the mean of a refinement run reaches the screen this often (and with
+  static constexpr int kDefaultFrameBudgetMs = 70;
+  // With a frame budget, the mean of a refinement run reaches the screen this often (and after
   // its first and last frames).
   static constexpr int kPresentIntervalMs = 250;
+  static constexpr int kAfterPresentMs = 10;
 
   SceneView(SceneModel* model, SceneAssets* assets, LutScheduler* luts, vtkRenderWindow* window,
             QObject* parent = nullptr);
@@ -177,8 +178,8 @@ private:
   int frameDrawnSamples_ = 1;
   // The lighting on screen has its environment-sampling distribution (baked on the worker).
   bool lightingSampled_ = false;
-  QElapsedTimer presentClock_; // since a frame last reached the screen
-  bool presentNext_ = false;
+  QElapsedTimer presentClock_;  // since a frame last reached the screen
+  bool presentPending_ = false; // presentFrame is queued
   QThreadPool* lightingPool_;
   int lightingRequest_ = 0; // sequence number of the latest lighting request
   bool lightingInFlight_ = false;
