@@ -204,8 +204,8 @@ SceneView::SceneView(SceneModel* model, SceneAssets* assets, LutScheduler* luts,
   // that drew the surface are what the frame budget learns from.
   clock_.start();
   frameTiming_->SetClientData(this);
-  frameTiming_->SetCallback([](vtkObject*, unsigned long event, void* self, void*)
-                            { static_cast<SceneView*>(self)->frameEvent(event); });
+  frameTiming_->SetCallback([](vtkObject* caller, unsigned long event, void* self, void*)
+                            { static_cast<SceneView*>(self)->frameEvent(caller, event); });
   window_->AddObserver(vtkCommand::StartEvent, frameTiming_);
   window_->AddObserver(vtkCommand::EndEvent, frameTiming_);
   mapper_->AddObserver(vtkCommand::StartEvent, frameTiming_);
@@ -338,17 +338,17 @@ int SceneView::planRunSamples() const
                             full_.samples, total);
 }
 
-void SceneView::frameEvent(unsigned long event)
+void SceneView::frameEvent(vtkObject* caller, unsigned long event)
 {
-  if (event == vtkCommand::StartEvent && window_ && frameStartNs_ < 0)
+  if (caller == window_ && event == vtkCommand::StartEvent)
   {
-    // The window's start (the mapper's start comes inside it).
     frameStartNs_ = clock_.nsecsElapsed();
     frameDrewSurface_ = false;
     return;
   }
-  if (event == vtkCommand::StartEvent)
+  if (caller != window_)
   {
+    // The surface's mapper starts drawing: this frame adds to the mean.
     frameDrewSurface_ = true;
     frameDrawnSamples_ = material_ ? material_->settings().samples : 1;
     return;

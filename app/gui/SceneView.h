@@ -41,6 +41,7 @@ class vtkOpenGLRenderer;
 class vtkRenderStepsPass;
 class vtkRenderWindow;
 class vtkCallbackCommand;
+class vtkObject;
 
 namespace aniso
 {
@@ -139,7 +140,7 @@ private:
   // Shows what the window drew last (a hidden frame's mean), without drawing.
   void presentFrame();
   // Window render start and end, the surface's draw in between: a frame's cost.
-  void frameEvent(unsigned long event);
+  void frameEvent(vtkObject* caller, unsigned long event);
   // The samples per frame of a still run (the frame budget's choice).
   int planRunSamples() const;
   void beginInteraction();
