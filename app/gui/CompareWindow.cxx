@@ -1,5 +1,6 @@
 #include "CompareWindow.h"
 
+#include "DrawingFrame.h"
 #include "LitModelMaterial.h"
 #include "LitModelView.h"
 #include "SceneView.h"
@@ -135,6 +136,7 @@ void CompareWindow::refresh()
   for (auto& pane : panes_)
   {
     pane->mapper->SetInputData(mesh);
+    setDrawingFrame(pane->actor, drawingFrame(sceneActor)); // the scene's mesh, point lights
   }
   camera_->DeepCopy(view_->renderer()->GetActiveCamera());
   for (auto& pane : panes_)

@@ -1,5 +1,6 @@
 #include "LitModelView.h"
 
+#include "DrawingFrame.h"
 #include "LitModelMaterial.h"
 #include "SceneShading.h"
 #include "SceneView.h"
@@ -141,6 +142,7 @@ void LitModelView::update()
       {
         mapper_->SetInputData(mesh);
       }
+      setDrawingFrame(actor_, drawingFrame(sceneActor_)); // the scene's mesh, its point lights
       if (!material_)
       {
         material_ = std::make_unique<LitModelMaterial>(settings);

@@ -426,25 +426,10 @@ void SceneView::applySurface()
   const std::string& mesh = model_->text("mesh");
   const std::string& tangents = model_->text("tangents");
   const std::shared_ptr<const PreparedSurface> surface = assets_->surface(mesh, tangents);
-  vtkPolyData* polyData = surface->polyData;
-  mapper_->SetInputData(polyData);
-  double bounds[6];
-  polyData->GetBounds(bounds);
-  double r2 = 0.0;
-  for (int i = 0; i < 3; ++i)
-  {
-    surfaceCentre_[i] = 0.5 * (bounds[2 * i] + bounds[2 * i + 1]);
-  }
-  vtkPoints* points = polyData->GetPoints();
-  for (vtkIdType i = 0; i < points->GetNumberOfPoints(); ++i)
-  {
-    double p[3];
-    points->GetPoint(i, p);
-    const double d[3] = {p[0] - surfaceCentre_[0], p[1] - surfaceCentre_[1],
-                         p[2] - surfaceCentre_[2]};
-    r2 = std::max(r2, d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
-  }
-  surfaceRadius_ = std::max(std::sqrt(r2), 1e-12);
+  surface_ = surface->polyData;
+  drawing_ = drawingFrameOf(surface_);
+  mapper_->SetInputData(inDrawingFrame(surface_, drawing_));
+  setDrawingFrame(actor_, drawing_);
   for (const std::string& note : assets_->surfaceNotes(mesh, tangents))
   {
     emit noteAdded(QString::fromStdString(note));
@@ -661,13 +646,17 @@ void SceneView::applyCameraFromModel()
     }
     return;
   }
+  const glm::dvec3 position =
+      drawing_.pointToDrawing({c.position[0], c.position[1], c.position[2]});
+  const glm::dvec3 focalPoint =
+      drawing_.pointToDrawing({c.focalPoint[0], c.focalPoint[1], c.focalPoint[2]});
   vtkCamera* camera = renderer_->GetActiveCamera();
-  camera->SetPosition(c.position.data());
-  camera->SetFocalPoint(c.focalPoint.data());
+  camera->SetPosition(position.x, position.y, position.z);
+  camera->SetFocalPoint(focalPoint.x, focalPoint.y, focalPoint.z);
   camera->SetViewUp(c.viewUp.data());
   camera->SetViewAngle(c.viewAngle);
   camera->SetParallelProjection(c.parallel);
-  camera->SetParallelScale(c.parallelScale);
+  camera->SetParallelScale(c.parallelScale / drawing_.radius);
   renderer_->ResetCameraClippingRange();
   requestRender();
 }
@@ -682,8 +671,7 @@ void SceneView::resetCamera()
   {
     view.margin *= static_cast<double>(size[1]) / size[0];
   }
-  const CameraPlacement p =
-      placeCamera(view, {surfaceCentre_[0], surfaceCentre_[1], surfaceCentre_[2]}, surfaceRadius_);
+  const CameraPlacement p = placeCamera(view, glm::dvec3(0.0), 1.0); // the drawing frame
   vtkCamera* camera = renderer_->GetActiveCamera();
   camera->SetFocalPoint(p.focalPoint.x, p.focalPoint.y, p.focalPoint.z);
   camera->SetPosition(p.position.x, p.position.y, p.position.z);
@@ -708,14 +696,20 @@ CameraState SceneView::currentCamera() const
   camera->GetViewUp(c.viewUp.data());
   c.viewAngle = camera->GetViewAngle();
   c.parallel = camera->GetParallelProjection() != 0;
-  c.parallelScale = camera->GetParallelScale();
+  // From the drawing frame back to the mesh's coordinates.
+  for (std::size_t i = 0; i < 3; ++i)
+  {
+    c.position[i] = c.position[i] * drawing_.radius + drawing_.centre[int(i)];
+    c.focalPoint[i] = c.focalPoint[i] * drawing_.radius + drawing_.centre[int(i)];
+  }
+  c.parallelScale = camera->GetParallelScale() * drawing_.radius;
   return c;
 }
 
 RenderSettings SceneView::renderSettings(int width, int height) const
 {
   RenderSettings s;
-  s.surface = mapper_->GetInput();
+  s.surface = surface_;
   s.environment = assets_->environment(model_->text("env"));
   s.cubeSize = model_->integer("cube-size");
   s.environmentRotationDegrees = model_->real("env-rotation");

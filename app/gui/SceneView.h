@@ -15,6 +15,7 @@
 // once and changes nothing. Switching environment sampling on bakes a lighting with its
 // distribution the same way; until it is on screen the material samples its lobe only.
 #include "DisplaySettings.h"
+#include "DrawingFrame.h"
 #include "MaterialSettings.h"
 #include "OffscreenRenderer.h"
 #include "SceneModel.h"
@@ -159,8 +160,10 @@ private:
   std::shared_ptr<EnvironmentLighting> lighting_;
   std::unique_ptr<AnisoMaterial> material_;
   MaterialSettings full_; // what the model asks for, LUT inputs held back until baked
-  double surfaceRadius_ = 1.0;
-  double surfaceCentre_[3] = {0.0, 0.0, 0.0};
+  // The surface is drawn in the frame of its unit bounding sphere (DrawingFrame.h), so the
+  // renderer's camera lives there too; the model's camera stays in the mesh's coordinates.
+  DrawingFrame drawing_;
+  vtkSmartPointer<vtkPolyData> surface_; // in the mesh's coordinates, for offscreen renders
   QTimer* settle_;
   QTimer* frame_;
   bool interacting_ = false;

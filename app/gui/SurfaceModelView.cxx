@@ -1,5 +1,6 @@
 #include "SurfaceModelView.h"
 
+#include "DrawingFrame.h"
 #include "LeadrMaterial.h"
 #include "LitModelView.h"
 #include "MicrostructureMaterial.h"
@@ -175,6 +176,7 @@ void SurfaceModelView::update()
     auto actor = vtkSmartPointer<vtkActor>::New();
     actor->SetMapper(mapper);
     actor->SetUserMatrix(sceneActor_->GetUserMatrix());
+    setDrawingFrame(actor, drawingFrame(sceneActor_)); // the scene's mesh, its point lights
     std::shared_ptr<void> material = install(actor, renderer_, lighting);
     if (actor_)
     {
