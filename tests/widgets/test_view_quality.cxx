@@ -1,6 +1,8 @@
 // The still view's quality and the UI thread (needs an X server: run under Xvfb, serially).
 // Checks:
-//   - frames capped by the frame budget (one sample each) converge to the same image as
+//   - frames capped by the frame budget (one sample each, drawn without reaching the screen) end
+//     with the final mean on screen (the widget's picture equals the view drawn again), and
+//     converge to the same image as
 //     uncapped frames (the material's 16 samples each): the same total sample count, and on the
 //     pixels the surface covers whole, the same mean radiance and a per-pixel difference within
 //     the noise of 128 samples (statistical: two unbiased estimates of one integral);
@@ -29,6 +31,7 @@
 #include <QtTest>
 #include <cmath>
 #include <vtkOpenGLRenderer.h>
+#include <vtkRenderWindow.h>
 
 using aniso::numberValue;
 using aniso::textValue;
@@ -114,6 +117,16 @@ private slots:
     QCOMPARE(view->targetSamples(), 128);
     QCOMPARE(capped.width, uncapped.width);
     QCOMPARE(capped.height, uncapped.height);
+
+    // Its frames were drawn without reaching the screen; what the widget shows once converged
+    // is the final mean all the same: the same picture as the window drawing the converged
+    // view again in the ordinary way.
+    QVTKOpenGLNativeWidget* widget = window.vtkWidget();
+    const QImage shown = widget->grabFramebuffer().convertToFormat(QImage::Format_RGB32);
+    widget->renderWindow()->Render();
+    const QImage redrawn = widget->grabFramebuffer().convertToFormat(QImage::Format_RGB32);
+    QCOMPARE(shown.size(), redrawn.size());
+    QVERIFY(shown == redrawn);
 
     double sumA = 0.0;
     double sumB = 0.0;
