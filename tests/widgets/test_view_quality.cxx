@@ -2,10 +2,10 @@
 // Checks:
 //   - frames capped by the frame budget (one sample each, drawn without reaching the screen) end
 //     with the final mean on screen (the widget's picture equals the view drawn again), and
-//     converge to the same image as
-//     uncapped frames (the material's 16 samples each): the same total sample count, and on the
-//     pixels the surface covers whole, the same mean radiance and a per-pixel difference within
-//     the noise of 128 samples (statistical: two unbiased estimates of one integral);
+//     converge to the same image as uncapped frames (the material's 16 samples each): the same
+//     total sample count, and on the pixels the surface covers whole, the same mean radiance and
+//     a per-pixel difference within the noise of 128 samples (statistical: two unbiased
+//     estimates of one integral);
 //   - switching environment sampling to mis never bakes its distribution on the UI thread: the
 //     lighting on screen stays, the material keeps sampling the lobe only and the view says it
 //     is busy until the worker's lighting (with the distribution) replaces it;
