@@ -17,8 +17,10 @@
 #include <fcntl.h>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <mutex>
 #include <new>
+#include <optional>
 #include <poll.h>
 #include <sys/resource.h>
 #include <sys/wait.h>
@@ -359,13 +361,98 @@ vtkSmartPointer<vtkPolyData> readLegacy(const std::string& path, ScopedVtkMessag
   return output;
 }
 
+// vtkOBJReader reads vertex coordinates as floats through an input stream: "nan", "inf" or a
+// value beyond the float range fails the extraction and leaves 0 or the previous line's values
+// in the vertex, a finite position that no later check can tell from a real one. So vertex
+// lines with such a coordinate are rewritten (in a private copy) to hold FLT_MAX there, and the
+// points that come out with a coordinate at +-FLT_MAX are made NaN, for sanitizeSurface to drop
+// with their faces and count. Returns the copy's text, or nothing when every vertex is fine.
+std::optional<std::string> objWithMarkedVertices(const std::string& path)
+{
+  std::ifstream in(path, std::ios::binary);
+  std::string text;
+  std::string line;
+  bool marked = false;
+  while (std::getline(in, line))
+  {
+    size_t at = line.find_first_not_of(" \t");
+    if (at != std::string::npos && line.compare(at, 2, "v ") == 0)
+    {
+      std::string rewritten = line.substr(0, at + 1);
+      at += 1;
+      for (int field = 0; field < 3; ++field)
+      {
+        const size_t start = line.find_first_not_of(" \t", at);
+        if (start == std::string::npos)
+        {
+          break;
+        }
+        size_t end = line.find_first_of(" \t\r", start);
+        end = end == std::string::npos ? line.size() : end;
+        const std::string token = line.substr(start, end - start);
+        char* parsedEnd = nullptr;
+        const double value = std::strtod(token.c_str(), &parsedEnd);
+        const bool number = parsedEnd != token.c_str();
+        const bool unfit = number && (!std::isfinite(value) ||
+                                      std::abs(value) >= double(std::numeric_limits<float>::max()));
+        rewritten += line.substr(at, start - at);
+        rewritten += unfit ? "3.40282347e+38" : token;
+        marked = marked || unfit;
+        at = end;
+      }
+      line = rewritten + line.substr(at);
+    }
+    text += line;
+    text += '\n';
+  }
+  if (!marked)
+  {
+    return std::nullopt;
+  }
+  return text;
+}
+
+vtkSmartPointer<vtkPolyData> readObj(const std::string& path, ScopedVtkMessageCapture& capture)
+{
+  const std::optional<std::string> marked = objWithMarkedVertices(path);
+  const std::filesystem::path copy = std::filesystem::temp_directory_path() /
+                                     ("aniso_obj_vertices_" + std::to_string(::getpid()) + ".obj");
+  if (marked)
+  {
+    std::ofstream(copy, std::ios::binary) << *marked;
+  }
+  vtkNew<vtkOBJReader> reader;
+  reader->SetFileName(marked ? copy.c_str() : path.c_str());
+  reader->Update();
+  if (marked)
+  {
+    std::error_code ignored;
+    std::filesystem::remove(copy, ignored);
+  }
+  throwIfReaderFailed(path, reader, capture);
+  vtkSmartPointer<vtkPolyData> output = reader->GetOutput();
+  vtkPoints* points = output ? output->GetPoints() : nullptr;
+  for (vtkIdType i = 0; points && i < points->GetNumberOfPoints(); ++i)
+  {
+    double p[3];
+    points->GetPoint(i, p);
+    constexpr double kFloatMax = double(std::numeric_limits<float>::max());
+    if (std::abs(p[0]) >= kFloatMax || std::abs(p[1]) >= kFloatMax || std::abs(p[2]) >= kFloatMax)
+    {
+      const double nan = std::numeric_limits<double>::quiet_NaN();
+      points->SetPoint(i, nan, nan, nan);
+    }
+  }
+  return output;
+}
+
 // The formats read by VTK's readers; run inside the isolated child process.
 vtkSmartPointer<vtkPolyData> readWithVtk(const std::string& path, const std::string& ext,
                                          ScopedVtkMessageCapture& capture)
 {
   if (ext == ".obj")
   {
-    return readPolyData<vtkOBJReader>(path, capture);
+    return readObj(path, capture);
   }
   if (ext == ".vtp")
   {
