@@ -18,6 +18,10 @@
 // Errors are aniso::Error "PATH: reason": missing or unreadable file, empty file, unknown
 // extension, whatever the reader reported (VTK's error and warning output is captured while
 // reading, so nothing is printed; warnings end up in MeshReport::readerWarnings), no faces left.
+// vtkOBJReader parses numbers with an input stream that turns "nan", "inf" and values beyond the
+// float range into finite ones without a word; the loader checks the OBJ's own v, vt and vn lines
+// so that such entries count as NaN vertices, texture coordinates and normals, as in the other
+// formats. OBJ positions are stored as float by that reader (the other readers keep doubles).
 // Hostile input (truncated, garbage, out-of-range indices) gives an error or a smaller mesh,
 // never a crash: VTK's readers (OBJ, VTK, VTP, glTF) run in a forked child process with a
 // memory limit and a time limit, which hands the surface back as VTK XML; a crash there
