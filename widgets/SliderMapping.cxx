@@ -9,15 +9,23 @@ namespace aniso
 {
 namespace
 {
+// Logarithmic sliders map log10(offset + value): a range that excludes 0 is purely logarithmic
+// (offset 0); one that includes 0 keeps it reachable with offset 1.
+double logOffset(const ParameterSpec& spec)
+{
+  return spec.minimum > 0.0 ? 0.0 : 1.0;
+}
+
 // Position as a fraction of the slider: where VALUE lies between the declared ends.
 double fractionOf(const ParameterSpec& spec, double value)
 {
   const double v = std::clamp(value, spec.minimum, spec.maximum);
   if (spec.scale == ParameterScale::Logarithmic)
   {
-    const double lo = std::log10(1.0 + spec.minimum);
-    const double hi = std::log10(1.0 + spec.maximum);
-    return (std::log10(1.0 + v) - lo) / (hi - lo);
+    const double c = logOffset(spec);
+    const double lo = std::log10(c + spec.minimum);
+    const double hi = std::log10(c + spec.maximum);
+    return (std::log10(c + v) - lo) / (hi - lo);
   }
   return (v - spec.minimum) / (spec.maximum - spec.minimum);
 }
@@ -57,9 +65,10 @@ double sliderValue(const ParameterSpec& spec, int position)
   double v = 0.0;
   if (spec.scale == ParameterScale::Logarithmic)
   {
-    const double lo = std::log10(1.0 + spec.minimum);
-    const double hi = std::log10(1.0 + spec.maximum);
-    v = std::pow(10.0, lo + f * (hi - lo)) - 1.0;
+    const double c = logOffset(spec);
+    const double lo = std::log10(c + spec.minimum);
+    const double hi = std::log10(c + spec.maximum);
+    v = std::pow(10.0, lo + f * (hi - lo)) - c;
     v = roundToSignificant(v, 3);
   }
   else

@@ -43,6 +43,18 @@ private slots:
     {
       QCOMPARE(aniso::sliderPosition(nu, aniso::sliderValue(nu, p)), p);
     }
+    // A range above 0 is purely logarithmic: each decade of the error target's 1e-4..1 takes a
+    // quarter of the slider, 1% in the middle.
+    const aniso::ParameterSpec& error = aniso::parameterSpec("error-target");
+    QCOMPARE(aniso::sliderValue(error, 250), 1e-3);
+    QCOMPARE(aniso::sliderValue(error, 500), 1e-2);
+    QCOMPARE(aniso::sliderValue(error, 750), 0.1);
+    QCOMPARE(aniso::sliderPosition(error, 0.02),
+             static_cast<int>(std::lround(1000.0 * (std::log10(0.02) + 4.0) / 4.0)));
+    for (int p = 0; p <= aniso::kSliderSteps; ++p)
+    {
+      QCOMPARE(aniso::sliderPosition(error, aniso::sliderValue(error, p)), p);
+    }
     // Linear parameters land on their declared step.
     const aniso::ParameterSpec& exposure = aniso::parameterSpec("exposure");
     QCOMPARE(aniso::sliderValue(exposure, 500), 0.0);
