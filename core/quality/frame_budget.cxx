@@ -96,6 +96,24 @@ int chooseFrameSamples(const FrameCostModel& model, double pixels, double budget
   return largestDivisorAtMost(runTotal, affordable);
 }
 
+double loadMargin(const std::vector<double>& measuredOverPredicted, double maxMargin)
+{
+  double margin = 1.0;
+  for (const double r : measuredOverPredicted)
+  {
+    if (std::isfinite(r) && r > 0.0)
+    {
+      margin = std::max(margin, r);
+    }
+  }
+  return std::min(margin, std::max(maxMargin, 1.0));
+}
+
+bool frameOverran(double measuredSeconds, double budgetSeconds, double tolerance)
+{
+  return budgetSeconds > 0.0 && measuredSeconds > budgetSeconds * (1.0 + std::max(tolerance, 0.0));
+}
+
 int largestDivisorAtMost(int total, int limit)
 {
   const int t = std::max(total, 1);

@@ -45,6 +45,18 @@ FrameCostModel fitFrameCost(const std::vector<FrameCostSample>& measured);
 int chooseFrameSamples(const FrameCostModel& model, double pixels, double budgetSeconds,
                        int maxSamples, int runTotal);
 
+// The factor a plan keeps in hand for a changing machine load (other programs taking the cores):
+// the largest ratio of a recent frame's measured cost to the cost the fit predicted for it, at
+// least 1 (frames that came in under their prediction leave the budget whole) and at most
+// maxMargin (one frame stalled by something else does not shrink every frame without bound).
+// Ratios that are not finite and above 0 are ignored. A run plans with budget / margin.
+double loadMargin(const std::vector<double>& measuredOverPredicted, double maxMargin);
+
+// True when a frame that took measuredSeconds overran the budget by more than tolerance (a
+// fraction of the budget): the load rose since the run was planned, which starts it over with a
+// new plan.
+bool frameOverran(double measuredSeconds, double budgetSeconds, double tolerance);
+
 // The largest divisor of total (>= 1) that is at most limit (at least 1).
 int largestDivisorAtMost(int total, int limit);
 

@@ -4,10 +4,14 @@
 //     both parts non-negative;
 //   - the chosen samples per frame are the largest divisor of the run's total whose predicted
 //     cost meets the budget (values worked out by hand below), the material's own count when it
-//     fits or nothing is known, and 1 at worst; frames x samples per frame stay the run's total.
+//     fits or nothing is known, and 1 at worst; frames x samples per frame stay the run's total;
+//   - under a changing load the plan keeps the largest recent measured/predicted ratio in hand
+//     (bounded), which shrinks the chosen count to what the slower machine meets (worked out by
+//     hand), and a frame overruns only beyond the budget's tolerance.
 #include "quality/frame_budget.h"
 
 #include <gtest/gtest.h>
+#include <limits>
 #include <vector>
 
 namespace aniso
@@ -86,6 +90,51 @@ TEST(FrameBudget, ChoosesTheLargestDivisorWithinTheBudget)
   // No budget, or nothing measured: the material's count.
   EXPECT_EQ(chooseFrameSamples(m, 1e5, 0.0, 16, 256), 16);
   EXPECT_EQ(chooseFrameSamples(FrameCostModel{}, 1e5, 0.060, 16, 256), 16);
+}
+
+TEST(FrameBudget, LoadMarginIsTheLargestRecentOverrun)
+{
+  // Frames that came in under or at their prediction leave the budget whole.
+  EXPECT_EQ(loadMargin({}, 1.5), 1.0);
+  EXPECT_EQ(loadMargin({0.8, 1.0, 0.95}, 1.5), 1.0);
+  // The largest ratio, whatever its position.
+  EXPECT_EQ(loadMargin({1.1, 1.25, 0.9}, 1.5), 1.25);
+  // Bounded: one frame stalled five times over keeps 1.5 in hand.
+  EXPECT_EQ(loadMargin({1.2, 5.0}, 1.5), 1.5);
+  // Ratios that are no measurement (not finite, not above 0) are ignored.
+  EXPECT_EQ(loadMargin({std::numeric_limits<double>::infinity(),
+                        std::numeric_limits<double>::quiet_NaN(), -2.0, 1.125},
+                       1.5),
+            1.125);
+  // A bound below 1 never makes the budget larger.
+  EXPECT_EQ(loadMargin({1.3}, 0.5), 1.0);
+}
+
+TEST(FrameBudget, MarginShrinksThePlanUnderLoad)
+{
+  // The model of ChoosesTheLargestDivisorWithinTheBudget (38 ms + 7.8 ms per sample at 1e5
+  // pixels), budget 80 ms: unloaded (80 - 38) / 7.8 = 5.4 -> 4 of 256. Recent frames took 1.25
+  // times their prediction: planned with 80 / 1.25 = 64 ms, (64 - 38) / 7.8 = 3.3 -> 2; the
+  // frame then costs 1.25 x (38 + 2 x 7.8) = 67 ms, within the budget where 4 samples would
+  // cost 1.25 x 69.2 = 86.5 ms.
+  FrameCostModel m;
+  m.known = true;
+  m.separated = true;
+  m.fixedPerPixel = 38e-3 / 1e5;
+  m.perSamplePerPixel = 7.8e-3 / 1e5;
+  EXPECT_EQ(chooseFrameSamples(m, 1e5, 0.080 / loadMargin({1.0, 1.25}, 1.5), 16, 256), 2);
+  EXPECT_EQ(chooseFrameSamples(m, 1e5, 0.080 / loadMargin({1.0, 0.9}, 1.5), 16, 256), 4);
+}
+
+TEST(FrameBudget, OverrunBeyondTheTolerance)
+{
+  // Budget 70 ms, tolerance 20 %: the limit is 84 ms.
+  EXPECT_FALSE(frameOverran(0.070, 0.070, 0.2));
+  EXPECT_FALSE(frameOverran(0.083, 0.070, 0.2));
+  EXPECT_TRUE(frameOverran(0.085, 0.070, 0.2));
+  // No budget: nothing overruns it; a negative tolerance counts as none.
+  EXPECT_FALSE(frameOverran(1.0, 0.0, 0.2));
+  EXPECT_TRUE(frameOverran(0.071, 0.070, -1.0));
 }
 
 TEST(FrameBudget, LargestDivisor)
