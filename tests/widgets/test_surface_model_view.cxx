@@ -97,6 +97,17 @@ std::vector<std::string> commandLine(const std::string& model)
   }
   return args;
 }
+
+// The messages a spy on errorReported caught, for the failure text.
+QString messagesOf(const QSignalSpy& spy)
+{
+  QStringList messages;
+  for (const QList<QVariant>& arguments : spy)
+  {
+    messages << arguments.at(0).toString();
+  }
+  return messages.join(" | ");
+}
 } // namespace
 
 class TestSurfaceModelView : public QObject
@@ -180,7 +191,7 @@ private slots:
       }
       QVERIFY(difference <= 1e-3 * total);
     }
-    QCOMPARE(errors.count(), 0);
+    QVERIFY2(errors.count() == 0, qPrintable(messagesOf(errors)));
 
     window.editor()->edit("model", textValue("as-env"));
     QVERIFY(!window.surfaceView()->active());
@@ -212,13 +223,13 @@ private slots:
     window.editor()->edit("model", textValue("microstructure"));
     QVERIFY(window.surfaceView()->active());
     vtkActor* drawn = window.surfaceView()->surfaceActor();
-    QCOMPARE(errors.count(), 0);
+    QVERIFY2(errors.count() == 0, qPrintable(messagesOf(errors)));
 
     // The mesh the model refuses: the microstructure drawn before stays, one message says why.
     window.editor()->edit("mesh", textValue(mesh));
     window.editor()->edit("lights", textValue("dir:0,0,1:2"));
     window.editor()->edit("micro-grid", numberValue(2.0));
-    QCOMPARE(errors.count(), 1);
+    QVERIFY2(errors.count() == 1, qPrintable(messagesOf(errors)));
     QVERIFY2(errors.at(0).at(0).toString().contains("texture coordinates"),
              qPrintable(errors.at(0).at(0).toString()));
     QVERIFY(window.surfaceView()->active());
@@ -229,7 +240,7 @@ private slots:
     window.editor()->edit("model", textValue("as-env"));
     QVERIFY(sceneActor->GetVisibility());
     window.editor()->edit("model", textValue("leadr"));
-    QCOMPARE(errors.count(), 2);
+    QVERIFY2(errors.count() == 2, qPrintable(messagesOf(errors)));
     QVERIFY(!window.surfaceView()->active());
     QVERIFY(sceneActor->GetVisibility());
   }
