@@ -316,7 +316,9 @@ int SceneView::planRunSamples() const
   }
   if (!cost.separated)
   {
-    // One sample count measured: a frame of another tells the fixed cost from the samples'.
+    // One sample count measured: a frame of another tells the fixed cost from the samples'; a
+    // frame of 1 when that count was more (the cheapest), else the choice below, which stays
+    // within the budget.
     const int* size = window_->GetSize();
     const long long pixels = static_cast<long long>(size[0]) * size[1];
     int measured = 1;
@@ -327,15 +329,19 @@ int SceneView::planRunSamples() const
         measured = entry.first.second;
       }
     }
-    const int probe = largestDivisorAtMost(total, measured == 1 ? std::min(4, full_.samples) : 1);
-    if (probe != measured)
+    if (measured != 1)
     {
-      return probe;
+      return 1;
     }
   }
   const int* size = window_->GetSize();
-  return chooseFrameSamples(cost, double(size[0]) * double(size[1]), frameBudgetMs_ * 1e-3,
-                            full_.samples, total);
+  // Planned for the machine as it ran the latest frames: the fit follows a change of load only
+  // over several frames.
+  const double budget = frameBudgetMs_ * 1e-3 / loadMargin(loadRatios_, kMaxLoadMargin);
+  // With one sample count measured (1), the assumed split overestimates the cost of more samples,
+  // so a count it lets through stays within the budget and measures the split: at most 4.
+  return chooseFrameSamples(cost, double(size[0]) * double(size[1]), budget,
+                            cost.separated ? full_.samples : std::min(4, full_.samples), total);
 }
 
 void SceneView::frameEvent(vtkObject* caller, unsigned long event)
@@ -344,6 +350,7 @@ void SceneView::frameEvent(vtkObject* caller, unsigned long event)
   {
     frameStartNs_ = clock_.nsecsElapsed();
     frameDrewSurface_ = false;
+    lastFrameSeconds_ = 0.0;
     return;
   }
   if (caller != window_)
@@ -363,8 +370,23 @@ void SceneView::frameEvent(vtkObject* caller, unsigned long event)
   {
     return; // a converged view shown again, or nothing to draw
   }
+  lastFrameSeconds_ = seconds;
   const int* size = window_->GetSize();
   const auto key = std::make_pair(static_cast<long long>(size[0]) * size[1], frameDrawnSamples_);
+  // How far the fit was off for this frame, before it learns from it: the load margin.
+  const FrameCostModel before = frameCost();
+  if (before.known)
+  {
+    const double predicted = before.predictSeconds(frameDrawnSamples_, double(key.first));
+    if (predicted > 0.0)
+    {
+      loadRatios_.push_back(seconds / predicted);
+      if (loadRatios_.size() > std::size_t(kLoadFrames))
+      {
+        loadRatios_.erase(loadRatios_.begin());
+      }
+    }
+  }
   // A running mean that follows the view (how much of it the surface covers) within a few
   // frames.
   const auto known = frameCosts_.find(key);
@@ -541,13 +563,77 @@ void SceneView::lightingBaked(int id, std::shared_ptr<EnvironmentLighting> baked
     // The lighting on screen stays.
     emit errorOccurred(error);
   }
-  else if (baked != lighting_)
+  else if (baked != lighting_ && uploadLighting(*baked, sampled))
   {
-    baked->setRotationDegrees(model_->real("env-rotation"));
-    lighting_ = std::move(baked);
-    lightingSampled_ = sampled;
+    // Its textures are in the GL now; the switch to it, with the first frame of the new shader
+    // variant, comes in a later pass of the event loop (events in between are handled).
+    nextLighting_ = std::move(baked);
+    nextLightingSampled_ = sampled;
+    nextLightingId_ = id;
+    QTimer::singleShot(kAfterPresentMs, this, [this, id] { showLighting(id); });
+  }
+  lightingSettled();
+}
+
+bool SceneView::uploadLighting(EnvironmentLighting& lighting, bool sampled)
+{
+  auto* gl = vtkOpenGLRenderWindow::SafeDownCast(window_);
+  if (!gl || !contextReady_)
+  {
+    return true; // no context yet: the first frame drawn with it uploads them
+  }
+  errorOutput_->drawing = true;
+  QString failure;
+  try
+  {
+    window_->MakeCurrent();
+    lighting.cubeTexture(gl);
+    if (sampled)
+    {
+      lighting.samplingCdfTexture(gl);
+      lighting.samplingPdfTexture(gl);
+      lighting.samplingGuideTexture(gl);
+    }
+  }
+  catch (const Error& e)
+  {
+    failure = QString::fromStdString(e.what());
+  }
+  catch (const std::bad_alloc&)
+  {
+    failure = tr("environment: its textures are too large for the memory available");
+  }
+  errorOutput_->drawing = false;
+  if (!failure.isEmpty())
+  {
+    // The lighting on screen stays.
+    emit errorOccurred(failure);
+    return false;
+  }
+  return true;
+}
+
+void SceneView::showLighting(int id)
+{
+  if (!nextLighting_ || id != nextLightingId_)
+  {
+    return; // a later delivery took its place
+  }
+  std::shared_ptr<EnvironmentLighting> next = std::move(nextLighting_);
+  nextLighting_.reset();
+  if (id == lightingRequest_)
+  {
+    next->setRotationDegrees(model_->real("env-rotation"));
+    lighting_ = std::move(next);
+    lightingSampled_ = nextLightingSampled_;
     pass_->SetLighting(lighting_);
     material_->setLighting(lighting_);
+    // Frames with another lighting (and with environment sampling, another shader variant) cost
+    // what they cost: measured anew.
+    frameCosts_.clear();
+    // The first frame compiles the new variant: drawn as cheaply as while moving, refinement
+    // under the frame budget once settled.
+    beginInteraction();
     // Environment sampling held back for want of the distribution can start now.
     try
     {
@@ -559,6 +645,11 @@ void SceneView::lightingBaked(int id, std::shared_ptr<EnvironmentLighting> baked
     }
     requestRender();
   }
+  lightingSettled();
+}
+
+void SceneView::lightingSettled()
+{
   if (!lightingBusy() && lightingBusyShown_)
   {
     lightingBusyShown_ = false;
@@ -804,6 +895,7 @@ void SceneView::renderNow()
   auto* gl = vtkOpenGLRenderWindow::SafeDownCast(window_);
   if (gl && gl->IsCurrent())
   {
+    contextReady_ = true;
     if (!maxTextureSideKnown_)
     {
       // Map files the GL cannot hold are then refused before they reach the scene.
@@ -835,15 +927,21 @@ void SceneView::renderNow()
       reportRenderError(message.str());
     }
   }
-  if (!interacting_ && runReplans_ < 2 && pass_->GetAccumulatedFrames() == 1)
+  const bool firstOfRun = pass_->GetAccumulatedFrames() == 1;
+  if (!interacting_ && runReplans_ < kMaxReplans &&
+      ((firstOfRun && runReplans_ < 2) ||
+       (!pass_->IsConverged() &&
+        frameOverran(lastFrameSeconds_, frameBudgetMs_ * 1e-3, kOverrunTolerance))))
   {
     // The run's first frame measured its own cost: if the plan was off (nothing measured at
     // this size yet, or one sample count only), the run starts over with the corrected count,
-    // at most twice.
+    // at most twice. A later frame that overran the budget (the load rose) does the same when
+    // the plan, with the margin it measured, now takes fewer samples.
     ++runReplans_;
     try
     {
-      if (planRunSamples() != runSamples_)
+      const int planned = planRunSamples();
+      if (firstOfRun ? planned != runSamples_ : planned < runSamples_)
       {
         applyMaterial();
         requestRender();

@@ -13,7 +13,11 @@
 // environment sampling on, its distribution) on a worker thread: the latest request wins, the
 // previous lighting stays on screen until the new one is ready, and a failed bake is reported
 // once and changes nothing. Switching environment sampling on bakes a lighting with its
-// distribution the same way; until it is on screen the material samples its lobe only.
+// distribution the same way; until it is on screen the material samples its lobe only. A baked
+// lighting reaches the screen over separate passes of the event loop, so their costs never add
+// up in one stall: its textures are uploaded in one, the view switches to it in a later one with
+// a cheap frame (as while moving: the new shader variant compiles then), and refinement under the
+// frame budget follows once settled.
 #include "DisplaySettings.h"
 #include "DrawingFrame.h"
 #include "MaterialSettings.h"
@@ -65,6 +69,14 @@ public:
   // its first and last frames).
   static constexpr int kPresentIntervalMs = 250;
   static constexpr int kAfterPresentMs = 10;
+  // A changing machine load: plans keep the largest measured/predicted cost ratio of the last
+  // kLoadFrames frames in hand (at most kMaxLoadMargin, frame_budget.h's loadMargin), and a
+  // refinement frame that overran the budget by more than kOverrunTolerance starts its run over
+  // with a new plan (at most kMaxReplans times a run, the first frame's re-plan included).
+  static constexpr int kLoadFrames = 8;
+  static constexpr double kMaxLoadMargin = 1.5;
+  static constexpr double kOverrunTolerance = 0.2;
+  static constexpr int kMaxReplans = 4;
 
   SceneView(SceneModel* model, SceneAssets* assets, LutScheduler* luts, vtkRenderWindow* window,
             QObject* parent = nullptr);
@@ -104,7 +116,10 @@ public:
   FrameCostModel frameCost() const;
   // True from a change of the environment or cube size until its lighting is on screen (or
   // its bake failed).
-  bool lightingBusy() const { return lightingInFlight_ || lightingPending_; }
+  bool lightingBusy() const
+  {
+    return lightingInFlight_ || lightingPending_ || nextLighting_ != nullptr;
+  }
   // The lighting the view draws with.
   const std::shared_ptr<EnvironmentLighting>& lighting() const { return lighting_; }
 
@@ -131,6 +146,12 @@ private:
   void startLightingBake();
   void lightingBaked(int id, std::shared_ptr<EnvironmentLighting> lighting, bool sampled,
                      const QString& error);
+  // Uploads LIGHTING's textures into the window's context (no drawing); false when it failed
+  // (reported).
+  bool uploadLighting(EnvironmentLighting& lighting, bool sampled);
+  // Puts the uploaded nextLighting_ on screen with a cheap frame.
+  void showLighting(int id);
+  void lightingSettled();
   // Errors of the renderer (VTK's error output while drawing, glGetError after a frame), each
   // distinct message reported once.
   void reportRenderError(const std::string& message);
@@ -176,6 +197,10 @@ private:
   std::map<std::pair<long long, int>, double> frameCosts_;
   int runSamples_ = 1;
   int runReplans_ = 0;
+  // Measured / predicted cost of the latest frames (the load margin's input), and the UI-thread
+  // time of the last frame.
+  std::vector<double> loadRatios_;
+  double lastFrameSeconds_ = 0.0;
   vtkNew<vtkCallbackCommand> frameTiming_;
   qint64 frameStartNs_ = -1;
   bool frameDrewSurface_ = false;
@@ -189,6 +214,11 @@ private:
   bool lightingInFlight_ = false;
   bool lightingPending_ = false;   // a request arrived while a bake ran
   bool lightingBusyShown_ = false; // lightingBusyChanged(true) was the last sent
+  // A baked lighting whose textures are uploaded, shown by the next pass of the event loop.
+  std::shared_ptr<EnvironmentLighting> nextLighting_;
+  bool nextLightingSampled_ = false;
+  int nextLightingId_ = 0;
+  bool contextReady_ = false; // the window has drawn once: its GL context exists
   QElapsedTimer clock_;
   std::set<std::string> reportedRenderErrors_;
   bool maxTextureSideKnown_ = false;
