@@ -312,8 +312,11 @@ public:
       {
         texture = Texture{};
       }
-      else if (texture.source != source || !texture.object)
+      else if (texture.source != source || !texture.object || texture.object->GetHandle() == 0)
       {
+        // A handle of 0: released with the window's context (QVTKOpenGLNativeWidget makes a
+        // new one when it is shown or moved), so the window is the same object but the texture
+        // is gone; binding it would bind target 0 (GL_INVALID_ENUM) and leave it active.
         texture.object = make();
         texture.source = source;
       }

@@ -56,7 +56,8 @@ glm::dmat3 EnvironmentLighting::worldToEnvironment() const
 
 vtkTextureObject* EnvironmentLighting::cubeTexture(vtkOpenGLRenderWindow* window)
 {
-  if (!texture_ || textureWindow_ != window)
+  // A handle of 0: released with the window's context, which its widget may make anew.
+  if (!texture_ || textureWindow_ != window || texture_->GetHandle() == 0)
   {
     if (texture_ && textureWindow_)
     {
@@ -106,7 +107,8 @@ const EnvironmentDistribution& EnvironmentLighting::samplingDistribution()
 
 void EnvironmentLighting::uploadSamplingTables(vtkOpenGLRenderWindow* window)
 {
-  if (cdfTexture_ && pdfTexture_ && guideTexture_ && samplingWindow_ == window)
+  if (cdfTexture_ && pdfTexture_ && guideTexture_ && samplingWindow_ == window &&
+      cdfTexture_->GetHandle() != 0)
   {
     return;
   }

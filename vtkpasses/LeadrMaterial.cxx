@@ -382,7 +382,8 @@ std::string LeadrShadingMaterial::fragmentImplementation() const
 void LeadrShadingMaterial::setModelUniforms(vtkShaderProgram* program,
                                             vtkOpenGLRenderWindow* window)
 {
-  if (textures_->window != window || !textures_->moments)
+  // A texture of handle 0 was released with the window's context: upload them again.
+  if (textures_->window != window || !textures_->moments || textures_->moments->GetHandle() == 0)
   {
     textures_->moments = uploadMomentLevels(window, *settings_.moments, 0, 4, "LEADR moments");
     textures_->momentXY = uploadMomentLevels(window, *settings_.moments, 4, 1, "LEADR moments");

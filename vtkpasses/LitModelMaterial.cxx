@@ -142,7 +142,9 @@ public:
   void updateTextures(vtkOpenGLRenderWindow* window)
   {
     const std::shared_ptr<const SvMaps> maps = settings.maps ? settings.maps : defaultMaps();
-    if (textureWindow == window && uploadedMaps == maps && textures[0])
+    // A texture of handle 0 was released with the window's context: upload them again.
+    if (textureWindow == window && uploadedMaps == maps && textures[0] &&
+        textures[0]->GetHandle() != 0)
     {
       return;
     }

@@ -139,7 +139,8 @@ void MicrostructureShadingMaterial::setModelUniforms(vtkShaderProgram* program,
                                                      vtkOpenGLRenderWindow* window)
 {
   const Microstructure& s = *settings_.structure;
-  if (textures_->window != window || !textures_->height)
+  // A texture of handle 0 was released with the window's context: upload them again.
+  if (textures_->window != window || !textures_->height || textures_->height->GetHandle() == 0)
   {
     textures_->height = uploadStructure(window, s.height, 1, "microstructure height");
     textures_->normal = uploadStructure(window, s.normal, 3, "microstructure normals");

@@ -4,7 +4,9 @@
 // NAME` with the same options (the command line's option handling, render_models.h, with the
 // view's camera and size) within a stated bound; the exported screenshot is that image too. A
 // setting the model refuses (a mesh without texture coordinates) leaves the previous model on
-// screen and is reported once, however often the scene changes meanwhile.
+// screen and is reported once, however often the scene changes meanwhile. VTK reports no error
+// and no warning (such as a texture left active or a texture unit never released when the
+// window's context goes) from the window's creation to its destruction.
 #include "LitModelView.h"
 #include "MainWindow.h"
 #include "OffscreenRenderer.h"
@@ -25,12 +27,45 @@
 #include <vector>
 #include <vtkActor.h>
 #include <vtkNew.h>
+#include <vtkObjectFactory.h>
 #include <vtkOpenGLRenderer.h>
+#include <vtkOutputWindow.h>
 #include <vtkRenderWindow.h>
 #include <vtkUnsignedCharArray.h>
 
 using aniso::numberValue;
 using aniso::textValue;
+
+// Records VTK's errors and warnings (and still prints them through the window it replaces), so
+// a test can state that none was printed.
+class RecordingOutputWindow : public vtkOutputWindow
+{
+public:
+  static RecordingOutputWindow* New();
+  vtkTypeMacro(RecordingOutputWindow, vtkOutputWindow)
+
+      vtkSmartPointer<vtkOutputWindow> previous;
+  QStringList messages;
+
+  void DisplayText(const char* text) override { previous->DisplayText(text); }
+  void DisplayErrorText(const char* text) override
+  {
+    messages << QString::fromUtf8(text).trimmed();
+    previous->DisplayErrorText(text);
+  }
+  void DisplayWarningText(const char* text) override
+  {
+    messages << QString::fromUtf8(text).trimmed();
+    previous->DisplayWarningText(text);
+  }
+  void DisplayGenericWarningText(const char* text) override
+  {
+    messages << QString::fromUtf8(text).trimmed();
+    previous->DisplayGenericWarningText(text);
+  }
+  void DisplayDebugText(const char* text) override { previous->DisplayDebugText(text); }
+};
+vtkStandardNewMacro(RecordingOutputWindow);
 
 namespace
 {
@@ -119,6 +154,24 @@ private slots:
 
   void eachSurfaceModelDrawsAsTheCommandLine()
   {
+    // Installed before the window, whose view forwards what VTK prints to the one it found.
+    vtkNew<RecordingOutputWindow> output;
+    output->previous = vtkOutputWindow::GetInstance();
+    vtkOutputWindow::SetInstance(output);
+    drawEachSurfaceModel();
+    vtkOutputWindow::SetInstance(output->previous);
+    if (QTest::currentTestFailed())
+    {
+      return;
+    }
+    // The window is gone: every texture the materials used was released in its own context.
+    QVERIFY2(output->messages.isEmpty(), qPrintable(output->messages.join(" | ")));
+  }
+
+private:
+  // The window of eachSurfaceModelDrawsAsTheCommandLine, destroyed on return.
+  void drawEachSurfaceModel()
+  {
     aniso::MainWindow window;
     window.setErrorDialogs(false);
     window.model()->setValues({{"mesh", textValue("builtin:sphere")},
@@ -198,6 +251,7 @@ private slots:
     QVERIFY(sceneActor->GetVisibility());
   }
 
+private slots:
   void refusedSettingKeepsThePreviousModel()
   {
     // A tetrahedron without texture coordinates: the surface models need them.
