@@ -373,9 +373,11 @@ void SceneView::frameEvent(vtkObject* caller, unsigned long event)
   lastFrameSeconds_ = seconds;
   const int* size = window_->GetSize();
   const auto key = std::make_pair(static_cast<long long>(size[0]) * size[1], frameDrawnSamples_);
-  // How far the fit was off for this frame, before it learns from it: the load margin.
+  // How far the fit was off for this frame, before it learns from it: the load margin. Only
+  // refinement frames after a run's first: the first after a resize or a new shader variant
+  // also pays for those once, which says nothing of the load.
   const FrameCostModel before = frameCost();
-  if (before.known)
+  if (before.known && !interacting_ && pass_->GetAccumulatedFrames() > 1)
   {
     const double predicted = before.predictSeconds(frameDrawnSamples_, double(key.first));
     if (predicted > 0.0)
