@@ -337,7 +337,10 @@ int SceneView::planRunSamples() const
   const int* size = window_->GetSize();
   // Planned for the machine as it ran the latest frames: the fit follows a change of load only
   // over several frames.
-  const double budget = frameBudgetMs_ * 1e-3 / loadMargin(loadRatios_, kMaxLoadMargin);
+  // The probe below that tells the parts apart plans without it: a margin on the pessimistic
+  // split would keep every frame at 1 sample and the split unknown.
+  const double budget =
+      frameBudgetMs_ * 1e-3 / (cost.separated ? loadMargin(loadRatios_, kMaxLoadMargin) : 1.0);
   // With one sample count measured (1), the assumed split overestimates the cost of more samples,
   // so a count it lets through stays within the budget and measures the split: at most 4.
   return chooseFrameSamples(cost, double(size[0]) * double(size[1]), budget,

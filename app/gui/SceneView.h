@@ -74,7 +74,7 @@ public:
   // refinement frame that overran the budget by more than kOverrunTolerance starts its run over
   // with a new plan (at most kMaxReplans times a run, the first frame's re-plan included).
   static constexpr int kLoadFrames = 8;
-  static constexpr double kMaxLoadMargin = 1.5;
+  static constexpr double kMaxLoadMargin = 1.25;
   static constexpr double kOverrunTolerance = 0.2;
   static constexpr int kMaxReplans = 4;
 
