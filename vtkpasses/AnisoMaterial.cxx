@@ -141,6 +141,10 @@ public:
   vtkWeakPointer<vtkOpenGLPolyDataMapper> mapper;
   unsigned long updateShaderTag = 0;
   unsigned long mapperEndTag = 0;
+  unsigned long rendererEndTag = 0;
+  // Activated for the current draw; freed once the renderer has drawn (as
+  // vtkOpenGLTexture::PostRender frees VTK's own), so none stays active between frames.
+  std::vector<vtkWeakPointer<vtkTextureObject>> active;
   std::optional<MaterialVariant> installed;
   bool normals = false;
   bool tangents = false;
@@ -198,8 +202,27 @@ public:
     settings = s;
   }
 
+  void deactivate()
+  {
+    for (vtkTextureObject* texture : active)
+    {
+      if (texture)
+      {
+        texture->Deactivate();
+      }
+    }
+    active.clear();
+  }
+
+  void onRendererEnd(vtkObject*, unsigned long, void*) { deactivate(); }
+
   void detach()
   {
+    deactivate();
+    if (renderer)
+    {
+      renderer->RemoveObserver(rendererEndTag);
+    }
     if (mapper)
     {
       mapper->RemoveObserver(updateShaderTag);
@@ -387,6 +410,10 @@ public:
   {
     texture->Activate();
     program->SetUniformi(sampler, texture->GetTextureUnit());
+    if (std::find(active.begin(), active.end(), texture) == active.end())
+    {
+      active.emplace_back(texture);
+    }
   }
 
   void setUniforms(vtkShaderProgram* program, vtkOpenGLRenderWindow* window)
@@ -537,6 +564,7 @@ void AnisoMaterial::apply(vtkActor* actor, vtkRenderer* renderer)
   impl_->updateShaderTag =
       mapper->AddObserver(vtkCommand::UpdateShaderEvent, impl, &Impl::onUpdateShader);
   impl_->mapperEndTag = mapper->AddObserver(vtkCommand::EndEvent, impl, &Impl::onMapperEnd);
+  impl_->rendererEndTag = renderer->AddObserver(vtkCommand::EndEvent, impl, &Impl::onRendererEnd);
   // If the mesh is already there, install now; otherwise the first draw does.
   if (vtkPolyData* poly = mapper->GetInput())
   {

@@ -17,6 +17,7 @@ class vtkActor;
 class vtkOpenGLRenderWindow;
 class vtkRenderer;
 class vtkShaderProgram;
+class vtkTextureObject;
 
 namespace aniso
 {
@@ -50,6 +51,8 @@ protected:
   void setLights(const std::vector<Light>& lights);
   EnvironmentLighting& lighting() const { return *lighting_; }
   vtkRenderer* renderer() const;
+  // Activates TEXTURE for the coming draw only (ShaderHook::bindTexture).
+  void bindTexture(vtkShaderProgram* program, const char* sampler, vtkTextureObject* texture);
   void changed(); // tells the actor (and progressive accumulation) that the shading changed
 
 private:

@@ -201,8 +201,7 @@ public:
     const char* samplers[3] = {"litTangentAlpha", "litAlbedoSpecular", "litNormalMap"};
     for (std::size_t i = 0; i < textures.size(); ++i)
     {
-      textures[i]->Activate();
-      program->SetUniformi(samplers[i], textures[i]->GetTextureUnit());
+      hook.bindTexture(program, samplers[i], textures[i]);
     }
   }
 };

@@ -40,12 +40,6 @@ vtkSmartPointer<vtkTextureObject> uploadStructure(vtkOpenGLRenderWindow* window,
   return uploadFloatTexture(window, image.width, image.height, channels, texels.data(),
                             TextureFiltering::Linear, TextureWrap::Repeat, subject);
 }
-
-void bind(vtkShaderProgram* program, const char* sampler, vtkTextureObject* texture)
-{
-  texture->Activate();
-  program->SetUniformi(sampler, texture->GetTextureUnit());
-}
 } // namespace
 
 std::uint32_t microFrameSeed(const glm::dvec2& frameShift)
@@ -149,12 +143,12 @@ void MicrostructureShadingMaterial::setModelUniforms(vtkShaderProgram* program,
         settings_.tprMap ? uploadStructure(window, *settings_.tprMap, 2, "TPR map") : nullptr;
     textures_->window = window;
   }
-  bind(program, "microHeight", textures_->height);
-  bind(program, "microNormal", textures_->normal);
-  bind(program, "microAlbedo", textures_->albedo);
+  bindTexture(program, "microHeight", textures_->height);
+  bindTexture(program, "microNormal", textures_->normal);
+  bindTexture(program, "microAlbedo", textures_->albedo);
   if (textures_->tpr)
   {
-    bind(program, "microTpr", textures_->tpr);
+    bindTexture(program, "microTpr", textures_->tpr);
   }
   const MicroShadingOptions& o = settings_.options;
   program->SetUniformf("microDepth", float(s.depth));

@@ -2,6 +2,7 @@
 
 #include "error.h"
 
+#include <algorithm>
 #include <vtkActor.h>
 #include <vtkCommand.h>
 #include <vtkDataObject.h>
@@ -10,6 +11,7 @@
 #include <vtkRenderer.h>
 #include <vtkShaderProgram.h>
 #include <vtkShaderProperty.h>
+#include <vtkTextureObject.h>
 #include <vtkWeakPointer.h>
 
 namespace aniso
@@ -24,7 +26,23 @@ public:
   ShaderCallback onShader;
   unsigned long updateShaderTag = 0;
   unsigned long mapperEndTag = 0;
+  unsigned long rendererEndTag = 0;
   ShaderCode installed;
+  std::vector<vtkWeakPointer<vtkTextureObject>> active; // activated for the current draw
+
+  void deactivate()
+  {
+    for (vtkTextureObject* texture : active)
+    {
+      if (texture)
+      {
+        texture->Deactivate();
+      }
+    }
+    active.clear();
+  }
+
+  void onRendererEnd(vtkObject*, unsigned long, void*) { deactivate(); }
 
   void uninstall()
   {
@@ -106,6 +124,7 @@ void ShaderHook::attach(vtkActor* actor, vtkRenderer* renderer, MeshCallback onM
   d.onShader = std::move(onShader);
   d.updateShaderTag = mapper->AddObserver(vtkCommand::UpdateShaderEvent, &d, &Impl::onUpdateShader);
   d.mapperEndTag = mapper->AddObserver(vtkCommand::EndEvent, &d, &Impl::onMapperEnd);
+  d.rendererEndTag = renderer->AddObserver(vtkCommand::EndEvent, &d, &Impl::onRendererEnd);
   // If the mesh is already there, the variant is known now; otherwise the first draw tells.
   if (vtkPolyData* poly = mapper->GetInput())
   {
@@ -121,6 +140,11 @@ void ShaderHook::detach()
 {
   Impl& d = *impl_;
   d.uninstall();
+  d.deactivate();
+  if (d.renderer)
+  {
+    d.renderer->RemoveObserver(d.rendererEndTag);
+  }
   if (d.mapper)
   {
     d.mapper->RemoveObserver(d.updateShaderTag);
@@ -131,6 +155,18 @@ void ShaderHook::detach()
   d.renderer = nullptr;
   d.onMesh = nullptr;
   d.onShader = nullptr;
+}
+
+void ShaderHook::bindTexture(vtkShaderProgram* program, const char* sampler,
+                             vtkTextureObject* texture)
+{
+  texture->Activate();
+  program->SetUniformi(sampler, texture->GetTextureUnit());
+  std::vector<vtkWeakPointer<vtkTextureObject>>& active = impl_->active;
+  if (std::find(active.begin(), active.end(), texture) == active.end())
+  {
+    active.emplace_back(texture);
+  }
 }
 
 void ShaderHook::install(const ShaderCode& code)

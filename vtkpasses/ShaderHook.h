@@ -14,6 +14,7 @@ class vtkActor;
 class vtkPolyData;
 class vtkRenderer;
 class vtkShaderProgram;
+class vtkTextureObject;
 
 namespace aniso
 {
@@ -45,6 +46,11 @@ public:
   // must be a vtkOpenGLPolyDataMapper; aniso::Error "material: reason" otherwise.
   void attach(vtkActor* actor, vtkRenderer* renderer, MeshCallback onMesh, ShaderCallback onShader);
   void detach();
+
+  // Activates TEXTURE for the coming draw and points SAMPLER at its unit (call from the shader
+  // callback). The unit is freed once the renderer has drawn, as vtkOpenGLTexture::PostRender
+  // does for VTK's own textures: no texture stays active between frames or after detaching.
+  void bindTexture(vtkShaderProgram* program, const char* sampler, vtkTextureObject* texture);
 
   // Replaces the installed code (if any) by CODE on the attached actor.
   void install(const ShaderCode& code);
