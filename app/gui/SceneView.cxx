@@ -335,10 +335,9 @@ int SceneView::planRunSamples() const
     }
   }
   const int* size = window_->GetSize();
-  // Planned for the machine as it ran the latest frames: the fit follows a change of load only
-  // over several frames.
-  // The probe below that tells the parts apart plans without it: a margin on the pessimistic
-  // split would keep every frame at 1 sample and the split unknown.
+  // Planned for the machine as it ran the latest frames (the fit follows a change of load only
+  // over several frames), except while the parts are not yet told apart: a margin on the
+  // pessimistic split would keep every frame at 1 sample and the split unknown.
   const double budget =
       frameBudgetMs_ * 1e-3 / (cost.separated ? loadMargin(loadRatios_, kMaxLoadMargin) : 1.0);
   // With one sample count measured (1), the assumed split overestimates the cost of more samples,
@@ -577,7 +576,7 @@ void SceneView::lightingBaked(int id, std::shared_ptr<EnvironmentLighting> baked
     nextLightingId_ = id;
     QTimer::singleShot(kAfterPresentMs, this, [this, id] { showLighting(id); });
   }
-  lightingSettled();
+  updateLightingBusy();
 }
 
 bool SceneView::uploadLighting(EnvironmentLighting& lighting, bool sampled)
@@ -650,10 +649,10 @@ void SceneView::showLighting(int id)
     }
     requestRender();
   }
-  lightingSettled();
+  updateLightingBusy();
 }
 
-void SceneView::lightingSettled()
+void SceneView::updateLightingBusy()
 {
   if (!lightingBusy() && lightingBusyShown_)
   {

@@ -151,7 +151,8 @@ private:
   bool uploadLighting(EnvironmentLighting& lighting, bool sampled);
   // Puts the uploaded nextLighting_ on screen with a cheap frame.
   void showLighting(int id);
-  void lightingSettled();
+  // lightingBusyChanged(false) once no lighting is baked or waiting to be shown.
+  void updateLightingBusy();
   // Errors of the renderer (VTK's error output while drawing, glGetError after a frame), each
   // distinct message reported once.
   void reportRenderError(const std::string& message);
