@@ -13,6 +13,7 @@
 #include <filesystem>
 #include <functional>
 #include <glm/geometric.hpp>
+#include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 #include <gtest/gtest.h>
 #include <iostream>
@@ -34,6 +35,28 @@ inline bool haveDisplay()
   {                                                                                                \
     GTEST_SKIP() << "no X display: run under xvfb-run (./test does)";                              \
   }
+
+// Where the ray through the centre of pixel (x, y) of a SIZE x SIZE parallel projection meets
+// the plane z = 0, the direction back to the camera, and the built-in plate's and disk's texture
+// coordinates there: u = (x + 1) / 2, v = (y + 1) / 2.
+struct PlaneHit
+{
+  glm::dvec3 position;
+  glm::dvec3 view;
+  glm::dvec2 uv;
+};
+
+inline PlaneHit planeHit(const CameraPlacement& camera, int size, double x, double y)
+{
+  const glm::dvec3 forward = glm::normalize(camera.focalPoint - camera.position);
+  const glm::dvec3 right = glm::normalize(glm::cross(forward, camera.viewUp));
+  const glm::dvec3 up = glm::cross(right, forward);
+  const glm::dvec3 origin = camera.position +
+                            ((x + 0.5) / size * 2.0 - 1.0) * camera.parallelScale * right +
+                            (1.0 - (y + 0.5) / size * 2.0) * camera.parallelScale * up;
+  const glm::dvec3 p = origin + (-origin.z / forward.z) * forward;
+  return {p, -forward, glm::dvec2((p.x + 1.0) / 2.0, (p.y + 1.0) / 2.0)};
+}
 
 struct Ray
 {

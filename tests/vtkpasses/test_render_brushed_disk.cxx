@@ -27,24 +27,10 @@ namespace
 constexpr double kPi = 3.14159265358979323846;
 constexpr int kSize = 40;
 
-struct PixelGeometry
+// The disk's plane (z = 0) under the centre of pixel (x, y) of the test's image.
+PlaneHit diskHit(const CameraPlacement& camera, double x, double y)
 {
-  glm::dvec3 position;
-  glm::dvec3 view;
-  glm::dvec2 uv;
-};
-
-// The disk's plane (z = 0) under the centre of pixel (x, y); u = (x + 1) / 2, v = (y + 1) / 2.
-PixelGeometry diskHit(const CameraPlacement& camera, double x, double y)
-{
-  const glm::dvec3 forward = glm::normalize(camera.focalPoint - camera.position);
-  const glm::dvec3 right = glm::normalize(glm::cross(forward, camera.viewUp));
-  const glm::dvec3 up = glm::cross(right, forward);
-  const glm::dvec3 origin = camera.position +
-                            ((x + 0.5) / kSize * 2.0 - 1.0) * camera.parallelScale * right +
-                            (1.0 - (y + 0.5) / kSize * 2.0) * camera.parallelScale * up;
-  const glm::dvec3 p = origin + (-origin.z / forward.z) * forward;
-  return {p, -forward, glm::dvec2((p.x + 1.0) / 2.0, (p.y + 1.0) / 2.0)};
+  return planeHit(camera, kSize, x, y);
 }
 
 TEST(RenderBrushedDisk, MatchesTheCpuModel)
@@ -105,7 +91,7 @@ TEST(RenderBrushedDisk, MatchesTheCpuModel)
   {
     for (int x = 0; x < kSize; ++x)
     {
-      const PixelGeometry g = diskHit(camera, x, y);
+      const PlaneHit g = diskHit(camera, x, y);
       const double radius = std::hypot(g.position.x, g.position.y);
       if (radius > 0.95 || radius < 0.05)
       {

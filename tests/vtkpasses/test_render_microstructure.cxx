@@ -41,24 +41,10 @@ CameraPlacement plateCamera(double elevationDegrees)
   return c;
 }
 
-struct PixelGeometry
+// The plate's plane (z = 0) under the centre of pixel (x, y) of the test's image.
+PlaneHit plateHit(const CameraPlacement& camera, double x, double y)
 {
-  glm::dvec3 position;
-  glm::dvec3 view;
-  glm::dvec2 uv;
-};
-
-// The plate (z = 0) under the centre of pixel (x, y); u = (x + 1) / 2, v = (y + 1) / 2.
-PixelGeometry plateHit(const CameraPlacement& camera, double x, double y)
-{
-  const glm::dvec3 forward = glm::normalize(camera.focalPoint - camera.position);
-  const glm::dvec3 right = glm::normalize(glm::cross(forward, camera.viewUp));
-  const glm::dvec3 up = glm::cross(right, forward);
-  const glm::dvec3 origin = camera.position +
-                            ((x + 0.5) / kSize * 2.0 - 1.0) * camera.parallelScale * right +
-                            (1.0 - (y + 0.5) / kSize * 2.0) * camera.parallelScale * up;
-  const glm::dvec3 p = origin + (-origin.z / forward.z) * forward;
-  return {p, -forward, glm::dvec2((p.x + 1.0) / 2.0, (p.y + 1.0) / 2.0)};
+  return planeHit(camera, kSize, x, y);
 }
 
 struct Case
@@ -171,7 +157,7 @@ TEST(RenderMicrostructure, MatchesTheCpuModel)
     {
       for (int x = 0; x < kSize; ++x)
       {
-        const PixelGeometry g = plateHit(camera, x, y);
+        const PlaneHit g = plateHit(camera, x, y);
         PixelFootprint footprint;
         footprint.centre = g.uv * settings.tiles;
         footprint.axisU = (plateHit(camera, x + 1, y).uv - g.uv) * settings.tiles;
@@ -223,7 +209,7 @@ TEST(RenderMicrostructure, ConvergesToThePixelAverageWithTheGrid)
   {
     for (int x = 0; x < kSize; ++x)
     {
-      const PixelGeometry g = plateHit(camera, x, y);
+      const PlaneHit g = plateHit(camera, x, y);
       PixelFootprint footprint;
       footprint.centre = g.uv * settings.tiles;
       footprint.axisU = (plateHit(camera, x + 1, y).uv - g.uv) * settings.tiles;
