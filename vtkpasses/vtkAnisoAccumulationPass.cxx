@@ -5,16 +5,23 @@
 #include "aniso_shaders.h"
 #include "sampling/hammersley.h"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <glm/gtc/type_ptr.hpp>
 #include <glm/mat3x3.hpp>
+#include <utility>
+#include <vector>
 #include <vtkActor.h>
+#include <vtkCallbackCommand.h>
 #include <vtkCamera.h>
+#include <vtkCommand.h>
 #include <vtkDataObject.h>
 #include <vtkInformation.h>
 #include <vtkInformationDoubleVectorKey.h>
 #include <vtkInformationIntegerKey.h>
 #include <vtkMapper.h>
+#include <vtkNew.h>
 #include <vtkObjectFactory.h>
 #include <vtkOpenGLFramebufferObject.h>
 #include <vtkOpenGLQuadHelper.h>
@@ -51,6 +58,14 @@ double radicalInverse(int index, int base)
   }
   return result;
 }
+
+// The scissor rectangle of a band, set through the window's state (which caches GL state, so
+// the camera pass's restore afterwards reaches the GL).
+struct BandRows
+{
+  vtkOpenGLState* state;
+  int rect[4];
+};
 
 void allocateColor(vtkTextureObject* texture, vtkOpenGLRenderWindow* window, int width, int height)
 {
@@ -128,6 +143,11 @@ void vtkAnisoAccumulationPass::SetTargetFrames(int frames)
   this->TargetFrames = frames > 0 ? frames : 0;
 }
 
+void vtkAnisoAccumulationPass::SetFrameBands(int bands)
+{
+  this->PendingBands = std::max(bands, 1);
+}
+
 void vtkAnisoAccumulationPass::SetJitter(bool jitter)
 {
   if (jitter != this->Jitter)
@@ -145,6 +165,7 @@ bool vtkAnisoAccumulationPass::IsConverged() const
 void vtkAnisoAccumulationPass::Reset()
 {
   this->AccumulatedFrames = 0;
+  this->Band = 0;
 }
 
 vtkAnisoAccumulationPass::Signature
@@ -228,26 +249,44 @@ void vtkAnisoAccumulationPass::Render(const vtkRenderState* s)
       this->ReleaseGraphicsResources(this->LastWindow);
     }
     this->LastWindow = window;
-    this->AccumulatedFrames = 0;
+    this->Reset();
   }
   if (width != this->Width || height != this->Height ||
       !(this->ComputeSignature(s, width, height) == this->LastSignature))
   {
-    this->AccumulatedFrames = 0;
+    this->Reset();
   }
 
+  // Rows of the mean that hold a whole frame's worth: all of them, except while the first frame
+  // is drawn in bands (the rows below the bands drawn hold nothing of this view yet).
+  int shownFrom = 0;
   if (!this->IsConverged() || this->AccumulatedFrames == 0)
   {
+    if (this->Band == 0)
+    {
+      this->Bands = std::min(this->PendingBands, height);
+    }
+    // Band 0 is the top one; GL's rows count from the bottom.
+    const int y0 = height - static_cast<int>((std::int64_t(this->Band) + 1) * height / this->Bands);
+    const int y1 = height - static_cast<int>(std::int64_t(this->Band) * height / this->Bands);
     this->PrepareTargets(window, width, height);
-    this->RenderFrame(s, window, width, height);
-    this->Accumulate(window, width, height);
-    ++this->AccumulatedFrames;
+    this->RenderFrame(s, window, width, height, y0, y1);
+    this->Accumulate(window, width, height, y0, y1);
+    if (++this->Band >= this->Bands)
+    {
+      this->Band = 0;
+      ++this->AccumulatedFrames;
+    }
+    else if (this->AccumulatedFrames == 0)
+    {
+      shownFrom = y0;
+    }
     // Taken after drawing: what the draw itself modified (first shader build, attribute
     // mappings) is the baseline, not a change.
     this->LastSignature = this->ComputeSignature(s, width, height);
   }
   this->NumberOfRenderedProps = this->LastRenderedProps;
-  this->Present(window, x, y, width, height);
+  this->Present(window, x, y, width, height, shownFrom);
 }
 
 void vtkAnisoAccumulationPass::PrepareTargets(vtkOpenGLRenderWindow* window, int width, int height)
@@ -282,7 +321,7 @@ void vtkAnisoAccumulationPass::PrepareTargets(vtkOpenGLRenderWindow* window, int
 }
 
 void vtkAnisoAccumulationPass::RenderFrame(const vtkRenderState* s, vtkOpenGLRenderWindow* window,
-                                           int width, int height)
+                                           int width, int height, int y0, int y1)
 {
   vtkRenderer* renderer = s->GetRenderer();
   vtkOpenGLState* ostate = window->GetState();
@@ -323,11 +362,41 @@ void vtkAnisoAccumulationPass::RenderFrame(const vtkRenderState* s, vtkOpenGLRen
     delegateState.SetPropArrayAndCount(s->GetPropArray(), s->GetPropArrayCount());
     delegateState.SetFrameBuffer(this->FrameBuffer);
     ostate->vtkglEnable(GL_DEPTH_TEST);
+    // Part of a frame: the delegate's camera pass sets the scissor to the whole frame, so the
+    // band's rows are set again just before each mapper draws (its UpdateShaderEvent): the
+    // rasteriser then shades nothing outside them. Outside the band nothing is accumulated
+    // either, so a mapper that does not announce its draws costs more but draws the same mean.
+    std::vector<std::pair<vtkMapper*, unsigned long>> observed;
+    vtkNew<vtkCallbackCommand> bandScissor;
+    BandRows band{ostate, {0, y0, width, y1 - y0}};
+    if (y0 > 0 || y1 < height)
+    {
+      bandScissor->SetClientData(&band);
+      bandScissor->SetCallback(
+          [](vtkObject*, unsigned long, void* data, void*)
+          {
+            const auto* b = static_cast<const BandRows*>(data);
+            b->state->vtkglScissor(b->rect[0], b->rect[1], b->rect[2], b->rect[3]);
+          });
+      for (int i = 0; i < s->GetPropArrayCount(); ++i)
+      {
+        auto* actor = vtkActor::SafeDownCast(s->GetPropArray()[i]);
+        if (vtkMapper* mapper = actor ? actor->GetMapper() : nullptr)
+        {
+          observed.emplace_back(mapper,
+                                mapper->AddObserver(vtkCommand::UpdateShaderEvent, bandScissor));
+        }
+      }
+    }
     this->DelegatePass->Render(&delegateState);
+    for (const auto& [mapper, tag] : observed)
+    {
+      mapper->RemoveObserver(tag);
+    }
     this->LastRenderedProps = this->DelegatePass->GetNumberOfRenderedProps();
 
     ostate->vtkglViewport(0, 0, width, height);
-    ostate->vtkglScissor(0, 0, width, height);
+    ostate->vtkglScissor(0, y0, width, y1 - y0);
     this->DrawBackground(window, renderer);
   }
   ostate->PopFramebufferBindings();
@@ -406,7 +475,8 @@ void vtkAnisoAccumulationPass::DrawBackground(vtkOpenGLRenderWindow* window, vtk
   }
 }
 
-void vtkAnisoAccumulationPass::Accumulate(vtkOpenGLRenderWindow* window, int width, int height)
+void vtkAnisoAccumulationPass::Accumulate(vtkOpenGLRenderWindow* window, int width, int height,
+                                          int y0, int y1)
 {
   vtkOpenGLQuadHelper* quad = this->Quad(
       window, this->AccumulateQuad, aniso::shaders::kAccumulateFs, "", this->AccumulateDefines);
@@ -428,7 +498,7 @@ void vtkAnisoAccumulationPass::Accumulate(vtkOpenGLRenderWindow* window, int wid
     vtkOpenGLState::ScopedglEnableDisable blend(ostate, GL_BLEND);
     vtkOpenGLState::ScopedglBlendFuncSeparate blendFunc(ostate);
     ostate->vtkglViewport(0, 0, width, height);
-    ostate->vtkglScissor(0, 0, width, height);
+    ostate->vtkglScissor(0, y0, width, y1 - y0);
     ostate->vtkglDisable(GL_DEPTH_TEST);
     const int frame = this->AccumulatedFrames;
     if (frame == 0)
@@ -452,7 +522,7 @@ void vtkAnisoAccumulationPass::Accumulate(vtkOpenGLRenderWindow* window, int wid
 }
 
 void vtkAnisoAccumulationPass::Present(vtkOpenGLRenderWindow* window, int x, int y, int width,
-                                       int height)
+                                       int height, int y0)
 {
   std::string defines;
   switch (this->Display.toneMapping)
@@ -482,7 +552,7 @@ void vtkAnisoAccumulationPass::Present(vtkOpenGLRenderWindow* window, int x, int
   vtkOpenGLState::ScopedglEnableDisable depthTest(ostate, GL_DEPTH_TEST);
   vtkOpenGLState::ScopedglEnableDisable blend(ostate, GL_BLEND);
   ostate->vtkglViewport(x, y, width, height);
-  ostate->vtkglScissor(x, y, width, height);
+  ostate->vtkglScissor(x, y + y0, width, height - y0);
   ostate->vtkglDisable(GL_DEPTH_TEST);
   ostate->vtkglDisable(GL_BLEND);
   this->AccumulationColor->Activate();

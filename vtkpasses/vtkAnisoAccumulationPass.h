@@ -13,6 +13,12 @@
 //
 // The mean is linear radiance: RGB everything seen (surfaces and background), alpha the
 // coverage of the surfaces.
+//
+// A frame may be drawn in horizontal bands (SetFrameBands), one band per Render(): the surfaces
+// and the background are drawn and folded into the mean only within the band's rows (scissor),
+// so a costly frame keeps the caller busy for a fraction of its cost at a time. The frame counts
+// as accumulated once its last band is drawn; every band of it uses the frame's own shift and
+// jitter, so the mean is the same as with whole frames.
 #include "DisplaySettings.h"
 #include "image/image.h"
 
@@ -71,6 +77,16 @@ public:
   void SetJitter(bool jitter);
   bool GetJitter() const { return this->Jitter; }
 
+  // Bands per frame (at least 1, at most the rows), top to bottom. A change takes effect when
+  // the next frame starts; the frame in progress keeps its bands.
+  void SetFrameBands(int bands);
+  int GetFrameBands() const { return this->PendingBands; }
+  // The band of the current frame the next Render() draws; 0 when it starts a new frame (the
+  // last frame is complete).
+  int GetNextBand() const { return this->Band; }
+  // Bands of the frame in progress (or of the last one drawn).
+  int GetCurrentFrameBands() const { return this->Bands; }
+
   int GetAccumulatedFrames() const { return this->AccumulatedFrames; }
   bool IsConverged() const;
   // Forget the mean: the next Render() starts over.
@@ -96,10 +112,13 @@ private:
   };
   Signature ComputeSignature(const vtkRenderState* s, int width, int height) const;
   void PrepareTargets(vtkOpenGLRenderWindow* window, int width, int height);
-  void RenderFrame(const vtkRenderState* s, vtkOpenGLRenderWindow* window, int width, int height);
+  // Rows [y0, y1) (GL order, 0 at the bottom) of the frame are drawn.
+  void RenderFrame(const vtkRenderState* s, vtkOpenGLRenderWindow* window, int width, int height,
+                   int y0, int y1);
   void DrawBackground(vtkOpenGLRenderWindow* window, vtkRenderer* renderer);
-  void Accumulate(vtkOpenGLRenderWindow* window, int width, int height);
-  void Present(vtkOpenGLRenderWindow* window, int x, int y, int width, int height);
+  void Accumulate(vtkOpenGLRenderWindow* window, int width, int height, int y0, int y1);
+  // Shows rows [y0, height) of the mean (all of it with y0 = 0).
+  void Present(vtkOpenGLRenderWindow* window, int x, int y, int width, int height, int y0);
   vtkOpenGLQuadHelper* Quad(vtkOpenGLRenderWindow* window,
                             std::unique_ptr<vtkOpenGLQuadHelper>& quad, const char* fragmentSource,
                             const std::string& defines, std::string& builtDefines);
@@ -110,6 +129,9 @@ private:
   int TargetFrames = 0;
   bool Jitter = true;
   int AccumulatedFrames = 0;
+  int PendingBands = 1;
+  int Bands = 1; // of the frame in progress
+  int Band = 0;  // drawn next
   Signature LastSignature;
   int LastRenderedProps = 0;
 

@@ -8,6 +8,10 @@
 //    nothing with alpha 0; surfaces have alpha 1.
 //  - Accumulation stops at the target frame count, starts over when the camera, the material
 //    or the environment rotation change, and not when only the exposure changes.
+//  - A frame drawn in bands (one band per render) accumulates the same mean as whole frames:
+//    the images agree to float rounding whatever the band counts of the frames, a band count
+//    changed within a frame applies from the next frame, and a change within a frame starts
+//    the mean over.
 //  - Moving slider values (n_u, F0, albedo, samples, exposure) keeps the compiled shader
 //    program; changing the specular method builds another one.
 #include "AnisoMaterial.h"
@@ -16,6 +20,7 @@
 #include "render_test_helpers.h"
 #include "vtkAnisoAccumulationPass.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <glm/geometric.hpp>
@@ -278,6 +283,82 @@ TEST(RenderAccumulation, StopsAtTheTargetAndStartsOverOnChanges)
   scene.lighting->setRotationDegrees(30.0);
   EXPECT_EQ(scene.render(), 1);
   EXPECT_EQ(scene.render(), 2);
+}
+
+// Largest absolute difference between two images of the same size (infinity otherwise).
+double largestDifference(const Image& a, const Image& b)
+{
+  if (a.width != b.width || a.height != b.height || a.data.size() != b.data.size() ||
+      a.data.empty())
+  {
+    return INFINITY;
+  }
+  double largest = 0.0;
+  for (std::size_t i = 0; i < a.data.size(); ++i)
+  {
+    largest = std::max(largest, double(std::fabs(a.data[i] - b.data[i])));
+  }
+  return largest;
+}
+
+TEST(RenderAccumulation, FramesInBandsAccumulateTheSameMean)
+{
+  ANISO_REQUIRE_DISPLAY();
+  // Rows not a multiple of the band counts; jitter on (the default), so every frame differs.
+  Scene whole;
+  whole.window->SetSize(40, 37);
+  for (int frame = 1; frame <= 3; ++frame)
+  {
+    ASSERT_EQ(whole.render(), frame);
+  }
+  const Image reference = whole.pass->ReadAccumulation();
+  ASSERT_FALSE(reference.data.empty());
+
+  Scene banded;
+  banded.window->SetSize(40, 37);
+  banded.pass->SetFrameBands(3);
+  EXPECT_EQ(banded.render(), 0);
+  EXPECT_EQ(banded.pass->GetNextBand(), 1);
+  // Within a frame a new count waits for the next frame.
+  banded.pass->SetFrameBands(1);
+  EXPECT_EQ(banded.render(), 0);
+  EXPECT_EQ(banded.pass->GetNextBand(), 2);
+  EXPECT_EQ(banded.render(), 1);
+  EXPECT_EQ(banded.pass->GetNextBand(), 0);
+  EXPECT_EQ(banded.render(), 2); // one band: a whole frame
+  banded.pass->SetFrameBands(2);
+  EXPECT_EQ(banded.render(), 2);
+  EXPECT_EQ(banded.pass->GetNextBand(), 1);
+  EXPECT_EQ(banded.render(), 3);
+  EXPECT_TRUE(banded.pass->IsConverged());
+  EXPECT_LE(largestDifference(banded.pass->ReadAccumulation(), reference), 1e-6);
+  // The band's scissor does not outlive its frame: a whole frame after banded ones covers the
+  // whole image, as the same frames drawn whole do.
+  banded.pass->SetFrameBands(1);
+  banded.pass->SetTargetFrames(4);
+  whole.pass->SetTargetFrames(4);
+  EXPECT_EQ(banded.render(), 4);
+  EXPECT_EQ(whole.render(), 4);
+  EXPECT_LE(largestDifference(banded.pass->ReadAccumulation(), whole.pass->ReadAccumulation()),
+            1e-6);
+}
+
+TEST(RenderAccumulation, ChangeWithinABandedFrameStartsOver)
+{
+  ANISO_REQUIRE_DISPLAY();
+  Scene scene;
+  scene.pass->SetFrameBands(4);
+  for (int band = 0; band < 4; ++band)
+  {
+    scene.render();
+  }
+  EXPECT_EQ(scene.pass->GetAccumulatedFrames(), 1);
+  scene.render();
+  EXPECT_EQ(scene.pass->GetNextBand(), 1);
+  scene.renderer->GetActiveCamera()->Azimuth(10.0);
+  // The mean and the frame in progress are dropped: this render is the new first frame's top.
+  EXPECT_EQ(scene.render(), 0);
+  EXPECT_EQ(scene.pass->GetNextBand(), 1);
 }
 
 TEST(RenderAccumulation, SliderValuesNeverRebuildTheShader)
