@@ -5,7 +5,8 @@
 // drawn, the samples per pixel accumulated and the samples per pixel and second.
 // Run (X server needed): xvfb-run -a -s "-screen 0 1920x1080x24" bench_ui_latency [WxH]
 //   [--frame-budget MS] (0: one frame per model sample count, the behaviour without the
-//   frame-time budget)
+//   frame-time budget) [--trace MS] (prints every event whose handling on the UI thread took
+//   longer than MS, with its phase, type and receiver: where a long gap comes from)
 #include "LutScheduler.h"
 #include "MainWindow.h"
 #include "ParameterControls.h"
@@ -55,6 +56,42 @@ void pump(int ms)
   loop.exec();
 }
 
+// The application whose event deliveries can be timed (--trace).
+class TracingApplication : public QApplication
+{
+public:
+  using QApplication::QApplication;
+  double traceMs = 0.0; // 0: off
+  const char* phase = "set-up";
+
+  bool notify(QObject* receiver, QEvent* event) override
+  {
+    if (traceMs <= 0.0 || depth_ > 0)
+    {
+      return QApplication::notify(receiver, event);
+    }
+    const int type = event->type();
+    QElapsedTimer t;
+    t.start();
+    ++depth_;
+    const bool result = QApplication::notify(receiver, event);
+    --depth_;
+    const double ms = double(t.nsecsElapsed()) * 1e-6;
+    if (ms > traceMs)
+    {
+      const QObject* parent = receiver ? receiver->parent() : nullptr;
+      std::fprintf(stderr, "trace: %-16s %7.1f ms  event %d  receiver %s \"%s\" (parent %s)\n",
+                   phase, ms, type, receiver ? receiver->metaObject()->className() : "-",
+                   receiver ? qPrintable(receiver->objectName()) : "",
+                   parent ? parent->metaObject()->className() : "-");
+    }
+    return result;
+  }
+
+private:
+  int depth_ = 0; // only the outermost delivery of nested ones is timed
+};
+
 double percentile(std::vector<double> v, double q)
 {
   if (v.empty())
@@ -70,7 +107,7 @@ double percentile(std::vector<double> v, double q)
 int main(int argc, char** argv)
 {
   QSurfaceFormat::setDefaultFormat(QVTKOpenGLNativeWidget::defaultFormat());
-  QApplication app(argc, argv);
+  TracingApplication app(argc, argv);
   int width = 0;
   int height = 0;
   int budgetMs = -1; // the view's default
@@ -80,9 +117,13 @@ int main(int argc, char** argv)
     {
       budgetMs = std::atoi(argv[++i]);
     }
+    else if (std::strcmp(argv[i], "--trace") == 0 && i + 1 < argc)
+    {
+      app.traceMs = std::atof(argv[++i]);
+    }
     else if (std::sscanf(argv[i], "%dx%d", &width, &height) != 2)
     {
-      std::fprintf(stderr, "usage: bench_ui_latency [WxH] [--frame-budget MS]\n");
+      std::fprintf(stderr, "usage: bench_ui_latency [WxH] [--frame-budget MS] [--trace MS]\n");
       return 2;
     }
   }
@@ -189,12 +230,14 @@ int main(int argc, char** argv)
   {
     phases.push_back(Phase{name, {}, 0, 0, 0.0});
     current = &phases.back();
+    app.phase = name;
     last = 0;
     QElapsedTimer t;
     t.start();
     body();
     current->seconds = double(t.nsecsElapsed()) * 1e-9;
     current = nullptr;
+    app.phase = "between phases";
   };
   const auto waitConverged = [&](int limitMs)
   {

@@ -36,7 +36,6 @@
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QMimeData>
-#include <QResizeEvent>
 #include <QScreen>
 #include <QSettings>
 #include <QSpinBox>
@@ -559,9 +558,11 @@ void MainWindow::setInteractiveResolution(bool interacting)
   // widget): on a CPU rasteriser most of a frame's cost is per pixel.
   const double before = vtkWidget_->effectiveDevicePixelRatio();
   vtkWidget_->setCustomDevicePixelRatio(interacting ? 0.5 * vtkWidget_->devicePixelRatioF() : 0.0);
-  // The widget sizes its render window by the ratio on a resize only.
-  QResizeEvent resize(vtkWidget_->size(), vtkWidget_->size());
-  QCoreApplication::sendEvent(vtkWidget_, &resize);
+  // The widget sizes its render window by the ratio when its size changes (its protected slot
+  // updateSize). Called directly rather than through a resize event: that would also re-create
+  // the widget's framebuffer and paint, drawing a frame in this very pass of the event loop
+  // (40-80 ms); this way the view's next frame, in a pass of its own, is drawn at the new size.
+  QMetaObject::invokeMethod(vtkWidget_, "updateSize", Qt::DirectConnection);
   const double ratio = vtkWidget_->effectiveDevicePixelRatio() / before;
   // A drag in progress continues from where the pointer is in the new pixel units, so the
   // camera does not jump.

@@ -161,6 +161,8 @@ SceneView::SceneView(SceneModel* model, SceneAssets* assets, LutScheduler* luts,
   renderer_->SetPass(pass_);
   window_->AddRenderer(renderer_);
 
+  settle_->setObjectName("settle");
+  frame_->setObjectName("frame");
   settle_->setSingleShot(true);
   settle_->setInterval(kDefaultSettleMs);
   connect(settle_, &QTimer::timeout, this, &SceneView::settle);
