@@ -281,18 +281,18 @@ void SceneView::setFrameBudgetMs(int ms)
   requestRender();
 }
 
-FrameCostModel SceneView::frameCost() const
+FrameCostModel SceneView::frameCost(bool anySize) const
 {
   const int* size = window_->GetSize();
   const long long pixels = static_cast<long long>(size[0]) * size[1];
-  // Only frames of this size: a frame also has costs that do not grow with its pixels, so
-  // costs per pixel of other sizes would mislead.
+  // Only frames of this size (unless asked otherwise): a frame also has costs that do not grow
+  // with its pixels, so costs per pixel of other sizes would mislead.
   std::vector<FrameCostSample> measured;
-  for (const auto& [key, seconds] : frameCosts_)
+  for (const auto& [key, cost] : frameCosts_)
   {
-    if (key.first == pixels)
+    if (anySize || key.first == pixels)
     {
-      measured.push_back({key.second, static_cast<double>(pixels), seconds});
+      measured.push_back({key.second, static_cast<double>(key.first), cost.seconds});
     }
   }
   return fitFrameCost(measured);
@@ -303,49 +303,68 @@ int SceneView::frameSamples() const
   return interacting_ ? std::min(full_.samples, kInteractiveSamples) : runSamples_;
 }
 
-int SceneView::planRunSamples() const
+int SceneView::frameBands() const
+{
+  return interacting_ ? 1 : pass_->GetFrameBands();
+}
+
+FramePlan SceneView::planRun() const
 {
   const int total = targetSamples();
   if (frameBudgetMs_ <= 0)
   {
-    return full_.samples;
+    return {full_.samples, 1};
   }
+  const int* size = window_->GetSize();
+  const long long pixels = static_cast<long long>(size[0]) * size[1];
   const FrameCostModel cost = frameCost();
   if (!cost.known)
   {
-    // Nothing measured at this size: a first frame as cheap as can be, which measures it.
-    return 1;
+    // Nothing measured at this size (the first still frame after moving at half resolution): a
+    // first frame as cheap as can be, which measures it, in bands as the costs of the other sizes
+    // suggest (costs per pixel of smaller frames are higher: it errs on the side of more bands).
+    const FrameCostModel guess = frameCost(true);
+    return {1, chooseFrameBands(guess, 1, double(pixels), planBudgetSeconds(guess), kMaxBands)};
   }
-  if (!cost.separated)
+  int largestMeasured = 1;
+  for (const auto& entry : frameCosts_)
   {
-    // One sample count measured: a frame of another tells the fixed cost from the samples'; a
-    // frame of 1 when that count was more (the cheapest), else the choice below, which stays
-    // within the budget.
-    const int* size = window_->GetSize();
-    const long long pixels = static_cast<long long>(size[0]) * size[1];
-    int measured = 1;
-    for (const auto& entry : frameCosts_)
+    if (entry.first.first == pixels)
     {
-      if (entry.first.first == pixels)
-      {
-        measured = entry.first.second;
-      }
-    }
-    if (measured != 1)
-    {
-      return 1;
+      largestMeasured = std::max(largestMeasured, entry.first.second);
     }
   }
-  const int* size = window_->GetSize();
+  if (!cost.separated && largestMeasured != 1)
+  {
+    // One sample count measured, more than 1: a frame of 1 (the cheapest) tells the fixed cost
+    // from the samples'.
+    return {1, chooseFrameBands(cost, 1, double(pixels), planBudgetSeconds(cost), kMaxBands)};
+  }
+  // A fit from few, noisy renders is trusted up to 4 times the largest count measured (with one
+  // count, 1, measured: its assumed split overestimates the cost of more samples, so a plan of up
+  // to 4 stays within the budget and measures the split); a count beyond is reached over later
+  // runs, each measuring the way there. Below the material's count, a divisor of the run's total.
+  const int reach = 4 * largestMeasured;
+  const int most = reach >= full_.samples ? full_.samples : largestDivisorAtMost(total, reach);
+  FramePlan plan =
+      chooseFramePlan(cost, double(pixels), planBudgetSeconds(cost), most, total, kMaxBands);
+  if (frameCosts_.count(std::make_pair(pixels, plan.samples)) == 0)
+  {
+    // A count never measured at this size is extrapolated: its first frame is cut in bands for
+    // kUnmeasuredMargin times the predicted cost; the bands are re-planned from what it measured
+    // once it is complete.
+    plan.bands = chooseFrameBands(cost, plan.samples, double(pixels),
+                                  planBudgetSeconds(cost) / kUnmeasuredMargin, kMaxBands);
+  }
+  return plan;
+}
+
+double SceneView::planBudgetSeconds(const FrameCostModel& cost) const
+{
   // Planned for the machine as it ran the latest frames (the fit follows a change of load only
   // over several frames), except while the parts are not yet told apart: a margin on the
   // pessimistic split would keep every frame at 1 sample and the split unknown.
-  const double budget =
-      frameBudgetMs_ * 1e-3 / (cost.separated ? loadMargin(loadRatios_, kMaxLoadMargin) : 1.0);
-  // With one sample count measured (1), the assumed split overestimates the cost of more samples,
-  // so a count it lets through stays within the budget and measures the split: at most 4.
-  return chooseFrameSamples(cost, double(size[0]) * double(size[1]), budget,
-                            cost.separated ? full_.samples : std::min(4, full_.samples), total);
+  return frameBudgetMs_ * 1e-3 / (cost.separated ? loadMargin(loadRatios_, kMaxLoadMargin) : 1.0);
 }
 
 void SceneView::frameEvent(vtkObject* caller, unsigned long event)
@@ -359,14 +378,23 @@ void SceneView::frameEvent(vtkObject* caller, unsigned long event)
   }
   if (caller != window_)
   {
-    // The surface's mapper starts drawing: this frame adds to the mean.
+    // The surface's mapper starts drawing: this render adds (a band of) a frame to the mean.
     frameDrewSurface_ = true;
     frameDrawnSamples_ = material_ ? material_->settings().samples : 1;
+    frameDrawnBands_ = pass_->GetCurrentFrameBands();
+    frameDrawnBand_ = pass_->GetNextBand(); // the band being drawn (counted up after it)
     return;
   }
   if (frameStartNs_ < 0)
   {
     return;
+  }
+  if (frameDrewSurface_)
+  {
+    // The GL may still be drawing what it was given (a software rasteriser works on its own
+    // threads until something needs the result): the render is measured, and its cost paid,
+    // here, not in whichever later call waits for it.
+    glFinish();
   }
   const double seconds = double(clock_.nsecsElapsed() - frameStartNs_) * 1e-9;
   frameStartNs_ = -1;
@@ -376,14 +404,16 @@ void SceneView::frameEvent(vtkObject* caller, unsigned long event)
   }
   lastFrameSeconds_ = seconds;
   const int* size = window_->GetSize();
-  const auto key = std::make_pair(static_cast<long long>(size[0]) * size[1], frameDrawnSamples_);
-  // How far the fit was off for this frame, before it learns from it: the load margin. Only
-  // refinement frames after a run's first: the first after a resize or a new shader variant
-  // also pays for those once, which says nothing of the load.
+  const long long pixels = static_cast<long long>(size[0]) * size[1];
+  // How far the fit was off for this render, before it learns from it: the load margin (a band
+  // predicted as its share of the frame). Only refinement frames after a run's first: the first
+  // after a resize or a new shader variant also pays for those once, which says nothing of the
+  // load.
   const FrameCostModel before = frameCost();
   if (before.known && !interacting_ && pass_->GetAccumulatedFrames() > 1)
   {
-    const double predicted = before.predictSeconds(frameDrawnSamples_, double(key.first));
+    const double predicted =
+        before.predictSeconds(frameDrawnSamples_, double(pixels)) / frameDrawnBands_;
     if (predicted > 0.0)
     {
       loadRatios_.push_back(seconds / predicted);
@@ -393,10 +423,21 @@ void SceneView::frameEvent(vtkObject* caller, unsigned long event)
       }
     }
   }
+  // What the model learns is the cost of whole frames: a frame drawn in bands costs its bands
+  // together (bands differ from one another as the surface does across the rows; together they
+  // are the frame). A frame whose bands were interrupted (the view changed) is not counted.
+  frameBandSeconds_ = frameDrawnBand_ == 0 ? seconds : frameBandSeconds_ + seconds;
+  if (frameDrawnBand_ != frameDrawnBands_ - 1)
+  {
+    return;
+  }
   // A running mean that follows the view (how much of it the surface covers) within a few
-  // frames.
-  const auto known = frameCosts_.find(key);
-  frameCosts_[key] = known == frameCosts_.end() ? seconds : 0.7 * known->second + 0.3 * seconds;
+  // frames. The first frame of a size and sample count may also have paid for things done once
+  // (the targets' allocation at a new size, a new shader variant's compilation): the second
+  // replaces it.
+  FrameCost& cost = frameCosts_[std::make_pair(pixels, frameDrawnSamples_)];
+  cost.seconds = cost.frames < 2 ? frameBandSeconds_ : 0.7 * cost.seconds + 0.3 * frameBandSeconds_;
+  ++cost.frames;
 }
 
 void SceneView::modelChanged(const QString& qkey)
@@ -704,18 +745,23 @@ void SceneView::applyMaterial()
   if (interacting_)
   {
     shown.samples = std::min(shown.samples, kInteractiveSamples);
+    // Shown as drawn: whole frames.
+    pass_->SetFrameBands(1);
   }
   else
   {
-    const int planned = planRunSamples();
-    if (planned != runSamples_)
+    const FramePlan plan = planRun();
+    if (plan.samples != runSamples_)
     {
       // Frames of another sample count: the run starts over, every frame with the same weight.
-      runSamples_ = planned;
+      runSamples_ = plan.samples;
       pass_->Reset();
     }
     shown.samples = runSamples_;
     frames = targetSamples() / runSamples_;
+    // Bands split a frame's drawing, not its samples: the mean is the same, so no restart (the
+    // frame in progress keeps its bands).
+    pass_->SetFrameBands(plan.bands);
   }
   // The scheduler's tables as its worker delivered them: nothing is read or baked here, even
   // when the cache has dropped them from memory since.
@@ -890,7 +936,7 @@ void SceneView::renderNow()
   {
     presentClock_.start();
   }
-  else if (!presentPending_ &&
+  else if (!presentPending_ && pass_->GetNextBand() == 0 &&
            (pass_->GetAccumulatedFrames() <= 1 || pass_->IsConverged() ||
             !presentClock_.isValid() || presentClock_.elapsed() >= kPresentIntervalMs))
   {
@@ -933,24 +979,36 @@ void SceneView::renderNow()
       reportRenderError(message.str());
     }
   }
-  const bool firstOfRun = pass_->GetAccumulatedFrames() == 1;
-  if (!interacting_ && runReplans_ < kMaxReplans &&
-      ((firstOfRun && runReplans_ < 2) ||
-       (!pass_->IsConverged() &&
-        frameOverran(lastFrameSeconds_, frameBudgetMs_ * 1e-3, kOverrunTolerance))))
+  // A refinement frame just completed (its last band drawn): the plan for the frames to come.
+  const bool frameDone = pass_->GetNextBand() == 0;
+  if (!interacting_ && frameDone && frameBudgetMs_ > 0 && !pass_->IsConverged())
   {
-    // The run's first frame measured its own cost: if the plan was off (nothing measured at
-    // this size yet, or one sample count only), the run starts over with the corrected count,
-    // at most twice. A later frame that overran the budget (the load rose) does the same when
-    // the plan, with the margin it measured, now takes fewer samples.
-    ++runReplans_;
     try
     {
-      const int planned = planRunSamples();
-      if (firstOfRun ? planned != runSamples_ : planned < runSamples_)
+      const FramePlan plan = planRun();
+      const bool firstOfRun = pass_->GetAccumulatedFrames() == 1;
+      const bool overran =
+          frameOverran(lastFrameSeconds_, frameBudgetMs_ * 1e-3, kOverrunTolerance);
+      if (runReplans_ < kMaxReplans &&
+          ((firstOfRun && runReplans_ < 2 && plan.samples != runSamples_) ||
+           (overran && plan.samples < runSamples_)))
       {
+        // The run's first frame measured its own cost: if the plan was off (nothing measured at
+        // this size yet, or one sample count only), the run starts over with the corrected
+        // count, at most twice. A later frame that overran the budget (the load rose) does the
+        // same when the plan, with the margin it measured, now takes fewer samples.
+        ++runReplans_;
         applyMaterial();
         requestRender();
+      }
+      else
+      {
+        // The run's samples stay; its frames are cut in as many bands as their measured cost
+        // (and the load) now asks for. That changes no sample of the mean: no restart.
+        const FrameCostModel cost = frameCost();
+        const int* size = window_->GetSize();
+        pass_->SetFrameBands(chooseFrameBands(cost, runSamples_, double(size[0]) * double(size[1]),
+                                              planBudgetSeconds(cost), kMaxBands));
       }
     }
     catch (const Error& e)

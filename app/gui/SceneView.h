@@ -33,6 +33,7 @@
 #include <memory>
 #include <set>
 #include <string>
+#include <utility>
 #include <vector>
 #include <vtkNew.h>
 #include <vtkSmartPointer.h>
@@ -77,6 +78,10 @@ public:
   static constexpr double kMaxLoadMargin = 1.25;
   static constexpr double kOverrunTolerance = 0.2;
   static constexpr int kMaxReplans = 4;
+  // A refinement frame of one sample that still costs more than the budget is drawn in bands
+  // (one per pass of the event loop, vtkAnisoAccumulationPass), at most this many.
+  static constexpr int kMaxBands = 16;
+  static constexpr double kUnmeasuredMargin = 2.0;
 
   SceneView(SceneModel* model, SceneAssets* assets, LutScheduler* luts, vtkRenderWindow* window,
             QObject* parent = nullptr);
@@ -111,9 +116,13 @@ public:
   int frameBudgetMs() const { return frameBudgetMs_; }
   // Samples per pixel of each frame of the current refinement run.
   int frameSamples() const;
+  // Bands each frame of the current refinement run is drawn in (1 while things move).
+  int frameBands() const;
   // The cost model fitted to the frames of the window's current size drawn since the shading
-  // last changed.
-  FrameCostModel frameCost() const;
+  // last changed (a frame drawn in bands costing its bands together). With ANY_SIZE, to the frames
+  // of every size: a guess for a size not measured yet (costs per pixel of smaller frames are
+  // higher, so it errs on the side of cheaper frames).
+  FrameCostModel frameCost(bool anySize = false) const;
   // True from a change of the environment or cube size until its lighting is on screen (or
   // its bake failed).
   bool lightingBusy() const
@@ -164,8 +173,11 @@ private:
   void presentFrame();
   // Window render start and end, the surface's draw in between: a frame's cost.
   void frameEvent(vtkObject* caller, unsigned long event);
-  // The samples per frame of a still run (the frame budget's choice).
-  int planRunSamples() const;
+  // The samples per frame of a still run and the bands its frames are drawn in (the frame
+  // budget's choice).
+  FramePlan planRun() const;
+  // The budget a plan with the cost model COST meets: the frame budget less the load margin.
+  double planBudgetSeconds(const FrameCostModel& cost) const;
   void beginInteraction();
   void settle();
 
@@ -192,10 +204,16 @@ private:
   bool applyingCamera_ = false;
   bool cameraMoved_ = false;
   int frameBudgetMs_ = kDefaultFrameBudgetMs;
-  // Frame costs since the shading last changed (window render time of frames that drew the
-  // surface), a running mean per window size and sample count; the samples per frame of the
-  // current run, and how often that run was re-planned after its first frame.
-  std::map<std::pair<long long, int>, double> frameCosts_;
+  // Frame costs since the shading last changed (window render time of the renders that drew
+  // the surface, a frame's bands together), a running mean per window size (pixels) and sample
+  // count; the samples per frame of the current run, and how often that run was re-planned after
+  // its first frame.
+  struct FrameCost
+  {
+    double seconds = 0.0;
+    int frames = 0; // measured
+  };
+  std::map<std::pair<long long, int>, FrameCost> frameCosts_;
   int runSamples_ = 1;
   int runReplans_ = 0;
   // Measured / predicted cost of the latest frames (the load margin's input), and the UI-thread
@@ -206,6 +224,9 @@ private:
   qint64 frameStartNs_ = -1;
   bool frameDrewSurface_ = false;
   int frameDrawnSamples_ = 1;
+  int frameDrawnBands_ = 1;
+  int frameDrawnBand_ = 0;
+  double frameBandSeconds_ = 0.0; // the bands of the frame in progress so far
   // The lighting on screen has its environment-sampling distribution (baked on the worker).
   bool lightingSampled_ = false;
   QElapsedTimer presentClock_;  // since a frame last reached the screen
