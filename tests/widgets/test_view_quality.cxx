@@ -1,8 +1,8 @@
 // The still view's quality and the UI thread (needs an X server: run under Xvfb, serially).
 // Checks:
-//   - frames capped by the frame budget (one sample each, drawn without reaching the screen) end
-//     with the final mean on screen (the widget's picture equals the view drawn again), and
-//     converge to the same image as uncapped frames (the material's 16 samples each): the same
+//   - frames capped by the frame budget (one sample each, drawn in bands without reaching the
+//     screen) end with the final mean on screen (the widget's picture equals the view drawn again),
+//     and converge to the same image as uncapped frames (the material's 16 samples each): the same
 //     total sample count, and on the pixels the surface covers whole, the same mean radiance and
 //     a per-pixel difference within the noise of 128 samples (statistical: two unbiased
 //     estimates of one integral);
@@ -109,10 +109,11 @@ private slots:
     QCOMPARE(view->frameSamples(), 16);
     QCOMPARE(view->accumulatedSamples(), 128);
 
-    // A budget no frame meets: one sample per frame, 128 frames.
+    // A budget no whole frame meets: one sample per frame, 128 frames, each drawn in bands.
     const aniso::Image capped = convergedImage(window, 1);
     QVERIFY(!capped.data.empty());
     QCOMPARE(view->frameSamples(), 1);
+    QVERIFY(view->frameBands() > 1);
     QCOMPARE(view->accumulatedSamples(), 128);
     QCOMPARE(view->targetSamples(), 128);
     QCOMPARE(capped.width, uncapped.width);
