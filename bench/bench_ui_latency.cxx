@@ -2,8 +2,9 @@
 // records the gaps between its ticks while (a) a camera orbit is dragged for 2 s, (b) the n_u
 // slider is dragged, (c) the view refines to its target once still, (d) environment sampling
 // is switched to mis. Prints, per phase, the largest and the 99th-percentile gap, the frames
-// drawn, the samples per pixel accumulated and the samples per pixel and second.
-// Run (X server needed): xvfb-run -a -s "-screen 0 1920x1080x24" bench_ui_latency [WxH]
+// drawn (window renders: a frame drawn in bands counts once per band), the samples per pixel
+// accumulated and the samples per pixel and second. Run (X server needed): xvfb-run -a -s "-screen
+// 0 1920x1080x24" bench_ui_latency [WxH]
 //   [--frame-budget MS] (0: one frame per model sample count, the behaviour without the
 //   frame-time budget) [--trace MS] (prints every event whose handling on the UI thread took
 //   longer than MS, with its phase, type and receiver: where a long gap comes from)
@@ -11,6 +12,7 @@
 #include "MainWindow.h"
 #include "ParameterControls.h"
 #include "SceneView.h"
+#include "vtkAnisoAccumulationPass.h"
 
 #include <QApplication>
 #include <QElapsedTimer>
@@ -174,17 +176,28 @@ int main(int argc, char** argv)
   // Every frame the window draws (the view's progressive frames and the interactor's own),
   // counted at the renderer's end.
   int lastSamples = 0;
+  int lastFrames = 0;
+  auto* pass = vtkAnisoAccumulationPass::SafeDownCast(view->renderer()->GetPass());
   vtkNew<vtkCallbackCommand> frameEnd;
   std::function<void()> onFrame = [&]
   {
     const int samples = view->accumulatedSamples();
+    const int frames = pass->GetAccumulatedFrames();
     if (current)
     {
       ++current->frames;
-      // A restart of the accumulation counts its first frame whole.
-      current->samples += samples > lastSamples ? samples - lastSamples : samples;
+      // A band that does not complete a frame adds nothing; a frame that continues the mean
+      // adds its samples, one that starts it over counts whole.
+      if (pass->GetNextBand() == 0)
+      {
+        current->samples += frames == lastFrames + 1 ? samples - lastSamples : samples;
+      }
     }
-    lastSamples = samples;
+    if (pass->GetNextBand() == 0)
+    {
+      lastSamples = samples;
+      lastFrames = frames;
+    }
   };
   frameEnd->SetClientData(&onFrame);
   frameEnd->SetCallback([](vtkObject*, unsigned long, void* f, void*)

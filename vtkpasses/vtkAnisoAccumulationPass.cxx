@@ -6,6 +6,7 @@
 #include "sampling/hammersley.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdint>
 #include <glm/gtc/type_ptr.hpp>
@@ -265,17 +266,31 @@ void vtkAnisoAccumulationPass::Render(const vtkRenderState* s)
     if (this->Band == 0)
     {
       this->Bands = std::min(this->PendingBands, height);
+      this->PlanBandRows(height);
+      this->BandSeconds.assign(std::size_t(this->Bands), 0.0);
     }
     // Band 0 is the top one; GL's rows count from the bottom.
-    const int y0 = height - static_cast<int>((std::int64_t(this->Band) + 1) * height / this->Bands);
-    const int y1 = height - static_cast<int>(std::int64_t(this->Band) * height / this->Bands);
+    const int y0 = this->BandEdges[std::size_t(this->Band) + 1];
+    const int y1 = this->BandEdges[std::size_t(this->Band)];
+    const auto start = std::chrono::steady_clock::now();
     this->PrepareTargets(window, width, height);
     this->RenderFrame(s, window, width, height, y0, y1);
     this->Accumulate(window, width, height, y0, y1);
+    if (this->Bands > 1)
+    {
+      // What this band cost (the rasteriser may work on its own threads: waited for).
+      glFinish();
+      this->BandSeconds[std::size_t(this->Band)] =
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    }
     if (++this->Band >= this->Bands)
     {
       this->Band = 0;
       ++this->AccumulatedFrames;
+      if (this->Bands > 1)
+      {
+        this->UpdateRowCosts(height);
+      }
     }
     else if (this->AccumulatedFrames == 0)
     {
@@ -287,6 +302,69 @@ void vtkAnisoAccumulationPass::Render(const vtkRenderState* s)
   }
   this->NumberOfRenderedProps = this->LastRenderedProps;
   this->Present(window, x, y, width, height, shownFrom);
+}
+
+void vtkAnisoAccumulationPass::PlanBandRows(int height)
+{
+  // Band b spans GL rows [BandEdges[b + 1], BandEdges[b]), from the top down. Each band takes an
+  // equal share of the rows' measured cost when it is known for this height, else of the rows.
+  const int bands = this->Bands;
+  this->BandEdges.assign(std::size_t(bands) + 1, 0);
+  this->BandEdges[0] = height;
+  const bool measured = static_cast<int>(this->RowCosts.size()) == height;
+  double total = 0.0;
+  for (int row = 0; row < height; ++row)
+  {
+    total += measured ? this->RowCosts[std::size_t(row)] : 1.0;
+  }
+  double sum = 0.0;
+  int row = height; // rows above this one are taken
+  for (int b = 1; b < bands; ++b)
+  {
+    const double share = total * b / bands;
+    // Leave at least one row to each band still to come.
+    const int lowest = bands - b;
+    while (row - 1 >= lowest && sum < share)
+    {
+      --row;
+      sum += measured ? this->RowCosts[std::size_t(row)] : 1.0;
+    }
+    // At least one row for this band.
+    if (row >= this->BandEdges[std::size_t(b) - 1])
+    {
+      row = this->BandEdges[std::size_t(b) - 1] - 1;
+      sum += measured ? this->RowCosts[std::size_t(row)] : 1.0;
+    }
+    this->BandEdges[std::size_t(b)] = row;
+  }
+  this->BandEdges[std::size_t(bands)] = 0;
+}
+
+void vtkAnisoAccumulationPass::UpdateRowCosts(int height)
+{
+  // Each band's time spread over its rows; averaged with what the rows cost before (at this
+  // height), so one disturbed band moves the cut by half its error.
+  const bool before = static_cast<int>(this->RowCosts.size()) == height;
+  if (!before)
+  {
+    this->RowCosts.assign(std::size_t(height), 0.0);
+  }
+  for (int b = 0; b < this->Bands; ++b)
+  {
+    const int top = this->BandEdges[std::size_t(b)];
+    const int bottom = this->BandEdges[std::size_t(b) + 1];
+    const double perRow = this->BandSeconds[std::size_t(b)] / std::max(top - bottom, 1);
+    for (int row = bottom; row < top; ++row)
+    {
+      double& cost = this->RowCosts[std::size_t(row)];
+      cost = before ? 0.5 * (cost + perRow) : perRow;
+    }
+  }
+}
+
+void vtkAnisoAccumulationPass::SetRowCosts(const std::vector<double>& costs)
+{
+  this->RowCosts = costs;
 }
 
 void vtkAnisoAccumulationPass::PrepareTargets(vtkOpenGLRenderWindow* window, int width, int height)
@@ -351,7 +429,10 @@ void vtkAnisoAccumulationPass::RenderFrame(const vtkRenderState* s, vtkOpenGLRen
   {
     vtkOpenGLState::ScopedglViewport viewport(ostate);
     vtkOpenGLState::ScopedglScissor scissor(ostate);
+    vtkOpenGLState::ScopedglEnableDisable scissorTest(ostate, GL_SCISSOR_TEST);
     vtkOpenGLState::ScopedglClearColor clearColor(ostate);
+    // The band's rows are kept by the scissor, which the window does not always test.
+    ostate->vtkglEnable(GL_SCISSOR_TEST);
     ostate->vtkglViewport(0, 0, width, height);
     ostate->vtkglScissor(0, 0, width, height);
     ostate->vtkglClearColor(0.0f, 0.0f, 0.0f, 0.0f);
@@ -494,9 +575,11 @@ void vtkAnisoAccumulationPass::Accumulate(vtkOpenGLRenderWindow* window, int wid
   {
     vtkOpenGLState::ScopedglViewport viewport(ostate);
     vtkOpenGLState::ScopedglScissor scissor(ostate);
+    vtkOpenGLState::ScopedglEnableDisable scissorTest(ostate, GL_SCISSOR_TEST);
     vtkOpenGLState::ScopedglEnableDisable depthTest(ostate, GL_DEPTH_TEST);
     vtkOpenGLState::ScopedglEnableDisable blend(ostate, GL_BLEND);
     vtkOpenGLState::ScopedglBlendFuncSeparate blendFunc(ostate);
+    ostate->vtkglEnable(GL_SCISSOR_TEST);
     ostate->vtkglViewport(0, 0, width, height);
     ostate->vtkglScissor(0, y0, width, y1 - y0);
     ostate->vtkglDisable(GL_DEPTH_TEST);
@@ -549,8 +632,10 @@ void vtkAnisoAccumulationPass::Present(vtkOpenGLRenderWindow* window, int x, int
   vtkOpenGLState* ostate = window->GetState();
   vtkOpenGLState::ScopedglViewport viewport(ostate);
   vtkOpenGLState::ScopedglScissor scissor(ostate);
+  vtkOpenGLState::ScopedglEnableDisable scissorTest(ostate, GL_SCISSOR_TEST);
   vtkOpenGLState::ScopedglEnableDisable depthTest(ostate, GL_DEPTH_TEST);
   vtkOpenGLState::ScopedglEnableDisable blend(ostate, GL_BLEND);
+  ostate->vtkglEnable(GL_SCISSOR_TEST);
   ostate->vtkglViewport(x, y, width, height);
   ostate->vtkglScissor(x, y + y0, width, height - y0);
   ostate->vtkglDisable(GL_DEPTH_TEST);

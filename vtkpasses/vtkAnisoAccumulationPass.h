@@ -18,7 +18,10 @@
 // and the background are drawn and folded into the mean only within the band's rows (scissor),
 // so a costly frame keeps the caller busy for a fraction of its cost at a time. The frame counts
 // as accumulated once its last band is drawn; every band of it uses the frame's own shift and
-// jitter, so the mean is the same as with whole frames.
+// jitter, so the mean is the same as with whole frames. Bands take equal shares of the rows'
+// cost, not of the rows: each band's render is timed (waiting for the GL to finish it), its time
+// spread over its rows, and the bands of the next frame (of this view or the next at the same
+// height) cut so each costs as much as the others: where the surface is, bands are narrower.
 #include "DisplaySettings.h"
 #include "image/image.h"
 
@@ -86,6 +89,12 @@ public:
   int GetNextBand() const { return this->Band; }
   // Bands of the frame in progress (or of the last one drawn).
   int GetCurrentFrameBands() const { return this->Bands; }
+  // Their rows: band b spans GL rows [edges[b + 1], edges[b]) (GL counts rows from the bottom).
+  const std::vector<int>& GetBandEdges() const { return this->BandEdges; }
+  // The cost of each GL row (any unit) by which the next frame's bands are cut, as the bands'
+  // times set it; given here, it holds until frames in bands measure it anew (the pass's tests).
+  void SetRowCosts(const std::vector<double>& costs);
+  const std::vector<double>& GetRowCosts() const { return this->RowCosts; }
 
   int GetAccumulatedFrames() const { return this->AccumulatedFrames; }
   bool IsConverged() const;
@@ -112,6 +121,10 @@ private:
   };
   Signature ComputeSignature(const vtkRenderState* s, int width, int height) const;
   void PrepareTargets(vtkOpenGLRenderWindow* window, int width, int height);
+  // BandEdges for this->Bands bands of HEIGHT rows.
+  void PlanBandRows(int height);
+  // RowCosts from the bands' times of the frame just completed.
+  void UpdateRowCosts(int height);
   // Rows [y0, y1) (GL order, 0 at the bottom) of the frame are drawn.
   void RenderFrame(const vtkRenderState* s, vtkOpenGLRenderWindow* window, int width, int height,
                    int y0, int y1);
@@ -130,8 +143,11 @@ private:
   bool Jitter = true;
   int AccumulatedFrames = 0;
   int PendingBands = 1;
-  int Bands = 1; // of the frame in progress
-  int Band = 0;  // drawn next
+  int Bands = 1;                   // of the frame in progress
+  int Band = 0;                    // drawn next
+  std::vector<int> BandEdges;      // GL rows: band b spans [BandEdges[b + 1], BandEdges[b])
+  std::vector<double> RowCosts;    // per GL row, measured at the last height banded
+  std::vector<double> BandSeconds; // of the frame in progress
   Signature LastSignature;
   int LastRenderedProps = 0;
 

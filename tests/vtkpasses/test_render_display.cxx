@@ -9,9 +9,10 @@
 //  - Accumulation stops at the target frame count, starts over when the camera, the material
 //    or the environment rotation change, and not when only the exposure changes.
 //  - A frame drawn in bands (one band per render) accumulates the same mean as whole frames:
-//    the images agree to float rounding whatever the band counts of the frames, a band count
-//    changed within a frame applies from the next frame, and a change within a frame starts
-//    the mean over.
+//    the images agree to float rounding whatever the band counts of the frames, and with bands
+//    cut by the rows' measured cost; a band count changed within a frame applies from the next
+//    frame, and a change within a frame starts the mean over. Bands take equal shares of given
+//    row costs (worked out by hand), equal rows without them.
 //  - Moving slider values (n_u, F0, albedo, samples, exposure) keeps the compiled shader
 //    program; changing the specular method builds another one.
 #include "AnisoMaterial.h"
@@ -31,11 +32,14 @@
 #include <vtkCommand.h>
 #include <vtkNew.h>
 #include <vtkOpenGLPolyDataMapper.h>
+#include <vtkOpenGLRenderWindow.h>
 #include <vtkOpenGLRenderer.h>
+#include <vtkOpenGLState.h>
 #include <vtkPolyData.h>
 #include <vtkRenderStepsPass.h>
 #include <vtkRenderWindow.h>
 #include <vtkShaderProgram.h>
+#include <vtk_glew.h>
 
 namespace aniso::test
 {
@@ -251,9 +255,16 @@ struct Scene
 
   int render()
   {
+    if (scissorOff)
+    {
+      // As a window may leave it (a QOpenGLWidget's does): the pass must not rely on it.
+      window->MakeCurrent();
+      vtkOpenGLRenderWindow::SafeDownCast(window)->GetState()->vtkglDisable(GL_SCISSOR_TEST);
+    }
     window->Render();
     return pass->GetAccumulatedFrames();
   }
+  bool scissorOff = false;
 };
 
 TEST(RenderAccumulation, StopsAtTheTargetAndStartsOverOnChanges)
@@ -315,6 +326,7 @@ TEST(RenderAccumulation, FramesInBandsAccumulateTheSameMean)
   ASSERT_FALSE(reference.data.empty());
 
   Scene banded;
+  banded.scissorOff = true;
   banded.window->SetSize(40, 37);
   banded.pass->SetFrameBands(3);
   EXPECT_EQ(banded.render(), 0);
@@ -341,6 +353,53 @@ TEST(RenderAccumulation, FramesInBandsAccumulateTheSameMean)
   EXPECT_EQ(whole.render(), 4);
   EXPECT_LE(largestDifference(banded.pass->ReadAccumulation(), whole.pass->ReadAccumulation()),
             1e-6);
+
+  // Bands cut by the measured cost of the rows (after the first banded frame) cover the frame
+  // as well.
+  Scene measured;
+  measured.window->SetSize(40, 37);
+  measured.pass->SetFrameBands(3);
+  for (int render = 0; render < 3 * 3; ++render)
+  {
+    measured.render();
+  }
+  ASSERT_TRUE(measured.pass->IsConverged());
+  EXPECT_EQ(measured.pass->GetRowCosts().size(), 37u);
+  EXPECT_LE(largestDifference(measured.pass->ReadAccumulation(), reference), 1e-6);
+}
+
+TEST(RenderAccumulation, BandsTakeEqualSharesOfTheRowsCost)
+{
+  ANISO_REQUIRE_DISPLAY();
+  Scene scene;
+  scene.window->SetSize(40, 40);
+  // Rows 10..29 (GL) cost 9 each, the 20 others 1 each: 200 in all, a third is 66.7. From the
+  // top, the first band takes rows until their sum reaches 66.7: rows 39..30 (10) and the costly
+  // 29..23 (63), 73; the second until 133.3: rows 22..16, 136; the third the rest, rows 15..0.
+  std::vector<double> costs(40, 1.0);
+  for (int row = 10; row < 30; ++row)
+  {
+    costs[std::size_t(row)] = 9.0;
+  }
+  scene.pass->SetRowCosts(costs);
+  scene.pass->SetFrameBands(3);
+  scene.render();
+  const std::vector<int>& edges = scene.pass->GetBandEdges();
+  ASSERT_EQ(edges.size(), 4u);
+  EXPECT_EQ(edges[0], 40);
+  EXPECT_EQ(edges[1], 23);
+  EXPECT_EQ(edges[2], 16);
+  EXPECT_EQ(edges[3], 0);
+  // Without measured costs (another height), bands of equal rows: 40 / 3 -> 14, 13, 13.
+  Scene uniform;
+  uniform.window->SetSize(40, 40);
+  uniform.pass->SetRowCosts(std::vector<double>(12, 1.0));
+  uniform.pass->SetFrameBands(3);
+  uniform.render();
+  const std::vector<int>& even = uniform.pass->GetBandEdges();
+  ASSERT_EQ(even.size(), 4u);
+  EXPECT_EQ(even[0] - even[1] + even[1] - even[2] + even[2] - even[3], 40);
+  EXPECT_LE(std::abs((even[0] - even[1]) - (even[2] - even[3])), 1);
 }
 
 TEST(RenderAccumulation, ChangeWithinABandedFrameStartsOver)
