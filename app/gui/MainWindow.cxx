@@ -41,12 +41,14 @@
 #include <QSpinBox>
 #include <QStandardPaths>
 #include <QStatusBar>
+#include <QThreadPool>
 #include <QToolButton>
 #include <QUndoStack>
 #include <QUrl>
 #include <QVTKOpenGLNativeWidget.h>
 #include <algorithm>
 #include <cmath>
+#include <new>
 #include <vtkGenericOpenGLRenderWindow.h>
 #include <vtkInteractorStyleTrackballCamera.h>
 #include <vtkRenderWindowInteractor.h>
@@ -82,8 +84,10 @@ Image rgbOf(const Image& rgba)
 MainWindow::MainWindow(QWidget* parent)
     : QMainWindow(parent), editor_(&model_), assets_(&model_),
       luts_(new LutScheduler(&model_, nullptr, this)), vtkWidget_(new QVTKOpenGLNativeWidget(this)),
-      samplesLabel_(new QLabel(this)), lutLabel_(new QLabel(this))
+      samplesLabel_(new QLabel(this)), lutLabel_(new QLabel(this)), meshPool_(new QThreadPool(this))
 {
+  // One mesh load at a time: a second would only compete for the cores with the first.
+  meshPool_->setMaxThreadCount(1);
   setWindowTitle(tr("aniso"));
   setObjectName("MainWindow");
   setAcceptDrops(true);
@@ -168,6 +172,8 @@ MainWindow::MainWindow(QWidget* parent)
 
 MainWindow::~MainWindow()
 {
+  // A mesh load in flight delivers to this window: it ends first (its result is dropped).
+  meshPool_->waitForDone();
   // The comparison and the lit actor draw the view's mesh: they go before the view, which goes
   // before the widget whose window it draws into.
   delete compareWindow_;
@@ -189,7 +195,7 @@ void MainWindow::createMenus()
             tr("Meshes (%1);;All files (*)").arg(QString::fromStdString(meshFilePatterns())));
         if (!path.isEmpty())
         {
-          openMesh(path);
+          openMeshInBackground(path);
         }
       },
       QKeySequence::Open);
@@ -310,6 +316,58 @@ bool MainWindow::openMesh(const QString& path)
       });
 }
 
+void MainWindow::openMeshInBackground(const QString& path)
+{
+  const int id = ++meshRequest_;
+  meshLoading_ = true;
+  statusBar()->showMessage(tr("Loading %1").arg(QFileInfo(path).fileName()));
+  const std::string mesh = path.toStdString();
+  const std::string tangents = model_.text("tangents");
+  meshPool_->start(
+      [this, id, path, mesh, tangents]
+      {
+        SceneAssets::LoadedSurface surface;
+        QString error;
+        try
+        {
+          surface = SceneAssets::loadSurface(mesh, tangents);
+        }
+        catch (const Error& e)
+        {
+          error = QString::fromStdString(e.what());
+        }
+        catch (const std::bad_alloc&)
+        {
+          error = tr("%1: too large for the memory available").arg(path);
+        }
+        // Delivered on the UI thread.
+        QMetaObject::invokeMethod(
+            this, [this, id, path, surface, error] { meshLoaded(id, path, surface, error); },
+            Qt::QueuedConnection);
+      });
+}
+
+void MainWindow::meshLoaded(int id, const QString& path, const SceneAssets::LoadedSurface& surface,
+                            const QString& error)
+{
+  if (id != meshRequest_)
+  {
+    return; // a later request took its place
+  }
+  meshLoading_ = false;
+  statusBar()->clearMessage();
+  if (!error.isEmpty())
+  {
+    // The scene stays as it was.
+    reportError(error, true);
+    return;
+  }
+  // The surface is in the assets now, so opening it (the model's validation, the view) reads
+  // nothing again, unless the tangents changed meanwhile.
+  assets_.adoptSurface(surface);
+  openMesh(path);
+}
+
 bool MainWindow::openEnvironment(const QString& path)
 {
   return attempt(
@@ -350,7 +408,7 @@ bool MainWindow::saveSession(const QString& path)
       });
 }
 
-bool MainWindow::openAny(const QString& path)
+bool MainWindow::openAny(const QString& path, bool background)
 {
   const QString suffix = lowerSuffix(path);
   if (suffix == "json")
@@ -359,6 +417,11 @@ bool MainWindow::openAny(const QString& path)
   }
   if (isMeshFile(path))
   {
+    if (background)
+    {
+      openMeshInBackground(path);
+      return true;
+    }
     return openMesh(path);
   }
   bool environment = suffix == "hdr";
@@ -546,7 +609,7 @@ void MainWindow::rebuildRecentMenu()
   const QStringList files = recentFiles();
   for (const QString& path : files)
   {
-    recentMenu_->addAction(QFileInfo(path).fileName(), this, [this, path] { openAny(path); })
+    recentMenu_->addAction(QFileInfo(path).fileName(), this, [this, path] { openAny(path, true); })
         ->setToolTip(path);
   }
   recentMenu_->setEnabled(!files.isEmpty());
@@ -615,7 +678,7 @@ void MainWindow::dropEvent(QDropEvent* event)
   {
     if (url.isLocalFile())
     {
-      openAny(url.toLocalFile());
+      openAny(url.toLocalFile(), true);
     }
   }
   event->acceptProposedAction();

@@ -16,6 +16,7 @@
 #include <vtkNew.h>
 
 class QLabel;
+class QThreadPool;
 class QMenu;
 class QVTKOpenGLNativeWidget;
 class vtkGenericOpenGLRenderWindow;
@@ -67,8 +68,16 @@ public:
   bool openSession(const QString& path);
   bool saveSession(const QString& path);
   // By the file's kind: a session (.json), a mesh, an environment (.hdr, or an .exr twice as
-  // wide as high), else an image taken as the normal map.
-  bool openAny(const QString& path);
+  // wide as high), else an image taken as the normal map. With BACKGROUND a mesh opens through
+  // openMeshInBackground (true then means the load started).
+  bool openAny(const QString& path, bool background = false);
+  // Opens a mesh as openMesh does, after reading and preparing it on a worker thread: the window
+  // answers input meanwhile ("Loading NAME" in the status bar, meshLoading() true). The latest
+  // request wins (an earlier one that finishes later is dropped); a failure is reported as
+  // openMesh reports it, once, and leaves the scene as it was. The File menu, dropped files and
+  // the recent files open meshes so.
+  void openMeshInBackground(const QString& path);
+  bool meshLoading() const { return meshLoading_; }
   // Renders the current view at scale x its size with the full quality and writes PATH by its
   // extension: .png (display-transformed 8-bit sRGB), .tif/.tiff (the same in 16 bits), .exr
   // (linear radiance, float, alpha = coverage). Throws aniso::Error "PATH: reason".
@@ -96,6 +105,9 @@ private:
   void showSamples(int samples, int target);
   void setInteractiveResolution(bool interacting);
   void chooseAndExportScreenshot();
+  // A worker's mesh load of request ID arrived (ERROR empty on success).
+  void meshLoaded(int id, const QString& path, const SceneAssets::LoadedSurface& surface,
+                  const QString& error);
 
   SceneModel model_;
   SceneEditor editor_;
@@ -118,5 +130,8 @@ private:
   QLabel* samplesLabel_;
   QLabel* lutLabel_;
   bool errorDialogs_ = true;
+  QThreadPool* meshPool_;
+  int meshRequest_ = 0; // sequence number of the latest background mesh request
+  bool meshLoading_ = false;
 };
 } // namespace aniso

@@ -35,6 +35,20 @@ public:
       }
     }
     T value = make(); // may throw: nothing is stored then
+    return put(key, std::move(value));
+  }
+
+  // Stores VALUE as the most recent under KEY (replacing what KEY held).
+  const T& put(const std::string& key, T value)
+  {
+    for (auto it = items_.begin(); it != items_.end(); ++it)
+    {
+      if (it->first == key)
+      {
+        items_.erase(it);
+        break;
+      }
+    }
     items_.emplace_front(key, std::move(value));
     if (items_.size() > capacity_)
     {
@@ -60,6 +74,24 @@ public:
                                                  const std::string& tangents);
   // What loading and preparing that surface had to say (dropped faces, computed normals...).
   std::vector<std::string> surfaceNotes(const std::string& mesh, const std::string& tangents);
+
+  struct Surface
+  {
+    PreparedSurface prepared;
+    std::vector<std::string> notes; // the mesh report's, then the preparation's
+  };
+  // A surface loaded and prepared apart from any SceneAssets, so on any thread; handed to
+  // adoptSurface on the thread that owns the assets, after which surface() finds it.
+  struct LoadedSurface
+  {
+    std::string mesh;
+    std::string tangents;
+    std::shared_ptr<LoadedMesh> loaded;
+    std::shared_ptr<const Surface> surface;
+  };
+  // Throws aniso::Error "SUBJECT: reason" as surface() does.
+  static LoadedSurface loadSurface(const std::string& mesh, const std::string& tangents);
+  void adoptSurface(const LoadedSurface& surface);
   std::shared_ptr<const Environment> environment(const std::string& spec);
   // The maps the model's values ask for, as the material takes them (bump none: no normal or
   // quaternion map; quaternion: the quaternion map, else baked from the normal map).
@@ -77,11 +109,6 @@ public:
   void setMaxTextureSide(int side) { maxTextureSide_ = side; }
 
 private:
-  struct Surface
-  {
-    PreparedSurface prepared;
-    std::vector<std::string> notes; // the mesh report's, then the preparation's
-  };
   std::shared_ptr<const Surface> surfaceEntry(const std::string& mesh, const std::string& tangents);
   struct LoadedImage
   {

@@ -5,9 +5,11 @@
 // (sizes from the widget, the PNG as the view shows it, alpha 0 on the background and 1 on the
 // sphere's centre, which the framed sphere covers); a session's camera reaches the view; the
 // scripted command line writes a screenshot or fails with the file's name; dropped files open by
-// kind; screenshot file names follow the mesh.
+// kind; meshes opened in the background change the scene only when loaded, the latest request
+// winning, a corrupt one reported; screenshot file names follow the mesh.
 #include "LutScheduler.h"
 #include "MainWindow.h"
+#include "SceneAssets.h"
 #include "SceneView.h"
 #include "error.h"
 #include "image/image.h"
@@ -34,6 +36,7 @@
 #include <ctime>
 #include <vtkCamera.h>
 #include <vtkOpenGLRenderer.h>
+#include <vtkPolyData.h>
 
 using aniso::numberValue;
 using aniso::textValue;
@@ -275,7 +278,8 @@ private slots:
       QApplication::sendEvent(&window, &dropped);
     };
     drop(mesh);
-    QCOMPARE(QString::fromStdString(window.model()->text("mesh")), mesh);
+    // Meshes load on a worker: the scene changes once it delivers.
+    QTRY_COMPARE_WITH_TIMEOUT(QString::fromStdString(window.model()->text("mesh")), mesh, 30000);
     drop(env);
     QCOMPARE(QString::fromStdString(window.model()->text("env")), env);
     drop(normals);
@@ -284,6 +288,69 @@ private slots:
     drop(session);
     QCOMPARE(window.model()->real("nu"), 321.0);
     QCOMPARE(errors.count(), 0);
+  }
+
+  // A mesh opened in the background (the File menu, drops, recent files) changes nothing until
+  // the worker delivers it: right after the request the scene is as it was and the window says
+  // it is loading; then the mesh is the scene's, the same surface openMesh gives. Of two
+  // requests the later wins, whichever finishes last; a corrupt file is reported once with its
+  // name and the scene stays.
+  void meshesOpenInTheBackground()
+  {
+    QTemporaryDir dir;
+    const QString first = dir.filePath("first.obj");
+    const QString second = dir.filePath("second.obj");
+    const QString broken = dir.filePath("broken.stl");
+    {
+      QFile f(first);
+      QVERIFY(f.open(QIODevice::WriteOnly));
+      f.write("v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n");
+    }
+    {
+      QFile f(second);
+      QVERIFY(f.open(QIODevice::WriteOnly));
+      // A square pyramid: 5 points, 6 triangles.
+      f.write("v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0.5 0.5 1\n"
+              "f 1 3 2\nf 1 4 3\nf 1 2 5\nf 2 3 5\nf 3 4 5\nf 4 1 5\n");
+    }
+    writeGarbage(broken);
+
+    aniso::MainWindow window;
+    window.setErrorDialogs(false);
+    cheapScene(window, 1);
+    window.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&window));
+    QSignalSpy errors(&window, &aniso::MainWindow::errorReported);
+    const std::string before = window.model()->text("mesh");
+    const int edits = window.editor()->undoStack()->count();
+
+    window.openMeshInBackground(first);
+    QVERIFY(window.meshLoading());
+    QCOMPARE(window.model()->text("mesh"), before);
+    window.openMeshInBackground(second);
+    QTRY_VERIFY_WITH_TIMEOUT(!window.meshLoading(), 30000);
+    QCOMPARE(QString::fromStdString(window.model()->text("mesh")), second);
+    // The first request's delivery, if it comes later, changes nothing.
+    QTest::qWait(200);
+    QCOMPARE(QString::fromStdString(window.model()->text("mesh")), second);
+    QCOMPARE(errors.count(), 0);
+    // The first never reached the scene: one edit, the second mesh.
+    QCOMPARE(window.editor()->undoStack()->count(), edits + 1);
+    // The view draws the pyramid: what the synchronous path prepares from the same file.
+    aniso::SceneModel scratch;
+    aniso::SceneAssets reference(&scratch);
+    const auto expected = reference.surface(second.toStdString(), window.model()->text("tangents"));
+    QCOMPARE(window.view()->renderSettings(8, 8).surface->GetNumberOfCells(),
+             expected->polyData->GetNumberOfCells());
+    QCOMPARE(window.view()->renderSettings(8, 8).surface->GetNumberOfPoints(),
+             expected->polyData->GetNumberOfPoints());
+
+    const aniso::SceneModel::Values kept = window.model()->values();
+    window.openMeshInBackground(broken);
+    QTRY_VERIFY_WITH_TIMEOUT(!window.meshLoading(), 30000);
+    QCOMPARE(errors.count(), 1);
+    QVERIFY(errors.at(0).at(0).toString().startsWith(broken));
+    QVERIFY(window.model()->values() == kept);
   }
 
   // The camera a session stores is the one the view shows.
