@@ -153,6 +153,13 @@ void EnvironmentDock::openFile()
 
 void EnvironmentDock::select(const QString& spec)
 {
+  if (opener_)
+  {
+    // The list shows the scene's environment until the opener changes it.
+    opener_(spec);
+    sync();
+    return;
+  }
   panel_->submit("env", textValue(spec.toStdString()), false);
   sync();
 }

@@ -6,6 +6,7 @@
 
 #include <QDockWidget>
 #include <QString>
+#include <functional>
 
 class QListWidget;
 class QListWidgetItem;
@@ -36,6 +37,11 @@ public:
 
   // Asks for a file and sets it as the environment.
   void openFile();
+  // How a chosen environment (a file, a listed HDRI, the studio) reaches the scene: by default
+  // it is submitted to the editor at once, its file read by the model's validation on this
+  // thread; an opener set here takes the spec instead (the main window reads the file on a
+  // worker first, then edits the scene).
+  void setOpener(std::function<void(const QString& spec)> opener) { opener_ = std::move(opener); }
 
 signals:
   void errorOccurred(const QString& message);
@@ -50,5 +56,6 @@ private:
   ParameterPanel* panel_;
   QListWidget* list_;
   int pending_ = 0;
+  std::function<void(const QString&)> opener_;
 };
 } // namespace aniso

@@ -84,10 +84,10 @@ Image rgbOf(const Image& rgba)
 MainWindow::MainWindow(QWidget* parent)
     : QMainWindow(parent), editor_(&model_), assets_(&model_),
       luts_(new LutScheduler(&model_, nullptr, this)), vtkWidget_(new QVTKOpenGLNativeWidget(this)),
-      samplesLabel_(new QLabel(this)), lutLabel_(new QLabel(this)), meshPool_(new QThreadPool(this))
+      samplesLabel_(new QLabel(this)), lutLabel_(new QLabel(this)), loadPool_(new QThreadPool(this))
 {
-  // One mesh load at a time: a second would only compete for the cores with the first.
-  meshPool_->setMaxThreadCount(1);
+  // A mesh and an environment may load at once; more would only compete for the two cores.
+  loadPool_->setMaxThreadCount(2);
   setWindowTitle(tr("aniso"));
   setObjectName("MainWindow");
   setAcceptDrops(true);
@@ -124,6 +124,9 @@ MainWindow::MainWindow(QWidget* parent)
   connect(materialDock_, &MaterialDock::errorOccurred, this, toStatus);
   connect(mapsDock_, &MapsDock::errorOccurred, this, toStatus);
   connect(environmentDock_, &EnvironmentDock::errorOccurred, this, toStatus);
+  // Environment files chosen in the dock are read on a worker before they reach the scene.
+  environmentDock_->setOpener([this](const QString& spec)
+                              { openEnvironmentInBackground(spec, false); });
   connect(lightsDock_, &LightsDock::errorOccurred, this, toStatus);
   connect(litView_, &LitModelView::errorOccurred, this, toStatus);
   connect(surfaceView_, &SurfaceModelView::errorOccurred, this, toStatus);
@@ -172,8 +175,8 @@ MainWindow::MainWindow(QWidget* parent)
 
 MainWindow::~MainWindow()
 {
-  // A mesh load in flight delivers to this window: it ends first (its result is dropped).
-  meshPool_->waitForDone();
+  // A load in flight delivers to this window: it ends first (its result is dropped).
+  loadPool_->waitForDone();
   // The comparison and the lit actor draw the view's mesh: they go before the view, which goes
   // before the widget whose window it draws into.
   delete compareWindow_;
@@ -316,21 +319,20 @@ bool MainWindow::openMesh(const QString& path)
       });
 }
 
-void MainWindow::openMeshInBackground(const QString& path)
+void MainWindow::runInBackground(int* request, bool* busy, const QString& name,
+                                 const std::function<void()>& load,
+                                 const std::function<void()>& deliver)
 {
-  const int id = ++meshRequest_;
-  meshLoading_ = true;
-  statusBar()->showMessage(tr("Loading %1").arg(QFileInfo(path).fileName()));
-  const std::string mesh = path.toStdString();
-  const std::string tangents = model_.text("tangents");
-  meshPool_->start(
-      [this, id, path, mesh, tangents]
+  const int id = ++*request;
+  *busy = true;
+  statusBar()->showMessage(tr("Loading %1").arg(name));
+  loadPool_->start(
+      [this, id, request, busy, name, load, deliver]
       {
-        SceneAssets::LoadedSurface surface;
         QString error;
         try
         {
-          surface = SceneAssets::loadSurface(mesh, tangents);
+          load();
         }
         catch (const Error& e)
         {
@@ -338,34 +340,67 @@ void MainWindow::openMeshInBackground(const QString& path)
         }
         catch (const std::bad_alloc&)
         {
-          error = tr("%1: too large for the memory available").arg(path);
+          error = tr("%1: too large for the memory available").arg(name);
         }
-        // Delivered on the UI thread.
+        // Delivered on the UI thread (the window waits for its workers before it goes).
         QMetaObject::invokeMethod(
-            this, [this, id, path, surface, error] { meshLoaded(id, path, surface, error); },
+            this,
+            [this, id, request, busy, error, deliver]
+            {
+              if (id != *request)
+              {
+                return; // a later request took its place
+              }
+              *busy = false;
+              statusBar()->clearMessage();
+              if (!error.isEmpty())
+              {
+                // The scene stays as it was.
+                reportError(error, true);
+                return;
+              }
+              deliver();
+            },
             Qt::QueuedConnection);
       });
 }
 
-void MainWindow::meshLoaded(int id, const QString& path, const SceneAssets::LoadedSurface& surface,
-                            const QString& error)
+void MainWindow::openMeshInBackground(const QString& path)
 {
-  if (id != meshRequest_)
-  {
-    return; // a later request took its place
-  }
-  meshLoading_ = false;
-  statusBar()->clearMessage();
-  if (!error.isEmpty())
-  {
-    // The scene stays as it was.
-    reportError(error, true);
-    return;
-  }
-  // The surface is in the assets now, so opening it (the model's validation, the view) reads
-  // nothing again, unless the tangents changed meanwhile.
-  assets_.adoptSurface(surface);
-  openMesh(path);
+  const std::string mesh = path.toStdString();
+  const std::string tangents = model_.text("tangents");
+  auto surface = std::make_shared<SceneAssets::LoadedSurface>();
+  runInBackground(
+      &meshRequest_, &meshLoading_, path,
+      [surface, mesh, tangents] { *surface = SceneAssets::loadSurface(mesh, tangents); },
+      [this, surface, path]
+      {
+        // In the assets now: opening it (the model's validation, the view) reads nothing again,
+        // unless the tangents changed meanwhile.
+        assets_.adoptSurface(*surface);
+        openMesh(path);
+      });
+}
+
+void MainWindow::openEnvironmentInBackground(const QString& spec, bool recent)
+{
+  const std::string text = spec.toStdString();
+  auto environment = std::make_shared<std::shared_ptr<const Environment>>();
+  runInBackground(
+      &environmentRequest_, &environmentLoading_, spec,
+      [environment, text] { *environment = SceneAssets::loadEnvironment(text); },
+      [this, environment, spec, text, recent]
+      {
+        assets_.adoptEnvironment(text, *environment);
+        if (recent)
+        {
+          openEnvironment(spec);
+        }
+        else
+        {
+          attempt([&] { editor_.edit("env", textValue(text)); });
+        }
+      });
 }
 
 bool MainWindow::openEnvironment(const QString& path)
@@ -439,6 +474,11 @@ bool MainWindow::openAny(const QString& path, bool background)
   }
   if (environment)
   {
+    if (background)
+    {
+      openEnvironmentInBackground(path, true);
+      return true;
+    }
     return openEnvironment(path);
   }
   return attempt(

@@ -78,6 +78,10 @@ public:
   // the recent files open meshes so.
   void openMeshInBackground(const QString& path);
   bool meshLoading() const { return meshLoading_; }
+  // The same for an environment (a file, or a spec the environment dock lists); with RECENT it
+  // joins the recent files as openEnvironment does. The dock opens its choices so.
+  void openEnvironmentInBackground(const QString& spec, bool recent);
+  bool environmentLoading() const { return environmentLoading_; }
   // Renders the current view at scale x its size with the full quality and writes PATH by its
   // extension: .png (display-transformed 8-bit sRGB), .tif/.tiff (the same in 16 bits), .exr
   // (linear radiance, float, alpha = coverage). Throws aniso::Error "PATH: reason".
@@ -105,9 +109,11 @@ private:
   void showSamples(int samples, int target);
   void setInteractiveResolution(bool interacting);
   void chooseAndExportScreenshot();
-  // A worker's mesh load of request ID arrived (ERROR empty on success).
-  void meshLoaded(int id, const QString& path, const SceneAssets::LoadedSurface& surface,
-                  const QString& error);
+  // Runs LOAD on a worker (the status bar says NAME is loading, BUSY is true), then DELIVER on
+  // this thread, unless a later request counted by REQUEST took its place or LOAD threw (the
+  // error is reported, the scene unchanged).
+  void runInBackground(int* request, bool* busy, const QString& name,
+                       const std::function<void()>& load, const std::function<void()>& deliver);
 
   SceneModel model_;
   SceneEditor editor_;
@@ -130,8 +136,10 @@ private:
   QLabel* samplesLabel_;
   QLabel* lutLabel_;
   bool errorDialogs_ = true;
-  QThreadPool* meshPool_;
-  int meshRequest_ = 0; // sequence number of the latest background mesh request
+  QThreadPool* loadPool_;
+  int meshRequest_ = 0; // sequence numbers of the latest background requests
+  int environmentRequest_ = 0;
   bool meshLoading_ = false;
+  bool environmentLoading_ = false;
 };
 } // namespace aniso

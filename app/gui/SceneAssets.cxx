@@ -121,8 +121,21 @@ std::vector<std::string> SceneAssets::surfaceNotes(const std::string& mesh,
 
 std::shared_ptr<const Environment> SceneAssets::environment(const std::string& spec)
 {
-  return environments_.get(spec, [&]
-                           { return std::shared_ptr<const Environment>(openEnvironment(spec)); });
+  return environments_.get(spec, [&] { return loadEnvironment(spec); });
+}
+
+std::shared_ptr<const Environment> SceneAssets::loadEnvironment(const std::string& spec)
+{
+  return openEnvironment(spec);
+}
+
+void SceneAssets::adoptEnvironment(const std::string& spec,
+                                   std::shared_ptr<const Environment> environment)
+{
+  if (environment)
+  {
+    environments_.put(spec, std::move(environment));
+  }
 }
 
 const SceneAssets::LoadedImage& SceneAssets::rawImage(const std::string& path)

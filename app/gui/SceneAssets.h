@@ -92,6 +92,9 @@ public:
   // Throws aniso::Error "SUBJECT: reason" as surface() does.
   static LoadedSurface loadSurface(const std::string& mesh, const std::string& tangents);
   void adoptSurface(const LoadedSurface& surface);
+  // The same for an environment spec (any thread), then adopted (this object's thread).
+  static std::shared_ptr<const Environment> loadEnvironment(const std::string& spec);
+  void adoptEnvironment(const std::string& spec, std::shared_ptr<const Environment> environment);
   std::shared_ptr<const Environment> environment(const std::string& spec);
   // The maps the model's values ask for, as the material takes them (bump none: no normal or
   // quaternion map; quaternion: the quaternion map, else baked from the normal map).

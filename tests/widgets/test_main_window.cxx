@@ -5,8 +5,10 @@
 // (sizes from the widget, the PNG as the view shows it, alpha 0 on the background and 1 on the
 // sphere's centre, which the framed sphere covers); a session's camera reaches the view; the
 // scripted command line writes a screenshot or fails with the file's name; dropped files open by
-// kind; meshes opened in the background change the scene only when loaded, the latest request
-// winning, a corrupt one reported; screenshot file names follow the mesh.
+// kind; meshes and environments opened in the background (menus, drops, the environment dock)
+// change the scene only when loaded, the latest request winning, a corrupt one reported;
+// screenshot file names follow the mesh.
+#include "EnvironmentDock.h"
 #include "LutScheduler.h"
 #include "MainWindow.h"
 #include "SceneAssets.h"
@@ -19,6 +21,7 @@
 #include <QFile>
 #include <QFileInfo>
 #include <QImage>
+#include <QListWidget>
 #include <QMimeData>
 #include <QProcess>
 #include <QSignalSpy>
@@ -278,10 +281,10 @@ private slots:
       QApplication::sendEvent(&window, &dropped);
     };
     drop(mesh);
-    // Meshes load on a worker: the scene changes once it delivers.
+    // Meshes and environments load on a worker: the scene changes once it delivers.
     QTRY_COMPARE_WITH_TIMEOUT(QString::fromStdString(window.model()->text("mesh")), mesh, 30000);
     drop(env);
-    QCOMPARE(QString::fromStdString(window.model()->text("env")), env);
+    QTRY_COMPARE_WITH_TIMEOUT(QString::fromStdString(window.model()->text("env")), env, 30000);
     drop(normals);
     QCOMPARE(QString::fromStdString(window.model()->text("normal-map")), normals);
     QVERIFY(window.model()->text("bump") != "none");
@@ -348,6 +351,59 @@ private slots:
     const aniso::SceneModel::Values kept = window.model()->values();
     window.openMeshInBackground(broken);
     QTRY_VERIFY_WITH_TIMEOUT(!window.meshLoading(), 30000);
+    QCOMPARE(errors.count(), 1);
+    QVERIFY(errors.at(0).at(0).toString().startsWith(broken));
+    QVERIFY(window.model()->values() == kept);
+  }
+
+  // Environments too: a file opened in the background reaches the scene only once read, as does
+  // a choice in the environment dock; a corrupt file is reported once and the scene stays.
+  void environmentsOpenInTheBackground()
+  {
+    QTemporaryDir dir;
+    const QString sky = dir.filePath("sky.hdr");
+    aniso::Image image(16, 8, 3);
+    std::fill(image.data.begin(), image.data.end(), 0.25f);
+    aniso::writeImage(sky.toStdString(), image);
+    const QString broken = dir.filePath("broken.hdr");
+    writeGarbage(broken);
+
+    aniso::MainWindow window;
+    window.setErrorDialogs(false);
+    cheapScene(window, 1);
+    window.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&window));
+    QSignalSpy errors(&window, &aniso::MainWindow::errorReported);
+    const std::string before = window.model()->text("env");
+    QVERIFY(before != sky.toStdString());
+
+    QVERIFY(window.openAny(sky, true));
+    QVERIFY(window.environmentLoading());
+    QCOMPARE(window.model()->text("env"), before);
+    QTRY_VERIFY_WITH_TIMEOUT(!window.environmentLoading(), 30000);
+    QCOMPARE(QString::fromStdString(window.model()->text("env")), sky);
+    QVERIFY(window.recentFiles().contains(sky));
+
+    // The dock's built-in white environment, chosen in its list.
+    auto* dock = window.findChild<aniso::EnvironmentDock*>();
+    QVERIFY(dock);
+    QListWidgetItem* white = nullptr;
+    for (int i = 0; i < dock->list()->count(); ++i)
+    {
+      if (dock->list()->item(i)->text().startsWith("White"))
+      {
+        white = dock->list()->item(i);
+      }
+    }
+    QVERIFY(white);
+    emit dock->list()->itemClicked(white);
+    QVERIFY(window.environmentLoading());
+    QTRY_VERIFY_WITH_TIMEOUT(!window.environmentLoading(), 30000);
+    QCOMPARE(window.model()->text("env"), std::string("builtin:white"));
+
+    const aniso::SceneModel::Values kept = window.model()->values();
+    QVERIFY(window.openAny(broken, true));
+    QTRY_VERIFY_WITH_TIMEOUT(!window.environmentLoading(), 30000);
     QCOMPARE(errors.count(), 1);
     QVERIFY(errors.at(0).at(0).toString().startsWith(broken));
     QVERIFY(window.model()->values() == kept);
