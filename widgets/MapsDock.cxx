@@ -28,12 +28,7 @@ MapsDock::MapsDock(SceneEditor* editor, QWidget* parent)
     row->setToolTip(QString::fromStdString(std::string(sceneKey(key).spec.help)));
     panel_->addRow(label(key), row);
     files_.emplace(key, row);
-    connect(row, &FileRow::edited, this,
-            [this, key](const QString& path)
-            {
-              panel_->submit(key, textValue(path.toStdString()), false);
-              sync(QString::fromStdString(key));
-            });
+    connect(row, &FileRow::edited, this, [this, key](const QString& path) { submit(key, path); });
   };
 
   panel_->addParameter("bump");
@@ -41,12 +36,7 @@ MapsDock::MapsDock(SceneEditor* editor, QWidget* parent)
   addFile("quaternion-map");
   tpr_->setObjectName("tpr");
   panel_->addRow(label("tpr"), tpr_);
-  connect(tpr_, &TprEditor::edited, this,
-          [this](const QString& text)
-          {
-            panel_->submit("tpr", textValue(text.toStdString()), false);
-            sync("tpr");
-          });
+  connect(tpr_, &TprEditor::edited, this, [this](const QString& text) { submit("tpr", text); });
   addFile("height-map");
   panel_->addParameter("height-scale");
   addFile("albedo-map");
@@ -55,11 +45,7 @@ MapsDock::MapsDock(SceneEditor* editor, QWidget* parent)
   tangents_->setObjectName("tangents");
   panel_->addRow(label("tangents"), tangents_);
   connect(tangents_, &TangentEditor::edited, this,
-          [this](const QString& text)
-          {
-            panel_->submit("tangents", textValue(text.toStdString()), false);
-            sync("tangents");
-          });
+          [this](const QString& text) { submit("tangents", text); });
 
   connect(panel_, &ParameterPanel::errorOccurred, this, &MapsDock::errorOccurred);
   connect(editor->model(), &SceneModel::valueChanged, this, &MapsDock::sync);
@@ -70,6 +56,20 @@ MapsDock::MapsDock(SceneEditor* editor, QWidget* parent)
   sync("tpr");
   sync("tangents");
   setWidget(scrollableColumn({panel_}, this));
+}
+
+void MapsDock::submit(const std::string& key, const QString& text)
+{
+  if (opener_)
+  {
+    opener_(key, text);
+  }
+  else
+  {
+    panel_->submit(key, textValue(text.toStdString()), false);
+  }
+  // The row shows the scene's value until it changes.
+  sync(QString::fromStdString(key));
 }
 
 FileRow* MapsDock::fileRow(const std::string& key) const

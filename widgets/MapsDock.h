@@ -6,6 +6,7 @@
 #include "SceneEditor.h"
 
 #include <QDockWidget>
+#include <functional>
 #include <map>
 #include <string>
 
@@ -27,15 +28,27 @@ public:
   TprEditor* tprEditor() const { return tpr_; }
   TangentEditor* tangentEditor() const { return tangents_; }
 
+  // How an edited map (file or pattern) or tangent model reaches the scene: by default it is
+  // submitted to the editor at once, the model's validation reading the file or preparing the
+  // mesh on this thread; an opener set here takes the key and text instead (the main window
+  // reads them on a worker first, then edits the scene).
+  void setOpener(std::function<void(const std::string& key, const QString& text)> opener)
+  {
+    opener_ = std::move(opener);
+  }
+
 signals:
   void errorOccurred(const QString& message);
 
 private:
   void sync(const QString& key);
+  // KEY's new TEXT to the scene (through the opener when there is one).
+  void submit(const std::string& key, const QString& text);
 
   ParameterPanel* panel_;
   std::map<std::string, FileRow*> files_;
   TprEditor* tpr_;
   TangentEditor* tangents_;
+  std::function<void(const std::string&, const QString&)> opener_;
 };
 } // namespace aniso

@@ -26,11 +26,13 @@
 #include <QDialogButtonBox>
 #include <QDir>
 #include <QDockWidget>
+#include <QFile>
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QFormLayout>
 #include <QGuiApplication>
 #include <QHBoxLayout>
+#include <QJsonDocument>
 #include <QLabel>
 #include <QLineEdit>
 #include <QMenuBar>
@@ -124,6 +126,9 @@ MainWindow::MainWindow(QWidget* parent)
   connect(materialDock_, &MaterialDock::errorOccurred, this, toStatus);
   connect(mapsDock_, &MapsDock::errorOccurred, this, toStatus);
   connect(environmentDock_, &EnvironmentDock::errorOccurred, this, toStatus);
+  // Maps and tangent models edited in the dock are read or prepared on a worker first.
+  mapsDock_->setOpener([this](const std::string& key, const QString& text)
+                       { editInBackground(key, text); });
   // Environment files chosen in the dock are read on a worker before they reach the scene.
   environmentDock_->setOpener([this](const QString& spec)
                               { openEnvironmentInBackground(spec, false); });
@@ -211,7 +216,7 @@ void MainWindow::createMenus()
                                                      tr("Sessions (*.json);;All files (*)"));
                     if (!path.isEmpty())
                     {
-                      openSession(path);
+                      openSessionInBackground(path);
                     }
                   });
   recentMenu_ = file->addMenu(tr("Open &Recent"));
@@ -320,19 +325,22 @@ bool MainWindow::openMesh(const QString& path)
 }
 
 void MainWindow::runInBackground(int* request, bool* busy, const QString& name,
-                                 const std::function<void()>& load,
-                                 const std::function<void()>& deliver)
+                                 const std::function<void(SceneAssets&)>& load,
+                                 const std::function<void()>& deliver, bool prefetch)
 {
   const int id = ++*request;
   *busy = true;
   statusBar()->showMessage(tr("Loading %1").arg(name));
+  // The worker loads into assets of its own; this thread takes them over on delivery.
+  auto staged = std::make_shared<SceneAssets>();
+  staged->setMaxTextureSide(assets_.maxTextureSide());
   loadPool_->start(
-      [this, id, request, busy, name, load, deliver]
+      [this, id, request, busy, name, staged, load, deliver, prefetch]
       {
         QString error;
         try
         {
-          load();
+          load(*staged);
         }
         catch (const Error& e)
         {
@@ -345,7 +353,7 @@ void MainWindow::runInBackground(int* request, bool* busy, const QString& name,
         // Delivered on the UI thread (the window waits for its workers before it goes).
         QMetaObject::invokeMethod(
             this,
-            [this, id, request, busy, error, deliver]
+            [this, id, request, busy, staged, error, deliver, prefetch]
             {
               if (id != *request)
               {
@@ -353,12 +361,15 @@ void MainWindow::runInBackground(int* request, bool* busy, const QString& name,
               }
               *busy = false;
               statusBar()->clearMessage();
-              if (!error.isEmpty())
+              assets_.adopt(*staged);
+              if (!error.isEmpty() && !prefetch)
               {
                 // The scene stays as it was.
                 reportError(error, true);
                 return;
               }
+              // A prefetch that failed leaves the failure to DELIVER's own reading, which
+              // reports it in its words.
               deliver();
             },
             Qt::QueuedConnection);
@@ -369,29 +380,22 @@ void MainWindow::openMeshInBackground(const QString& path)
 {
   const std::string mesh = path.toStdString();
   const std::string tangents = model_.text("tangents");
-  auto surface = std::make_shared<SceneAssets::LoadedSurface>();
   runInBackground(
       &meshRequest_, &meshLoading_, path,
-      [surface, mesh, tangents] { *surface = SceneAssets::loadSurface(mesh, tangents); },
-      [this, surface, path]
-      {
-        // In the assets now: opening it (the model's validation, the view) reads nothing again,
-        // unless the tangents changed meanwhile.
-        assets_.adoptSurface(*surface);
-        openMesh(path);
-      });
+      [mesh, tangents](SceneAssets& staged) { staged.surface(mesh, tangents); },
+      // In the assets now: opening it (the model's validation, the view) reads nothing again,
+      // unless the tangents changed meanwhile.
+      [this, path] { openMesh(path); });
 }
 
 void MainWindow::openEnvironmentInBackground(const QString& spec, bool recent)
 {
   const std::string text = spec.toStdString();
-  auto environment = std::make_shared<std::shared_ptr<const Environment>>();
   runInBackground(
       &environmentRequest_, &environmentLoading_, spec,
-      [environment, text] { *environment = SceneAssets::loadEnvironment(text); },
-      [this, environment, spec, text, recent]
+      [text](SceneAssets& staged) { staged.environment(text); },
+      [this, spec, text, recent]
       {
-        assets_.adoptEnvironment(text, *environment);
         if (recent)
         {
           openEnvironment(spec);
@@ -401,6 +405,73 @@ void MainWindow::openEnvironmentInBackground(const QString& spec, bool recent)
           attempt([&] { editor_.edit("env", textValue(text)); });
         }
       });
+}
+
+void MainWindow::editInBackground(const std::string& key, const QString& text)
+{
+  const std::string value = text.toStdString();
+  const std::string mesh = model_.text("mesh");
+  runInBackground(
+      &assetRequests_[key], &assetLoading_[key],
+      text.isEmpty() ? QString::fromStdString(key) : text,
+      [key, value, mesh](SceneAssets& staged)
+      {
+        if (key == "tangents")
+        {
+          staged.surface(mesh, value); // the mesh prepared anew with these tangents
+        }
+        else
+        {
+          staged.map(key, value);
+        }
+      },
+      [this, key, value] { attempt([&] { editor_.edit(key, textValue(value)); }); });
+}
+
+void MainWindow::openSessionInBackground(const QString& path)
+{
+  runInBackground(
+      &sessionRequest_, &sessionLoading_, path,
+      [path](SceneAssets& staged)
+      {
+        // What the session names, read ahead; anything wrong with it is left to openSession.
+        QFile file(path);
+        if (!file.open(QIODevice::ReadOnly) || file.size() > 64 * 1024 * 1024)
+        {
+          return;
+        }
+        const QJsonDocument document = QJsonDocument::fromJson(file.readAll());
+        if (!document.isObject())
+        {
+          return;
+        }
+        const SessionContent content =
+            sessionFromJson(document.object(), QFileInfo(path).absolutePath(), path);
+        const auto text = [&](const char* key)
+        {
+          const auto it = content.values.find(key);
+          return it == content.values.end() ? std::string() : it->second.text;
+        };
+        // Each on its own: one that fails does not keep the others from being read.
+        const auto ahead = [](const std::function<void()>& read)
+        {
+          try
+          {
+            read();
+          }
+          catch (const Error&)
+          {
+          }
+        };
+        ahead([&] { staged.surface(text("mesh"), text("tangents")); });
+        ahead([&] { staged.environment(text("env")); });
+        for (const char* key : {"normal-map", "quaternion-map", "tpr", "height-map", "albedo-map",
+                                "ao-map", "metallic-map"})
+        {
+          ahead([&] { staged.map(key, text(key)); });
+        }
+      },
+      [this, path] { openSession(path); }, true);
 }
 
 bool MainWindow::openEnvironment(const QString& path)
@@ -448,6 +519,11 @@ bool MainWindow::openAny(const QString& path, bool background)
   const QString suffix = lowerSuffix(path);
   if (suffix == "json")
   {
+    if (background)
+    {
+      openSessionInBackground(path);
+      return true;
+    }
     return openSession(path);
   }
   if (isMeshFile(path))

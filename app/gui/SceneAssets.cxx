@@ -9,7 +9,6 @@
 #include "maps/tpr_map.h"
 
 #include <algorithm>
-#include <cstring>
 #include <filesystem>
 #include <string>
 #include <vtkPolyData.h>
@@ -47,32 +46,6 @@ SceneAssets::SceneAssets(SceneModel* model) : model_(model)
   }
 }
 
-namespace
-{
-std::shared_ptr<LoadedMesh> loadMeshText(const std::string& mesh)
-{
-  if (mesh.rfind(kBuiltinPrefix, 0) == 0)
-  {
-    return std::make_shared<LoadedMesh>(
-        makeBuiltinMesh(parseBuiltinMesh(mesh.substr(std::strlen(kBuiltinPrefix)), "mesh")));
-  }
-  return std::make_shared<LoadedMesh>(loadMesh(mesh));
-}
-
-std::shared_ptr<const SceneAssets::Surface>
-prepareEntry(const LoadedMesh& loaded, const std::string& mesh, const std::string& tangents)
-{
-  auto entry = std::make_shared<SceneAssets::Surface>();
-  entry->prepared = prepareSurface(loaded.polyData, surfaceOptions(tangents), mesh);
-  entry->notes = loaded.report.notes();
-  for (const std::string& note : entry->prepared.report.notes())
-  {
-    entry->notes.push_back(note);
-  }
-  return entry;
-}
-} // namespace
-
 std::shared_ptr<const SceneAssets::Surface> SceneAssets::surfaceEntry(const std::string& mesh,
                                                                       const std::string& tangents)
 {
@@ -80,30 +53,35 @@ std::shared_ptr<const SceneAssets::Surface> SceneAssets::surfaceEntry(const std:
                        [&]
                        {
                          const std::shared_ptr<LoadedMesh> loaded =
-                             meshes_.get(mesh, [&] { return loadMeshText(mesh); });
-                         return prepareEntry(*loaded, mesh, tangents);
+                             meshes_.get(mesh,
+                                         [&]
+                                         {
+                                           if (mesh.rfind(kBuiltinPrefix, 0) == 0)
+                                           {
+                                             return std::make_shared<LoadedMesh>(makeBuiltinMesh(
+                                                 parseBuiltinMesh(mesh.substr(8), "mesh")));
+                                           }
+                                           return std::make_shared<LoadedMesh>(loadMesh(mesh));
+                                         });
+                         auto entry = std::make_shared<Surface>();
+                         entry->prepared =
+                             prepareSurface(loaded->polyData, surfaceOptions(tangents), mesh);
+                         entry->notes = loaded->report.notes();
+                         for (const std::string& note : entry->prepared.report.notes())
+                         {
+                           entry->notes.push_back(note);
+                         }
+                         return std::shared_ptr<const Surface>(std::move(entry));
                        });
 }
 
-SceneAssets::LoadedSurface SceneAssets::loadSurface(const std::string& mesh,
-                                                    const std::string& tangents)
+void SceneAssets::adopt(SceneAssets& staged)
 {
-  LoadedSurface result;
-  result.mesh = mesh;
-  result.tangents = tangents;
-  result.loaded = loadMeshText(mesh);
-  result.surface = prepareEntry(*result.loaded, mesh, tangents);
-  return result;
-}
-
-void SceneAssets::adoptSurface(const LoadedSurface& surface)
-{
-  if (!surface.loaded || !surface.surface)
-  {
-    return;
-  }
-  meshes_.put(surface.mesh, surface.loaded);
-  surfaces_.put(surface.mesh + "\n" + surface.tangents, surface.surface);
+  meshes_.mergeFrom(staged.meshes_);
+  surfaces_.mergeFrom(staged.surfaces_);
+  environments_.mergeFrom(staged.environments_);
+  images_.mergeFrom(staged.images_);
+  maps_.mergeFrom(staged.maps_);
 }
 
 std::shared_ptr<const PreparedSurface> SceneAssets::surface(const std::string& mesh,
@@ -121,21 +99,8 @@ std::vector<std::string> SceneAssets::surfaceNotes(const std::string& mesh,
 
 std::shared_ptr<const Environment> SceneAssets::environment(const std::string& spec)
 {
-  return environments_.get(spec, [&] { return loadEnvironment(spec); });
-}
-
-std::shared_ptr<const Environment> SceneAssets::loadEnvironment(const std::string& spec)
-{
-  return openEnvironment(spec);
-}
-
-void SceneAssets::adoptEnvironment(const std::string& spec,
-                                   std::shared_ptr<const Environment> environment)
-{
-  if (environment)
-  {
-    environments_.put(spec, std::move(environment));
-  }
+  return environments_.get(spec, [&]
+                           { return std::shared_ptr<const Environment>(openEnvironment(spec)); });
 }
 
 const SceneAssets::LoadedImage& SceneAssets::rawImage(const std::string& path)

@@ -38,6 +38,16 @@ public:
     return put(key, std::move(value));
   }
 
+  // Takes OTHER's entries, its most recent ending as the most recent here.
+  void mergeFrom(RecentCache& other)
+  {
+    for (auto it = other.items_.rbegin(); it != other.items_.rend(); ++it)
+    {
+      put(it->first, std::move(it->second));
+    }
+    other.items_.clear();
+  }
+
   // Stores VALUE as the most recent under KEY (replacing what KEY held).
   const T& put(const std::string& key, T value)
   {
@@ -67,6 +77,14 @@ class SceneAssets
 public:
   // Installs the validators of mesh, tangents, env and the map keys on MODEL.
   explicit SceneAssets(SceneModel* model);
+  // Assets of no model (no validators): a staging area that loads on another thread what
+  // adopt() then hands to the assets of the scene.
+  SceneAssets() = default;
+
+  // Takes what STAGED loaded into these caches (as the most recent entries), so what it loaded
+  // is found here without being read again. On the thread that uses these assets, once the one
+  // that filled STAGED is done with it.
+  void adopt(SceneAssets& staged);
 
   // The prepared surface of a mesh text (a path or builtin:NAME) with a tangent model text
   // ("auto" or BrushingModel.h's syntax). Throws aniso::Error "SUBJECT: reason".
@@ -75,26 +93,6 @@ public:
   // What loading and preparing that surface had to say (dropped faces, computed normals...).
   std::vector<std::string> surfaceNotes(const std::string& mesh, const std::string& tangents);
 
-  struct Surface
-  {
-    PreparedSurface prepared;
-    std::vector<std::string> notes; // the mesh report's, then the preparation's
-  };
-  // A surface loaded and prepared apart from any SceneAssets, so on any thread; handed to
-  // adoptSurface on the thread that owns the assets, after which surface() finds it.
-  struct LoadedSurface
-  {
-    std::string mesh;
-    std::string tangents;
-    std::shared_ptr<LoadedMesh> loaded;
-    std::shared_ptr<const Surface> surface;
-  };
-  // Throws aniso::Error "SUBJECT: reason" as surface() does.
-  static LoadedSurface loadSurface(const std::string& mesh, const std::string& tangents);
-  void adoptSurface(const LoadedSurface& surface);
-  // The same for an environment spec (any thread), then adopted (this object's thread).
-  static std::shared_ptr<const Environment> loadEnvironment(const std::string& spec);
-  void adoptEnvironment(const std::string& spec, std::shared_ptr<const Environment> environment);
   std::shared_ptr<const Environment> environment(const std::string& spec);
   // The maps the model's values ask for, as the material takes them (bump none: no normal or
   // quaternion map; quaternion: the quaternion map, else baked from the normal map).
@@ -110,8 +108,14 @@ public:
   // kDefaultMaxTextureSide, the common limit of current implementations (llvmpipe's too).
   static constexpr int kDefaultMaxTextureSide = 16384;
   void setMaxTextureSide(int side) { maxTextureSide_ = side; }
+  int maxTextureSide() const { return maxTextureSide_; }
 
 private:
+  struct Surface
+  {
+    PreparedSurface prepared;
+    std::vector<std::string> notes; // the mesh report's, then the preparation's
+  };
   std::shared_ptr<const Surface> surfaceEntry(const std::string& mesh, const std::string& tangents);
   struct LoadedImage
   {
@@ -120,7 +124,7 @@ private:
   };
   const LoadedImage& rawImage(const std::string& path);
 
-  SceneModel* model_;
+  SceneModel* model_ = nullptr;
   int maxTextureSide_ = kDefaultMaxTextureSide;
   RecentCache<std::shared_ptr<LoadedMesh>> meshes_{3};
   RecentCache<std::shared_ptr<const Surface>> surfaces_{3};

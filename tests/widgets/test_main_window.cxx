@@ -5,12 +5,14 @@
 // (sizes from the widget, the PNG as the view shows it, alpha 0 on the background and 1 on the
 // sphere's centre, which the framed sphere covers); a session's camera reaches the view; the
 // scripted command line writes a screenshot or fails with the file's name; dropped files open by
-// kind; meshes and environments opened in the background (menus, drops, the environment dock)
-// change the scene only when loaded, the latest request winning, a corrupt one reported;
+// kind; meshes, environments, maps and sessions opened in the background (menus, drops, the
+// docks) change the scene only when loaded, the latest request winning, a corrupt one reported;
 // screenshot file names follow the mesh.
+#include "AssetControls.h"
 #include "EnvironmentDock.h"
 #include "LutScheduler.h"
 #include "MainWindow.h"
+#include "MapsDock.h"
 #include "SceneAssets.h"
 #include "SceneView.h"
 #include "error.h"
@@ -53,12 +55,29 @@ void writeGarbage(const QString& path)
   f.write("solid broken\n this is not a mesh nor an image \x01\x02\x03");
 }
 
+// An RGB image of one value, written by its extension.
+void writeUniformImage(const QString& path, int width, int height, float value)
+{
+  aniso::Image image(width, height, 3);
+  std::fill(image.data.begin(), image.data.end(), value);
+  aniso::writeImage(path.toStdString(), image);
+}
+
 // One sample per frame and per pixel: the cheapest scene that still exercises everything.
 void cheapScene(aniso::MainWindow& window, int target)
 {
   window.model()->setValues({{"mesh", textValue("builtin:sphere")},
                              {"samples", numberValue(1.0)},
                              {"target-samples", numberValue(target)}});
+}
+
+// The window with the cheapest scene, shown, its dialogs off; false if it was not shown.
+bool showCheapWindow(aniso::MainWindow& window)
+{
+  window.setErrorDialogs(false);
+  cheapScene(window, 1);
+  window.show();
+  return QTest::qWaitForWindowExposed(&window);
 }
 } // namespace
 
@@ -242,9 +261,7 @@ private slots:
       f.write("v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n");
     }
     const QString env = dir.filePath("sky.hdr");
-    aniso::Image sky(16, 8, 3);
-    std::fill(sky.data.begin(), sky.data.end(), 0.5f);
-    aniso::writeImage(env.toStdString(), sky);
+    writeUniformImage(env, 16, 8, 0.5f);
     const QString normals = dir.filePath("normals.png");
     aniso::Image flat(8, 8, 3);
     for (int y = 0; y < 8; ++y)
@@ -281,7 +298,7 @@ private slots:
       QApplication::sendEvent(&window, &dropped);
     };
     drop(mesh);
-    // Meshes and environments load on a worker: the scene changes once it delivers.
+    // Meshes, environments and sessions load on a worker: the scene changes once it delivers.
     QTRY_COMPARE_WITH_TIMEOUT(QString::fromStdString(window.model()->text("mesh")), mesh, 30000);
     drop(env);
     QTRY_COMPARE_WITH_TIMEOUT(QString::fromStdString(window.model()->text("env")), env, 30000);
@@ -289,7 +306,7 @@ private slots:
     QCOMPARE(QString::fromStdString(window.model()->text("normal-map")), normals);
     QVERIFY(window.model()->text("bump") != "none");
     drop(session);
-    QCOMPARE(window.model()->real("nu"), 321.0);
+    QTRY_COMPARE_WITH_TIMEOUT(window.model()->real("nu"), 321.0, 30000);
     QCOMPARE(errors.count(), 0);
   }
 
@@ -319,10 +336,7 @@ private slots:
     writeGarbage(broken);
 
     aniso::MainWindow window;
-    window.setErrorDialogs(false);
-    cheapScene(window, 1);
-    window.show();
-    QVERIFY(QTest::qWaitForWindowExposed(&window));
+    QVERIFY(showCheapWindow(window));
     QSignalSpy errors(&window, &aniso::MainWindow::errorReported);
     const std::string before = window.model()->text("mesh");
     const int edits = window.editor()->undoStack()->count();
@@ -362,17 +376,12 @@ private slots:
   {
     QTemporaryDir dir;
     const QString sky = dir.filePath("sky.hdr");
-    aniso::Image image(16, 8, 3);
-    std::fill(image.data.begin(), image.data.end(), 0.25f);
-    aniso::writeImage(sky.toStdString(), image);
+    writeUniformImage(sky, 16, 8, 0.25f);
     const QString broken = dir.filePath("broken.hdr");
     writeGarbage(broken);
 
     aniso::MainWindow window;
-    window.setErrorDialogs(false);
-    cheapScene(window, 1);
-    window.show();
-    QVERIFY(QTest::qWaitForWindowExposed(&window));
+    QVERIFY(showCheapWindow(window));
     QSignalSpy errors(&window, &aniso::MainWindow::errorReported);
     const std::string before = window.model()->text("env");
     QVERIFY(before != sky.toStdString());
@@ -404,6 +413,50 @@ private slots:
     const aniso::SceneModel::Values kept = window.model()->values();
     QVERIFY(window.openAny(broken, true));
     QTRY_VERIFY_WITH_TIMEOUT(!window.environmentLoading(), 30000);
+    QCOMPARE(errors.count(), 1);
+    QVERIFY(errors.at(0).at(0).toString().startsWith(broken));
+    QVERIFY(window.model()->values() == kept);
+  }
+
+  // A map chosen in the Maps dock and a session opened from the menus also reach the scene only
+  // once what they name is read on a worker; a corrupt session is reported once by the session
+  // reader, with its name, and the scene stays.
+  void mapsAndSessionsOpenInTheBackground()
+  {
+    QTemporaryDir dir;
+    const QString albedo = dir.filePath("albedo.png");
+    writeUniformImage(albedo, 8, 8, 0.5f);
+    const QString session = dir.filePath("nu.json");
+    {
+      QFile f(session);
+      QVERIFY(f.open(QIODevice::WriteOnly));
+      f.write(R"({"format": "aniso-session", "version": 1,
+        "parameters": {"nu": 321, "samples": 1, "target-samples": 1}})");
+    }
+    const QString broken = dir.filePath("broken.json");
+    writeGarbage(broken);
+
+    aniso::MainWindow window;
+    QVERIFY(showCheapWindow(window));
+    QSignalSpy errors(&window, &aniso::MainWindow::errorReported);
+
+    auto* maps = window.findChild<aniso::MapsDock*>();
+    QVERIFY(maps);
+    emit maps->fileRow("albedo-map")->edited(albedo);
+    QVERIFY(window.assetLoading("albedo-map"));
+    QCOMPARE(window.model()->text("albedo-map"), std::string());
+    QTRY_VERIFY_WITH_TIMEOUT(!window.assetLoading("albedo-map"), 30000);
+    QCOMPARE(QString::fromStdString(window.model()->text("albedo-map")), albedo);
+
+    QVERIFY(window.openAny(session, true));
+    QVERIFY(window.sessionLoading());
+    QVERIFY(window.model()->real("nu") != 321.0);
+    QTRY_VERIFY_WITH_TIMEOUT(!window.sessionLoading(), 30000);
+    QCOMPARE(window.model()->real("nu"), 321.0);
+
+    const aniso::SceneModel::Values kept = window.model()->values();
+    QVERIFY(window.openAny(broken, true));
+    QTRY_VERIFY_WITH_TIMEOUT(!window.sessionLoading(), 30000);
     QCOMPARE(errors.count(), 1);
     QVERIFY(errors.at(0).at(0).toString().startsWith(broken));
     QVERIFY(window.model()->values() == kept);
