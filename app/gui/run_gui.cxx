@@ -147,7 +147,12 @@ int runGui(const std::vector<std::string>& args)
                      }
                    });
   window.show();
-  if (!a.mesh.empty() && !window.openMesh(QString::fromStdString(a.mesh)) && scripted)
+  if (!a.mesh.empty() && !scripted && a.session.empty())
+  {
+    // The window answers while the mesh loads (the default scene until then).
+    window.openMeshInBackground(QString::fromStdString(a.mesh));
+  }
+  else if (!a.mesh.empty() && !window.openMesh(QString::fromStdString(a.mesh)) && scripted)
   {
     throw Error(failure);
   }
