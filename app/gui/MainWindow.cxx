@@ -61,6 +61,12 @@ namespace
 {
 constexpr int kMaxRecent = 8;
 
+// Equirectangular environments are twice as wide as high; maps usually are not.
+bool looksEquirectangular(int width, int height)
+{
+  return std::abs(width - 2 * height) <= height / 50 + 1;
+}
+
 QString lowerSuffix(const QString& path)
 {
   return QFileInfo(path).suffix().toLower();
@@ -535,15 +541,18 @@ bool MainWindow::openAny(const QString& path, bool background)
     }
     return openMesh(path);
   }
+  if (background && suffix != "hdr")
+  {
+    // An image: its kind (an .exr may be an environment) is told on the worker, which reads it.
+    openImageInBackground(path);
+    return true;
+  }
   bool environment = suffix == "hdr";
   if (suffix == "exr" && !attempt(
                              [&]
                              {
                                const Image image = readImage(path.toStdString());
-                               // Equirectangular environments are twice as wide as high; maps
-                               // usually are not.
-                               environment = std::abs(image.width - 2 * image.height) <=
-                                             image.height / 50 + 1;
+                               environment = looksEquirectangular(image.width, image.height);
                              }))
   {
     return false;
@@ -557,6 +566,11 @@ bool MainWindow::openAny(const QString& path, bool background)
     }
     return openEnvironment(path);
   }
+  return openNormalMap(path);
+}
+
+bool MainWindow::openNormalMap(const QString& path)
+{
   return attempt(
       [&]
       {
@@ -564,6 +578,35 @@ bool MainWindow::openAny(const QString& path, bool background)
         if (model_.text("bump") == "none")
         {
           editor_.edit("bump", textValue("quaternion"));
+        }
+      });
+}
+
+void MainWindow::openImageInBackground(const QString& path)
+{
+  const std::string text = path.toStdString();
+  const bool exr = lowerSuffix(path) == "exr";
+  auto environment = std::make_shared<bool>(false);
+  runInBackground(
+      &assetRequests_["normal-map"], &assetLoading_["normal-map"], path,
+      [text, exr, environment](SceneAssets& staged)
+      {
+        const std::shared_ptr<const Image> image = staged.map("normal-map", text);
+        *environment = exr && image && looksEquirectangular(image->width, image->height);
+        if (*environment)
+        {
+          staged.environment(text);
+        }
+      },
+      [this, path, environment]
+      {
+        if (*environment)
+        {
+          openEnvironment(path);
+        }
+        else
+        {
+          openNormalMap(path);
         }
       });
 }

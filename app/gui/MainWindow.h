@@ -127,6 +127,11 @@ private:
   // true), then on this thread takes those assets into the scene's and runs DELIVER, unless a
   // later request counted by REQUEST took its place, or LOAD threw: then the error is reported
   // and the scene stays, or with PREFETCH, DELIVER runs all the same (and reports it itself).
+  // PATH as the normal map (and bump quaternion when bump was none).
+  bool openNormalMap(const QString& path);
+  // An image dropped or reopened: read on a worker, then an environment (an .exr twice as wide
+  // as high) or the normal map.
+  void openImageInBackground(const QString& path);
   void runInBackground(int* request, bool* busy, const QString& name,
                        const std::function<void(SceneAssets&)>& load,
                        const std::function<void()>& deliver, bool prefetch = false);
