@@ -302,7 +302,7 @@ SessionContent sessionFromJson(const QJsonObject& json, const QString& baseDirec
   }
 }
 
-QStringList SessionFile::open(SceneEditor& editor, const QString& path)
+SessionContent readSessionFile(const QString& path)
 {
   const std::string subject = path.toStdString();
   QFile file(path);
@@ -329,8 +329,13 @@ QStringList SessionFile::open(SceneEditor& editor, const QString& path)
   {
     throw errorAbout(subject, "not an aniso session (not a JSON object)");
   }
-  const QString base = QFileInfo(path).absolutePath();
-  SessionContent content = sessionFromJson(document.object(), base, path);
+  return sessionFromJson(document.object(), QFileInfo(path).absolutePath(), path);
+}
+
+QStringList SessionFile::open(SceneEditor& editor, const QString& path)
+{
+  const std::string subject = path.toStdString();
+  SessionContent content = readSessionFile(path);
   try
   {
     editor.replaceScene(content.values, content.camera,

@@ -42,6 +42,11 @@ QJsonObject sessionToJson(const SceneModel& model, const QJsonObject& unknown,
 SessionContent sessionFromJson(const QJsonObject& json, const QString& baseDirectory,
                                const QString& subject);
 
+// Reads the session file PATH (sessionFromJson, paths relative to its folder), nothing applied;
+// any thread. Throws aniso::Error "PATH: reason" (unreadable, not JSON, wrong format or version,
+// a bad value).
+SessionContent readSessionFile(const QString& path);
+
 // Opening and saving, with the unknown keys of the last opened session kept for the next save.
 class SessionFile
 {

@@ -26,13 +26,11 @@
 #include <QDialogButtonBox>
 #include <QDir>
 #include <QDockWidget>
-#include <QFile>
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QFormLayout>
 #include <QGuiApplication>
 #include <QHBoxLayout>
-#include <QJsonDocument>
 #include <QLabel>
 #include <QLineEdit>
 #include <QMenuBar>
@@ -441,18 +439,7 @@ void MainWindow::openSessionInBackground(const QString& path)
       [path](SceneAssets& staged)
       {
         // What the session names, read ahead; anything wrong with it is left to openSession.
-        QFile file(path);
-        if (!file.open(QIODevice::ReadOnly) || file.size() > 64 * 1024 * 1024)
-        {
-          return;
-        }
-        const QJsonDocument document = QJsonDocument::fromJson(file.readAll());
-        if (!document.isObject())
-        {
-          return;
-        }
-        const SessionContent content =
-            sessionFromJson(document.object(), QFileInfo(path).absolutePath(), path);
+        const SessionContent content = readSessionFile(path);
         const auto text = [&](const char* key)
         {
           const auto it = content.values.find(key);
@@ -471,8 +458,7 @@ void MainWindow::openSessionInBackground(const QString& path)
         };
         ahead([&] { staged.surface(text("mesh"), text("tangents")); });
         ahead([&] { staged.environment(text("env")); });
-        for (const char* key : {"normal-map", "quaternion-map", "tpr", "height-map", "albedo-map",
-                                "ao-map", "metallic-map"})
+        for (const char* key : SceneAssets::kMapKeys)
         {
           ahead([&] { staged.map(key, text(key)); });
         }

@@ -38,8 +38,7 @@ SceneAssets::SceneAssets(SceneModel* model) : model_(model)
                       { surface(model_->text("mesh"), text); });
   model->setValidator("env",
                       [this](const std::string& text, const std::string&) { environment(text); });
-  for (const char* key : {"normal-map", "quaternion-map", "tpr", "height-map", "albedo-map",
-                          "ao-map", "metallic-map"})
+  for (const char* key : kMapKeys)
   {
     model->setValidator(key, [this, key](const std::string& text, const std::string&)
                         { map(key, text); });

@@ -75,6 +75,10 @@ private:
 class SceneAssets
 {
 public:
+  // The keys whose text names a map (a file, or for tpr a pattern).
+  static constexpr const char* kMapKeys[] = {
+      "normal-map", "quaternion-map", "tpr", "height-map", "albedo-map", "ao-map", "metallic-map"};
+
   // Installs the validators of mesh, tangents, env and the map keys on MODEL.
   explicit SceneAssets(SceneModel* model);
   // Assets of no model (no validators): a staging area that loads on another thread what

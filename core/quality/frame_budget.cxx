@@ -153,26 +153,6 @@ int runTotalSamples(int targetSamples, int samplesPerFrame)
   return frames * s;
 }
 
-int chooseFrameSamples(const FrameCostModel& model, double pixels, double budgetSeconds,
-                       int maxSamples, int runTotal)
-{
-  const int most = std::max(maxSamples, 1);
-  if (!model.known || !(budgetSeconds > 0.0) || !(pixels > 0.0) ||
-      model.predictSeconds(most, pixels) <= budgetSeconds)
-  {
-    return most;
-  }
-  int affordable = 1;
-  if (model.perSamplePerPixel > 0.0)
-  {
-    const double room = budgetSeconds / pixels - model.fixedPerPixel;
-    const double count = std::floor(room / model.perSamplePerPixel);
-    affordable = static_cast<int>(std::clamp(count, 1.0, static_cast<double>(most)));
-  }
-  // The largest divisor of the run's total within reach: the run keeps its sample count.
-  return largestDivisorAtMost(runTotal, affordable);
-}
-
 int chooseFrameBands(const FrameCostModel& model, int samples, double pixels, double budgetSeconds,
                      int maxBands)
 {

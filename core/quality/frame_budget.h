@@ -47,13 +47,6 @@ struct FrameCostModel
 // count instead.
 FrameCostModel fitFrameCost(const std::vector<FrameCostSample>& measured);
 
-// The samples per pixel and frame of a refinement run: the largest count whose predicted frame
-// cost at PIXELS stays within budgetSeconds, at most maxSamples (the material's own count, used
-// as is with no budget, an unknown model or a cost it meets), at least 1, and a divisor of
-// runTotal (frames x count = runTotal, see runTotalSamples) when below maxSamples.
-int chooseFrameSamples(const FrameCostModel& model, double pixels, double budgetSeconds,
-                       int maxSamples, int runTotal);
-
 // Bands a frame of SAMPLES per pixel over PIXELS is drawn in (horizontal strips, one render each,
 // see vtkAnisoAccumulationPass) so that each band's predicted cost at PIXELS / bands stays within
 // budgetSeconds: the fewest that do, maxBands when none does; 1 with an unknown model, no budget

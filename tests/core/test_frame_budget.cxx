@@ -2,9 +2,10 @@
 //   - the cost fit recovers fixed and per-sample costs that generated the measurements exactly
 //     (a known line), falls back to the stated assumption with one sample count or when more
 //     samples measured cheaper, and keeps both parts non-negative;
-//   - the chosen samples per frame are the largest divisor of the run's total whose predicted
-//     cost meets the budget (values worked out by hand below), the material's own count when it
-//     fits or nothing is known, and 1 at worst; frames x samples per frame stay the run's total;
+//   - with whole frames only (one band), the plan's samples per frame are the largest divisor of
+//     the run's total whose predicted cost meets the budget (values worked out by hand below),
+//     the material's own count when it fits or nothing is known, and 1 at worst; frames x
+//     samples per frame stay the run's total;
 //   - with renders of two sizes (whole frames and bands) the fit also recovers what every render
 //     costs whatever its pixels;
 //   - a frame is drawn in the fewest bands whose predicted cost each meets the budget (worked
@@ -116,22 +117,22 @@ TEST(FrameBudget, ChoosesTheLargestDivisorWithinTheBudget)
 {
   // 38 ms fixed and 7.8 ms per sample at 1e5 pixels; budget 60 ms: (60 - 38) / 7.8 = 2.8 -> 2.
   const FrameCostModel m = knownModel(0.0, 38e-3 / 1e5, 7.8e-3 / 1e5);
-  EXPECT_EQ(chooseFrameSamples(m, 1e5, 0.060, 16, 256), 2);
+  EXPECT_EQ(chooseFramePlan(m, 1e5, 0.060, 16, 256, 1).samples, 2);
   // Budget 80 ms: (80 - 38) / 7.8 = 5.4 -> 5, which does not divide 256: 4.
-  EXPECT_EQ(chooseFrameSamples(m, 1e5, 0.080, 16, 256), 4);
+  EXPECT_EQ(chooseFramePlan(m, 1e5, 0.080, 16, 256, 1).samples, 4);
   // A total of 300: 5 divides it.
-  EXPECT_EQ(chooseFrameSamples(m, 1e5, 0.080, 16, 300), 5);
+  EXPECT_EQ(chooseFramePlan(m, 1e5, 0.080, 16, 300, 1).samples, 5);
   // A prime total below the affordable count: 1.
-  EXPECT_EQ(chooseFrameSamples(m, 1e5, 0.080, 16, 257), 1);
+  EXPECT_EQ(chooseFramePlan(m, 1e5, 0.080, 16, 257, 1).samples, 1);
   // Everything fits (38 + 16 x 7.8 = 162.8 ms): the material's count.
-  EXPECT_EQ(chooseFrameSamples(m, 1e5, 0.163, 16, 256), 16);
+  EXPECT_EQ(chooseFramePlan(m, 1e5, 0.163, 16, 256, 1).samples, 16);
   // Half the pixels: (60 / 0.5 - 38) / 7.8 = 10.5 -> 10, divisor of 256 at most 10: 8.
-  EXPECT_EQ(chooseFrameSamples(m, 5e4, 0.060, 16, 256), 8);
+  EXPECT_EQ(chooseFramePlan(m, 5e4, 0.060, 16, 256, 1).samples, 8);
   // Not even the fixed part fits: 1 sample per frame.
-  EXPECT_EQ(chooseFrameSamples(m, 1e5, 0.020, 16, 256), 1);
+  EXPECT_EQ(chooseFramePlan(m, 1e5, 0.020, 16, 256, 1).samples, 1);
   // No budget, or nothing measured: the material's count.
-  EXPECT_EQ(chooseFrameSamples(m, 1e5, 0.0, 16, 256), 16);
-  EXPECT_EQ(chooseFrameSamples(FrameCostModel{}, 1e5, 0.060, 16, 256), 16);
+  EXPECT_EQ(chooseFramePlan(m, 1e5, 0.0, 16, 256, 1).samples, 16);
+  EXPECT_EQ(chooseFramePlan(FrameCostModel{}, 1e5, 0.060, 16, 256, 1).samples, 16);
 }
 
 TEST(FrameBudget, BandsSplitAFrameTheBudgetCannotHold)
@@ -219,8 +220,8 @@ TEST(FrameBudget, MarginShrinksThePlanUnderLoad)
   // frame then costs 1.25 x (38 + 2 x 7.8) = 67 ms, within the budget where 4 samples would
   // cost 1.25 x 69.2 = 86.5 ms.
   const FrameCostModel m = knownModel(0.0, 38e-3 / 1e5, 7.8e-3 / 1e5);
-  EXPECT_EQ(chooseFrameSamples(m, 1e5, 0.080 / loadMargin({1.0, 1.25}, 1.5), 16, 256), 2);
-  EXPECT_EQ(chooseFrameSamples(m, 1e5, 0.080 / loadMargin({1.0, 0.9}, 1.5), 16, 256), 4);
+  EXPECT_EQ(chooseFramePlan(m, 1e5, 0.080 / loadMargin({1.0, 1.25}, 1.5), 16, 256, 1).samples, 2);
+  EXPECT_EQ(chooseFramePlan(m, 1e5, 0.080 / loadMargin({1.0, 0.9}, 1.5), 16, 256, 1).samples, 4);
 }
 
 TEST(FrameBudget, OverrunBeyondTheTolerance)
@@ -260,7 +261,7 @@ TEST(FrameBudget, RunTotalIsWholeFrames)
     const int total = runTotalSamples(target, 16);
     for (double budget : {0.001, 0.02, 0.05, 0.1})
     {
-      const int s = chooseFrameSamples(m, 1e5, budget, 16, total);
+      const int s = chooseFramePlan(m, 1e5, budget, 16, total, 1).samples;
       EXPECT_EQ(total % s, 0) << target << " " << budget;
     }
   }
