@@ -899,7 +899,10 @@ int SceneView::targetSamples() const
 
 bool SceneView::converged() const
 {
-  return !interacting_ && !lightingBusy() && pass_->IsConverged() && !presentPending_;
+  // A frame asked for may find the mean stale (the window's size changed since the last one,
+  // which the pass learns only as it draws): not converged until it is drawn.
+  return !interacting_ && !lightingBusy() && pass_->IsConverged() && !presentPending_ &&
+         !frame_->isActive();
 }
 
 void SceneView::requestRender()

@@ -105,6 +105,7 @@ public:
   // The quality of the still view by the error model of the material's lobe and filtering
   // (adaptive_quality.h): the total it asks for and that total's predicted error.
   QualityChoice quality() const;
+  // Still, the target reached and on screen, and no frame asked for.
   bool converged() const;
   bool interacting() const { return interacting_; }
   void setSettleMs(int ms);
