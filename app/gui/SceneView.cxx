@@ -945,7 +945,7 @@ void SceneView::renderNow()
   {
     presentClock_.start();
     presentPending_ = true;
-    QTimer::singleShot(0, this, &SceneView::presentFrame);
+    QTimer::singleShot(kAfterPresentMs, this, &SceneView::presentFrame);
   }
   auto* gl = vtkOpenGLRenderWindow::SafeDownCast(window_);
   if (gl && gl->IsCurrent())
