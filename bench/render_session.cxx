@@ -1,13 +1,13 @@
 #include "render_session.h"
 
 #include "AnisoMaterial.h"
+#include "OffscreenRenderer.h"
 #include "RendererMatrices.h"
 #include "TextureUpload.h"
 #include "error.h"
 #include "lut/lut_cache.h"
 #include "vtkAnisoAccumulationPass.h"
 
-#include <X11/Xlib.h>
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -123,7 +123,6 @@ int64_t coveredPixels(const Image& image)
 class RenderSession::Impl
 {
 public:
-  Display* display = nullptr;
   vtkNew<vtkRenderWindow> window;
   vtkNew<vtkOpenGLRenderer> renderer;
   vtkNew<vtkOpenGLPolyDataMapper> mapper;
@@ -171,17 +170,7 @@ public:
 RenderSession::RenderSession(int width, int height)
     : impl_(std::make_unique<Impl>()), width_(width), height_(height)
 {
-  const char* name = std::getenv("DISPLAY");
-  if (!name || !*name)
-  {
-    throw errorAbout("render", "no X display (DISPLAY is not set); run under xvfb-run");
-  }
-  // Kept open for the session: an X server resets when its last client leaves.
-  impl_->display = XOpenDisplay(nullptr);
-  if (!impl_->display)
-  {
-    throw errorAbout("render", std::string("cannot open the X display ") + name);
-  }
+  requireXDisplay();
   Impl& s = *impl_;
   s.mapper->ScalarVisibilityOff();
   s.actor->SetMapper(s.mapper);
@@ -212,10 +201,6 @@ RenderSession::~RenderSession()
   impl_->material.reset();
   impl_->renderer->SetPass(nullptr);
   impl_->window->Finalize();
-  if (impl_->display)
-  {
-    XCloseDisplay(impl_->display);
-  }
 }
 
 void RenderSession::setSurface(vtkSmartPointer<vtkPolyData> surface, const ViewSettings& view)

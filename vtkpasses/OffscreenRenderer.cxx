@@ -59,10 +59,12 @@ void validate(const RenderSettings& s)
   AnisoMaterial::validate(s.material);
 }
 
+} // namespace
+
 // VTK's X window aborts the process when it cannot reach a display: check first. The check's
 // connection stays open for the life of the process: an X server resets when its last client
-// leaves and refuses connections meanwhile, which would fail the next render's window at random.
-void requireDisplay()
+// leaves and refuses connections meanwhile, which would fail the next window at random.
+void requireXDisplay()
 {
   const char* name = std::getenv("DISPLAY");
   if (!name || !*name)
@@ -72,7 +74,7 @@ void requireDisplay()
   static std::mutex mutex;
   static Display* connection = nullptr;
   std::lock_guard<std::mutex> lock(mutex);
-  for (int attempt = 0; !connection && attempt < 20; ++attempt)
+  for (int attempt = 0; !connection && attempt < 40; ++attempt)
   {
     connection = XOpenDisplay(nullptr);
     if (!connection)
@@ -85,8 +87,6 @@ void requireDisplay()
     throw errorAbout("render", std::string("cannot open the X display ") + name);
   }
 }
-
-} // namespace
 
 double medianSeconds(std::vector<double> seconds)
 {
@@ -102,7 +102,7 @@ double medianSeconds(std::vector<double> seconds)
 RenderResult renderOffscreen(const RenderSettings& s)
 {
   validate(s);
-  requireDisplay();
+  requireXDisplay();
 
   auto lighting = std::make_shared<EnvironmentLighting>(s.environment, s.cubeSize);
   lighting->setRotationDegrees(s.environmentRotationDegrees);

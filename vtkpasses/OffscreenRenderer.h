@@ -69,6 +69,12 @@ struct RenderResult
 // OpenGL context.
 RenderResult renderOffscreen(const RenderSettings& settings);
 
+// Opens this process's connection to the X display named by DISPLAY, once, and keeps it open
+// for the life of the process (an X server that loses its last client resets and refuses
+// connections for a moment, so windows made one after another would fail at random); retries
+// for two seconds while a server resets. Throws aniso::Error "render: reason" otherwise.
+void requireXDisplay();
+
 // Median of the frame times (0 for none).
 double medianSeconds(std::vector<double> seconds);
 } // namespace aniso
