@@ -2,6 +2,7 @@
 
 #include "BrushingModel.h"
 #include "BuiltinMeshes.h"
+#include "LevelOfDetail.h"
 #include "MeshLoader.h"
 #include "error.h"
 #include "maps/map_files.h"
@@ -65,6 +66,7 @@ std::shared_ptr<const SceneAssets::Surface> SceneAssets::surfaceEntry(const std:
                          auto entry = std::make_shared<Surface>();
                          entry->prepared =
                              prepareSurface(loaded->polyData, surfaceOptions(tangents), mesh);
+                         entry->interactive = interactiveLevelOfDetail(entry->prepared.polyData);
                          entry->notes = loaded->report.notes();
                          for (const std::string& note : entry->prepared.report.notes())
                          {
@@ -88,6 +90,12 @@ std::shared_ptr<const PreparedSurface> SceneAssets::surface(const std::string& m
 {
   std::shared_ptr<const Surface> entry = surfaceEntry(mesh, tangents);
   return std::shared_ptr<const PreparedSurface>(entry, &entry->prepared);
+}
+
+vtkSmartPointer<vtkPolyData> SceneAssets::interactiveSurface(const std::string& mesh,
+                                                             const std::string& tangents)
+{
+  return surfaceEntry(mesh, tangents)->interactive;
 }
 
 std::vector<std::string> SceneAssets::surfaceNotes(const std::string& mesh,

@@ -94,6 +94,10 @@ public:
   // ("auto" or BrushingModel.h's syntax). Throws aniso::Error "SUBJECT: reason".
   std::shared_ptr<const PreparedSurface> surface(const std::string& mesh,
                                                  const std::string& tangents);
+  // Its stand-in while the view moves (LevelOfDetail.h), null when it is drawn as it is. Made
+  // with the surface, so a surface prepared on a worker brings it along.
+  vtkSmartPointer<vtkPolyData> interactiveSurface(const std::string& mesh,
+                                                  const std::string& tangents);
   // What loading and preparing that surface had to say (dropped faces, computed normals...).
   std::vector<std::string> surfaceNotes(const std::string& mesh, const std::string& tangents);
 
@@ -118,6 +122,7 @@ private:
   struct Surface
   {
     PreparedSurface prepared;
+    vtkSmartPointer<vtkPolyData> interactive;
     std::vector<std::string> notes; // the mesh report's, then the preparation's
   };
   std::shared_ptr<const Surface> surfaceEntry(const std::string& mesh, const std::string& tangents);

@@ -324,6 +324,13 @@ FramePlan SceneView::planRun() const
     // first frame as cheap as can be, which measures it, in bands as the costs of the other sizes
     // suggest (costs per pixel of smaller frames are higher: it errs on the side of more bands).
     const FrameCostModel guess = frameCost(true);
+    if (!guess.known)
+    {
+      // Nothing measured at any size: bands by the surface's triangles.
+      const long long triangles = drawnSurface_ ? drawnSurface_->GetNumberOfPolys() : 0;
+      const long long bands = (triangles + kTrianglesPerBand - 1) / kTrianglesPerBand;
+      return {1, static_cast<int>(std::clamp<long long>(bands, 1, kMaxBands))};
+    }
     return {1, chooseFrameBands(guess, 1, double(pixels), planBudgetSeconds(guess), kMaxBands)};
   }
   int largestMeasured = 1;
@@ -380,6 +387,7 @@ void SceneView::frameEvent(vtkObject* caller, unsigned long event)
   {
     // The surface's mapper starts drawing: this render adds (a band of) a frame to the mean.
     frameDrewSurface_ = true;
+    frameDrewStandIn_ = drawnInteractive_ && mapper_->GetInput() == drawnInteractive_;
     frameDrawnSamples_ = material_ ? material_->settings().samples : 1;
     frameDrawnBands_ = pass_->GetCurrentFrameBands();
     frameDrawnBand_ = pass_->GetNextBand(); // the band being drawn (counted up after it)
@@ -422,6 +430,10 @@ void SceneView::frameEvent(vtkObject* caller, unsigned long event)
         loadRatios_.erase(loadRatios_.begin());
       }
     }
+  }
+  if (frameDrewStandIn_)
+  {
+    return; // the stand-in's cost says nothing of the surface's
   }
   // What the model learns is the cost of whole frames: a frame drawn in bands costs its bands
   // together (bands differ from one another as the surface does across the rows; together they
@@ -497,7 +509,11 @@ void SceneView::applySurface()
   const std::shared_ptr<const PreparedSurface> surface = assets_->surface(mesh, tangents);
   surface_ = surface->polyData;
   drawing_ = drawingFrameOf(surface_);
-  mapper_->SetInputData(inDrawingFrame(surface_, drawing_));
+  drawnSurface_ = inDrawingFrame(surface_, drawing_);
+  // The stand-in in the surface's own drawing frame: the view does not jump when it is swapped.
+  const vtkSmartPointer<vtkPolyData> standIn = assets_->interactiveSurface(mesh, tangents);
+  drawnInteractive_ = standIn ? inDrawingFrame(standIn, drawing_) : nullptr;
+  showDrawnSurface();
   setDrawingFrame(actor_, drawing_);
   for (const std::string& note : assets_->surfaceNotes(mesh, tangents))
   {
@@ -511,6 +527,23 @@ void SceneView::applySurface()
   {
     resetCamera();
   }
+}
+
+void SceneView::showDrawnSurface()
+{
+  vtkPolyData* drawn = interacting_ && drawnInteractive_ ? drawnInteractive_ : drawnSurface_;
+  if (drawn && mapper_->GetInput() != drawn)
+  {
+    // A new input: the mapper builds its buffers for it in the next render (a few ms even for
+    // the largest surfaces; both stay in memory, so swapping reads nothing).
+    mapper_->SetInputData(drawn);
+  }
+}
+
+long long SceneView::drawnTriangles() const
+{
+  vtkPolyData* drawn = vtkPolyData::SafeDownCast(mapper_->GetInput());
+  return drawn ? static_cast<long long>(drawn->GetNumberOfPolys()) : 0;
 }
 
 void SceneView::applyLighting()
@@ -1055,6 +1088,7 @@ void SceneView::beginInteraction()
   if (!interacting_)
   {
     interacting_ = true;
+    showDrawnSurface();
     emit interactionChanged(true);
     try
     {
@@ -1071,6 +1105,7 @@ void SceneView::settle()
 {
   interacting_ = false;
   runReplans_ = 0;
+  showDrawnSurface();
   emit interactionChanged(false);
   if (cameraMoved_)
   {

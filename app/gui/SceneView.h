@@ -82,6 +82,12 @@ public:
   // (one per pass of the event loop, vtkAnisoAccumulationPass), at most this many.
   static constexpr int kMaxBands = 16;
   static constexpr double kUnmeasuredMargin = 2.0;
+  // A still frame with nothing measured since the shading changed (a new mesh, maps, method) is
+  // drawn in one band per this many triangles of the surface (at most kMaxBands): a render
+  // costs about in proportion to its triangles on a software rasteriser (llvmpipe on the
+  // development machine: some 140 ms for 320 000), and a band draws only the triangles in its
+  // rows.
+  static constexpr long long kTrianglesPerBand = 40000;
 
   SceneView(SceneModel* model, SceneAssets* assets, LutScheduler* luts, vtkRenderWindow* window,
             QObject* parent = nullptr);
@@ -108,6 +114,9 @@ public:
   // Still, the target reached and on screen, and no frame asked for.
   bool converged() const;
   bool interacting() const { return interacting_; }
+  // Triangles of what the view draws now: the surface, or while things move the surface's
+  // stand-in when it has one (SceneAssets::interactiveSurface, LevelOfDetail.h).
+  long long drawnTriangles() const;
   void setSettleMs(int ms);
   // The longest a progressive frame should keep the UI thread (the window's render of it), by
   // which the samples per frame of a still view's refinement are chosen (frame_budget.h): at most
@@ -149,6 +158,8 @@ signals:
 private:
   void modelChanged(const QString& key);
   void applySurface();
+  // The mapper's input: the stand-in while things move (when there is one), else the surface.
+  void showDrawnSurface();
   void applyLighting();
   // Bakes the model's environment at its cube size on the worker (one bake at a time; a request
   // made meanwhile runs next, and the finished stale one is dropped).
@@ -198,7 +209,9 @@ private:
   // The surface is drawn in the frame of its unit bounding sphere (DrawingFrame.h), so the
   // renderer's camera lives there too; the model's camera stays in the mesh's coordinates.
   DrawingFrame drawing_;
-  vtkSmartPointer<vtkPolyData> surface_; // in the mesh's coordinates, for offscreen renders
+  vtkSmartPointer<vtkPolyData> surface_;      // in the mesh's coordinates, for offscreen renders
+  vtkSmartPointer<vtkPolyData> drawnSurface_; // the surface in the drawing frame
+  vtkSmartPointer<vtkPolyData> drawnInteractive_; // its stand-in while moving, or null
   QTimer* settle_;
   QTimer* frame_;
   bool interacting_ = false;
@@ -224,6 +237,7 @@ private:
   vtkNew<vtkCallbackCommand> frameTiming_;
   qint64 frameStartNs_ = -1;
   bool frameDrewSurface_ = false;
+  bool frameDrewStandIn_ = false; // the render drew the stand-in: its cost is not learnt
   int frameDrawnSamples_ = 1;
   int frameDrawnBands_ = 1;
   int frameDrawnBand_ = 0;

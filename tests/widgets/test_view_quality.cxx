@@ -14,8 +14,12 @@
 //     cache for anything (its counters move only on the worker);
 //   - with quality-mode error, the still view's total is the fewest samples N with
 //     a N^-p <= error-target for the lobe's fitted a and p (computed here from the model's
-//     table entry for the lobe, n_u = n_v = 10 unfiltered: a = 3.259, p = 0.9757).
+//     table entry for the lobe, n_u = n_v = 10 unfiltered: a = 3.259, p = 0.9757);
+//   - a surface of more than kInteractiveTriangleLimit triangles is drawn as its stand-in while
+//     things move, as itself when still, and the still image after a move is the one before.
+#include "BuiltinMeshes.h"
 #include "EnvironmentLighting.h"
+#include "LevelOfDetail.h"
 #include "LutScheduler.h"
 #include "MainWindow.h"
 #include "SceneView.h"
@@ -25,12 +29,19 @@
 #include "vtkAnisoAccumulationPass.h"
 
 #include <QApplication>
+#include <QFile>
+#include <QSignalSpy>
 #include <QStandardPaths>
 #include <QSurfaceFormat>
+#include <QTemporaryDir>
+#include <QTextStream>
 #include <QVTKOpenGLNativeWidget.h>
 #include <QtTest>
+#include <algorithm>
 #include <cmath>
+#include <vtkCellArray.h>
 #include <vtkOpenGLRenderer.h>
+#include <vtkPolyData.h>
 #include <vtkRenderWindow.h>
 
 using aniso::numberValue;
@@ -285,6 +296,78 @@ private slots:
     QCOMPARE(view->quality().samples, static_cast<int>(std::ceil(std::pow(a / 0.001, 1.0 / p))));
     window.editor()->edit("quality-mode", textValue("samples"));
     QCOMPARE(view->targetSamples(), 16);
+  }
+
+  // A surface of more than kInteractiveTriangleLimit triangles is drawn as its stand-in while
+  // things move and as itself when still, and no frame of the stand-in reaches the still mean:
+  // the converged image after a move is the one before it, exactly (frames of the material's
+  // samples, so both runs draw the same frames).
+  void largeSurfaceMovesAsItsStandIn()
+  {
+    QTemporaryDir dir;
+    const QString path = dir.filePath("torus.obj");
+    vtkSmartPointer<vtkPolyData> torus = aniso::makeTorus(400, 200);
+    {
+      QFile file(path);
+      QVERIFY(file.open(QIODevice::WriteOnly));
+      QTextStream out(&file);
+      out.setRealNumberPrecision(9);
+      for (vtkIdType i = 0; i < torus->GetNumberOfPoints(); ++i)
+      {
+        double p[3];
+        torus->GetPoint(i, p);
+        out << "v " << p[0] << ' ' << p[1] << ' ' << p[2] << '\n';
+      }
+      vtkIdType n = 0;
+      const vtkIdType* ids = nullptr;
+      vtkCellArray* polys = torus->GetPolys();
+      for (polys->InitTraversal(); polys->GetNextCell(n, ids);)
+      {
+        out << "f " << ids[0] + 1 << ' ' << ids[1] + 1 << ' ' << ids[2] + 1 << '\n';
+      }
+    }
+    const long long triangles = torus->GetNumberOfPolys();
+    QVERIFY(triangles > aniso::kInteractiveTriangleLimit);
+
+    aniso::MainWindow window;
+    window.setErrorDialogs(false);
+    window.model()->setValues({{"mesh", textValue(path.toStdString())},
+                               {"samples", numberValue(4.0)},
+                               {"target-samples", numberValue(16.0)},
+                               {"background", textValue("none")}});
+    window.resize(800, 600);
+    window.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&window));
+    aniso::SceneView* view = window.view();
+    view->setSettleMs(20);
+    const aniso::Image before = convergedImage(window, 0);
+    QVERIFY(!before.data.empty());
+    QCOMPARE(view->drawnTriangles(), triangles);
+
+    // A move: the stand-in, at most kInteractiveTriangles.
+    view->setSettleMs(3000);
+    QSignalSpy frames(view, &aniso::SceneView::frameRendered);
+    window.editor()->edit("samples", numberValue(2.0));
+    QVERIFY(frames.wait(20000));
+    QVERIFY(view->interacting());
+    QVERIFY(view->drawnTriangles() > 0);
+    QVERIFY(view->drawnTriangles() <= aniso::kInteractiveTriangles);
+
+    // Still again with the same settings: the surface, and the same image.
+    window.editor()->edit("samples", numberValue(4.0));
+    view->setSettleMs(20);
+    QTRY_VERIFY_WITH_TIMEOUT(!view->interacting(), 10000);
+    QCOMPARE(view->drawnTriangles(), triangles);
+    const aniso::Image after = convergedImage(window, 0);
+    QCOMPARE(after.width, before.width);
+    QCOMPARE(after.height, before.height);
+    double largest = 0.0;
+    for (std::size_t i = 0; i < before.data.size(); ++i)
+    {
+      largest = std::max(largest, double(std::abs(after.data[i] - before.data[i])));
+    }
+    qInfo("largest difference after the move: %g", largest);
+    QVERIFY(largest <= 1e-6);
   }
 };
 
