@@ -22,6 +22,7 @@
 #include <vtkInformationDoubleVectorKey.h>
 #include <vtkInformationIntegerKey.h>
 #include <vtkMapper.h>
+#include <vtkMatrix4x4.h>
 #include <vtkNew.h>
 #include <vtkObjectFactory.h>
 #include <vtkOpenGLFramebufferObject.h>
@@ -29,6 +30,8 @@
 #include <vtkOpenGLRenderWindow.h>
 #include <vtkOpenGLShaderCache.h>
 #include <vtkOpenGLState.h>
+#include <vtkPointSet.h>
+#include <vtkPoints.h>
 #include <vtkProp.h>
 #include <vtkProperty.h>
 #include <vtkRenderState.h>
@@ -42,6 +45,55 @@ vtkStandardNewMacro(vtkAnisoAccumulationPass);
 vtkCxxSetObjectMacro(vtkAnisoAccumulationPass, DelegatePass, vtkRenderPass);
 vtkInformationKeyRestrictedMacro(vtkAnisoAccumulationPass, FRAME_SHIFT, DoubleVector, 2);
 vtkInformationKeyMacro(vtkAnisoAccumulationPass, FRAME_INDEX, Integer);
+
+namespace
+{
+// How much of the visible surfaces' geometry each GL row holds: the points of the visible
+// actors' inputs (at most about kDensityPoints of them, evenly strided) projected by CLIP, counted
+// per row. A render of many triangles costs about in proportion to them per row.
+constexpr vtkIdType kDensityPoints = 65536;
+
+std::vector<double> rowDensity(const vtkRenderState* s, const glm::dmat4& clip, int height)
+{
+  std::vector<double> density(std::size_t(height), 0.0);
+  for (int i = 0; i < s->GetPropArrayCount(); ++i)
+  {
+    auto* actor = vtkActor::SafeDownCast(s->GetPropArray()[i]);
+    vtkMapper* mapper = actor && actor->GetVisibility() ? actor->GetMapper() : nullptr;
+    auto* input = mapper ? vtkPointSet::SafeDownCast(mapper->GetInputDataObject(0, 0)) : nullptr;
+    vtkPoints* points = input ? input->GetPoints() : nullptr;
+    if (!points || points->GetNumberOfPoints() == 0)
+    {
+      continue;
+    }
+    glm::dmat4 model(1.0);
+    vtkMatrix4x4* matrix = actor->GetMatrix();
+    for (int r = 0; r < 4; ++r)
+    {
+      for (int c = 0; c < 4; ++c)
+      {
+        model[c][r] = matrix->GetElement(r, c);
+      }
+    }
+    const glm::dmat4 toClip = clip * model;
+    const vtkIdType n = points->GetNumberOfPoints();
+    const vtkIdType stride = std::max<vtkIdType>(1, n / kDensityPoints);
+    for (vtkIdType id = 0; id < n; id += stride)
+    {
+      double p[3];
+      points->GetPoint(id, p);
+      const glm::dvec4 q = toClip * glm::dvec4(p[0], p[1], p[2], 1.0);
+      if (!(q.w > 0.0) || std::abs(q.x) > q.w || std::abs(q.y) > q.w)
+      {
+        continue;
+      }
+      const int row = std::min(height - 1, static_cast<int>((0.5 * q.y / q.w + 0.5) * height));
+      density[std::size_t(std::max(row, 0))] += 1.0;
+    }
+  }
+  return density;
+}
+} // namespace
 
 namespace
 {
@@ -263,10 +315,12 @@ void vtkAnisoAccumulationPass::Render(const vtkRenderState* s)
   int shownFrom = 0;
   if (!this->IsConverged() || this->AccumulatedFrames == 0)
   {
+    const glm::dmat4 clipMatrix = aniso::worldToClip(renderer);
+    const std::vector<double> clip(glm::value_ptr(clipMatrix), glm::value_ptr(clipMatrix) + 16);
     if (this->Band == 0)
     {
       this->Bands = std::min(this->PendingBands, height);
-      this->PlanBandRows(height);
+      this->PlanBandRows(s, height, clipMatrix, clip);
       this->BandSeconds.assign(std::size_t(this->Bands), 0.0);
     }
     // Band 0 is the top one; GL's rows count from the bottom.
@@ -289,7 +343,7 @@ void vtkAnisoAccumulationPass::Render(const vtkRenderState* s)
       ++this->AccumulatedFrames;
       if (this->Bands > 1)
       {
-        this->UpdateRowCosts(height);
+        this->UpdateRowCosts(height, clip);
       }
     }
     else if (this->AccumulatedFrames == 0)
@@ -304,18 +358,43 @@ void vtkAnisoAccumulationPass::Render(const vtkRenderState* s)
   this->Present(window, x, y, width, height, shownFrom);
 }
 
-void vtkAnisoAccumulationPass::PlanBandRows(int height)
+void vtkAnisoAccumulationPass::PlanBandRows(const vtkRenderState* state, int height,
+                                            const glm::dmat4& clipMatrix,
+                                            const std::vector<double>& clip)
 {
   // Band b spans GL rows [BandEdges[b + 1], BandEdges[b]), from the top down. Each band takes an
-  // equal share of the rows' measured cost when it is known for this height, else of the rows.
+  // equal share of the rows' measured cost when it is known for this height and view, else of
+  // the rows' share of the geometry (rowDensity).
   const int bands = this->Bands;
   this->BandEdges.assign(std::size_t(bands) + 1, 0);
   this->BandEdges[0] = height;
-  const bool measured = static_cast<int>(this->RowCosts.size()) == height;
+  std::vector<double> weights(std::size_t(height), 1.0);
+  const bool measured = static_cast<int>(this->RowCosts.size()) == height &&
+                        (this->RowCostsView.empty() || this->RowCostsView == clip);
+  if (measured)
+  {
+    weights = this->RowCosts;
+  }
+  else
+  {
+    // Measured in another view (the camera moved) or at another height: what they measured may
+    // lie in other rows now. The rows' share of the geometry in this view, over a floor for what
+    // every row costs (a quarter of the mean).
+    const std::vector<double> density = rowDensity(state, clipMatrix, height);
+    double mean = 0.0;
+    for (double d : density)
+    {
+      mean += d / height;
+    }
+    for (int row = 0; row < height && mean > 0.0; ++row)
+    {
+      weights[std::size_t(row)] = 0.25 + 0.75 * density[std::size_t(row)] / mean;
+    }
+  }
   double total = 0.0;
   for (int row = 0; row < height; ++row)
   {
-    total += measured ? this->RowCosts[std::size_t(row)] : 1.0;
+    total += weights[std::size_t(row)];
   }
   double sum = 0.0;
   int row = height; // rows above this one are taken
@@ -327,24 +406,28 @@ void vtkAnisoAccumulationPass::PlanBandRows(int height)
     while (row - 1 >= lowest && sum < share)
     {
       --row;
-      sum += measured ? this->RowCosts[std::size_t(row)] : 1.0;
+      sum += weights[std::size_t(row)];
     }
     // At least one row for this band.
     if (row >= this->BandEdges[std::size_t(b) - 1])
     {
       row = this->BandEdges[std::size_t(b) - 1] - 1;
-      sum += measured ? this->RowCosts[std::size_t(row)] : 1.0;
+      sum += weights[std::size_t(row)];
     }
     this->BandEdges[std::size_t(b)] = row;
   }
   this->BandEdges[std::size_t(bands)] = 0;
 }
 
-void vtkAnisoAccumulationPass::UpdateRowCosts(int height)
+void vtkAnisoAccumulationPass::UpdateRowCosts(int height, const std::vector<double>& clip)
 {
   // Each band's time spread over its rows; averaged with what the rows cost before (at this
-  // height), so one disturbed band moves the cut by half its error.
-  const bool before = static_cast<int>(this->RowCosts.size()) == height;
+  // height, in this run), so one disturbed band moves the cut by half its error. A run's first
+  // frame replaces them: what earlier runs measured was another view or another shading.
+  const bool before = static_cast<int>(this->RowCosts.size()) == height &&
+                      this->AccumulatedFrames > 1 &&
+                      (this->RowCostsView.empty() || this->RowCostsView == clip);
+  this->RowCostsView = clip;
   if (!before)
   {
     this->RowCosts.assign(std::size_t(height), 0.0);
@@ -365,6 +448,7 @@ void vtkAnisoAccumulationPass::UpdateRowCosts(int height)
 void vtkAnisoAccumulationPass::SetRowCosts(const std::vector<double>& costs)
 {
   this->RowCosts = costs;
+  this->RowCostsView.clear();
 }
 
 void vtkAnisoAccumulationPass::PrepareTargets(vtkOpenGLRenderWindow* window, int width, int height)

@@ -26,6 +26,7 @@
 #include "image/image.h"
 
 #include <cstdint>
+#include <glm/mat4x4.hpp>
 #include <memory>
 #include <string>
 #include <vector>
@@ -92,7 +93,12 @@ public:
   // Their rows: band b spans GL rows [edges[b + 1], edges[b]) (GL counts rows from the bottom).
   const std::vector<int>& GetBandEdges() const { return this->BandEdges; }
   // The cost of each GL row (any unit) by which the next frame's bands are cut, as the bands'
-  // times set it; given here, it holds until frames in bands measure it anew (the pass's tests).
+  // times set it; given here, it holds for any view until frames in bands measure it anew (the
+  // pass's tests). Measured costs belong to the view they were measured in: a frame of another
+  // view (the camera moved), or of a height not measured, is cut by the rows' share of the
+  // visible geometry (its points projected) over a floor of a quarter of the mean, as the
+  // surface may have moved to rows that cost nothing before. The first frame of a run replaces
+  // what earlier runs measured; later frames of the run average with it.
   void SetRowCosts(const std::vector<double>& costs);
   const std::vector<double>& GetRowCosts() const { return this->RowCosts; }
 
@@ -121,10 +127,12 @@ private:
   };
   Signature ComputeSignature(const vtkRenderState* s, int width, int height) const;
   void PrepareTargets(vtkOpenGLRenderWindow* window, int width, int height);
-  // BandEdges for this->Bands bands of HEIGHT rows.
-  void PlanBandRows(int height);
-  // RowCosts from the bands' times of the frame just completed.
-  void UpdateRowCosts(int height);
+  // BandEdges for this->Bands bands of HEIGHT rows, seen by the camera CLIP (world to clip; its
+  // values as a vector, as RowCostsView holds them).
+  void PlanBandRows(const vtkRenderState* state, int height, const glm::dmat4& clipMatrix,
+                    const std::vector<double>& clip);
+  // RowCosts from the bands' times of the frame just completed, seen by the camera CLIP.
+  void UpdateRowCosts(int height, const std::vector<double>& clip);
   // Rows [y0, y1) (GL order, 0 at the bottom) of the frame are drawn.
   void RenderFrame(const vtkRenderState* s, vtkOpenGLRenderWindow* window, int width, int height,
                    int y0, int y1);
@@ -143,11 +151,12 @@ private:
   bool Jitter = true;
   int AccumulatedFrames = 0;
   int PendingBands = 1;
-  int Bands = 1;                   // of the frame in progress
-  int Band = 0;                    // drawn next
-  std::vector<int> BandEdges;      // GL rows: band b spans [BandEdges[b + 1], BandEdges[b])
-  std::vector<double> RowCosts;    // per GL row, measured at the last height banded
-  std::vector<double> BandSeconds; // of the frame in progress
+  int Bands = 1;                    // of the frame in progress
+  int Band = 0;                     // drawn next
+  std::vector<int> BandEdges;       // GL rows: band b spans [BandEdges[b + 1], BandEdges[b])
+  std::vector<double> RowCosts;     // per GL row, measured at the last height banded
+  std::vector<double> RowCostsView; // the camera they were measured with (empty: any)
+  std::vector<double> BandSeconds;  // of the frame in progress
   Signature LastSignature;
   int LastRenderedProps = 0;
 

@@ -402,6 +402,77 @@ TEST(RenderAccumulation, BandsTakeEqualSharesOfTheRowsCost)
   EXPECT_LE(std::abs((even[0] - even[1]) - (even[2] - even[3])), 1);
 }
 
+// Edges of BANDS bands cut from the top at equal shares of the weights (the documented rule).
+std::vector<int> cutByWeights(const std::vector<double>& weights, int bands)
+{
+  const int height = static_cast<int>(weights.size());
+  double total = 0.0;
+  for (double w : weights)
+  {
+    total += w;
+  }
+  std::vector<int> edges{height};
+  double sum = 0.0;
+  int row = height;
+  for (int b = 1; b < bands; ++b)
+  {
+    while (row - 1 >= bands - b && sum < total * b / bands)
+    {
+      sum += weights[std::size_t(--row)];
+    }
+    edges.push_back(row);
+  }
+  edges.push_back(0);
+  return edges;
+}
+
+TEST(RenderAccumulation, MeasuredRowCostsBelongToTheirViewAndRun)
+{
+  ANISO_REQUIRE_DISPLAY();
+  Scene scene;
+  scene.window->SetSize(40, 40);
+  scene.pass->SetTargetFrames(0);
+  // Costs given for any view, far above what a band of this scene costs (seconds): the run's
+  // first frame replaces them instead of averaging with them.
+  scene.pass->SetRowCosts(std::vector<double>(40, 1000.0));
+  scene.pass->SetFrameBands(3);
+  for (int band = 0; band < 3; ++band)
+  {
+    scene.render();
+  }
+  ASSERT_EQ(scene.pass->GetAccumulatedFrames(), 1);
+  const std::vector<double> first = scene.pass->GetRowCosts();
+  ASSERT_EQ(first.size(), 40u);
+  for (double cost : first)
+  {
+    EXPECT_LT(cost, 1.0);
+  }
+
+  // The camera moves back: the sphere now covers the middle third of the rows. The next frame is
+  // cut by the rows' share of the geometry, not by costs measured in the view before: the
+  // middle band, all sphere, takes fewer rows than the two holding background (bands of equal
+  // rows would be 14, 13, 13).
+  scene.renderer->GetActiveCamera()->Zoom(0.4);
+  scene.render();
+  ASSERT_EQ(scene.pass->GetNextBand(), 1);
+  const std::vector<int> moved = scene.pass->GetBandEdges();
+  ASSERT_EQ(moved.size(), 4u);
+  const int top = moved[0] - moved[1];
+  const int middle = moved[1] - moved[2];
+  const int bottom = moved[2] - moved[3];
+  EXPECT_LT(middle, top);
+  EXPECT_LT(middle, bottom);
+  EXPECT_LE(std::abs(top - bottom), 2) << "the sphere is in the middle";
+  // In the view they were measured in, the costs alone cut the bands.
+  for (int band = 1; band < 3; ++band)
+  {
+    scene.render();
+  }
+  const std::vector<double> second = scene.pass->GetRowCosts();
+  scene.render();
+  EXPECT_EQ(scene.pass->GetBandEdges(), cutByWeights(second, 3));
+}
+
 TEST(RenderAccumulation, ChangeWithinABandedFrameStartsOver)
 {
   ANISO_REQUIRE_DISPLAY();
