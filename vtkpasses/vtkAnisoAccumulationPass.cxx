@@ -155,7 +155,8 @@ vtkAnisoAccumulationPass::~vtkAnisoAccumulationPass()
   {
     this->AccumulationBuffer->Delete();
   }
-  for (vtkTextureObject* texture : {this->FrameColor, this->FrameDepth, this->AccumulationColor})
+  for (vtkTextureObject* texture :
+       {this->FrameColor, this->FrameDepth, this->AccumulationColor, this->PreviousColor})
   {
     if (texture)
     {
@@ -304,8 +305,20 @@ void vtkAnisoAccumulationPass::Render(const vtkRenderState* s)
     this->LastWindow = window;
     this->Reset();
   }
-  if (width != this->Width || height != this->Height ||
-      !(this->ComputeSignature(s, width, height) == this->LastSignature))
+  const bool resized = width != this->Width || height != this->Height;
+  if (resized)
+  {
+    // The mean of the old size stays as the picture under the rows the new size's first frame
+    // has not drawn yet (Present): a window switching from a reduced resolution back to its own
+    // shows the reduced picture scaled up there, not an empty framebuffer's rows.
+    this->PreviousShown = this->AccumulatedFrames > 0 && this->AccumulationColor &&
+                          this->AccumulationColor->GetHandle() != 0;
+    if (this->PreviousShown)
+    {
+      std::swap(this->AccumulationColor, this->PreviousColor);
+    }
+  }
+  if (resized || !(this->ComputeSignature(s, width, height) == this->LastSignature))
   {
     this->Reset();
   }
@@ -457,6 +470,9 @@ void vtkAnisoAccumulationPass::PrepareTargets(vtkOpenGLRenderWindow* window, int
   {
     this->FrameColor = vtkTextureObject::New();
     this->FrameDepth = vtkTextureObject::New();
+  }
+  if (!this->AccumulationColor)
+  {
     this->AccumulationColor = vtkTextureObject::New();
   }
   allocateColor(this->FrameColor, window, width, height);
@@ -721,16 +737,35 @@ void vtkAnisoAccumulationPass::Present(vtkOpenGLRenderWindow* window, int x, int
   vtkOpenGLState::ScopedglEnableDisable blend(ostate, GL_BLEND);
   ostate->vtkglEnable(GL_SCISSOR_TEST);
   ostate->vtkglViewport(x, y, width, height);
-  ostate->vtkglScissor(x, y + y0, width, height - y0);
   ostate->vtkglDisable(GL_DEPTH_TEST);
   ostate->vtkglDisable(GL_BLEND);
-  this->AccumulationColor->Activate();
   vtkShaderProgram* program = quad->Program;
-  program->SetUniformi("accumulation", this->AccumulationColor->GetTextureUnit());
   program->SetUniformf("exposureScale", static_cast<float>(std::exp2(this->Display.exposureEV)));
   program->SetUniformf("quadDepth", 0.0f);
-  quad->Render();
-  this->AccumulationColor->Deactivate();
+  // Rows [y0, height) from the mean; below, while a new size's first frame is in bands, the
+  // previous size's mean stretched over the viewport (the shader reads texels by position in
+  // the viewport, so a texture of another size scales).
+  const bool previous = y0 > 0 && this->PreviousShown && this->PreviousColor;
+  for (int part = previous ? 0 : 1; part < 2; ++part)
+  {
+    vtkTextureObject* texture = part == 0 ? this->PreviousColor : this->AccumulationColor;
+    if (part == 0)
+    {
+      ostate->vtkglScissor(x, y, width, y0);
+    }
+    else
+    {
+      ostate->vtkglScissor(x, y + y0, width, height - y0);
+    }
+    texture->Activate();
+    program->SetUniformi("accumulation", texture->GetTextureUnit());
+    quad->Render();
+    texture->Deactivate();
+  }
+  if (y0 == 0)
+  {
+    this->PreviousShown = false; // a whole frame of this size is on screen
+  }
 }
 
 aniso::Image vtkAnisoAccumulationPass::ReadAccumulation()
@@ -784,13 +819,15 @@ void vtkAnisoAccumulationPass::ReleaseGraphicsResources(vtkWindow* w)
     this->AccumulationBuffer->Delete();
     this->AccumulationBuffer = nullptr;
   }
-  for (vtkTextureObject* texture : {this->FrameColor, this->FrameDepth, this->AccumulationColor})
+  for (vtkTextureObject* texture :
+       {this->FrameColor, this->FrameDepth, this->AccumulationColor, this->PreviousColor})
   {
     if (texture)
     {
       texture->ReleaseGraphicsResources(w);
     }
   }
+  this->PreviousShown = false;
   if (this->Lighting)
   {
     this->Lighting->releaseGraphicsResources(w);

@@ -22,6 +22,9 @@
 // cost, not of the rows: each band's render is timed (waiting for the GL to finish it), its time
 // spread over its rows, and the bands of the next frame (of this view or the next at the same
 // height) cut so each costs as much as the others: where the surface is, bands are narrower.
+// While the first frame of a new size is in bands, the rows it has not drawn yet show the mean
+// of the size before, scaled (a view returning from a reduced resolution shows the reduced
+// picture there, not empty rows).
 #include "DisplaySettings.h"
 #include "image/image.h"
 
@@ -166,6 +169,10 @@ private:
   vtkTextureObject* FrameColor = nullptr;
   vtkTextureObject* FrameDepth = nullptr;
   vtkTextureObject* AccumulationColor = nullptr;
+  // The mean before the last change of size, shown under the rows the new size's first frame has
+  // not drawn yet (while PreviousShown).
+  vtkTextureObject* PreviousColor = nullptr;
+  bool PreviousShown = false;
   vtkOpenGLFramebufferObject* FrameBuffer = nullptr;
   vtkOpenGLFramebufferObject* AccumulationBuffer = nullptr;
   std::unique_ptr<vtkOpenGLQuadHelper> BackgroundQuad;

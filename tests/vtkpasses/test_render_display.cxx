@@ -39,6 +39,7 @@
 #include <vtkRenderStepsPass.h>
 #include <vtkRenderWindow.h>
 #include <vtkShaderProgram.h>
+#include <vtkUnsignedCharArray.h>
 #include <vtk_glew.h>
 
 namespace aniso::test
@@ -471,6 +472,50 @@ TEST(RenderAccumulation, MeasuredRowCostsBelongToTheirViewAndRun)
   const std::vector<double> second = scene.pass->GetRowCosts();
   scene.render();
   EXPECT_EQ(scene.pass->GetBandEdges(), cutByWeights(second, 3));
+}
+
+TEST(RenderAccumulation, ANewSizesFirstBandsShowThePreviousMeanBelow)
+{
+  ANISO_REQUIRE_DISPLAY();
+  // A window at half size (as while things move), one whole frame, what it displays.
+  Scene scene;
+  scene.window->SetSize(20, 20);
+  scene.pass->SetTargetFrames(0);
+  ASSERT_EQ(scene.render(), 1);
+  vtkNew<vtkUnsignedCharArray> small;
+  scene.window->GetRGBACharPixelData(0, 0, 19, 19, 0, small);
+  // Back to full size, the first frame in 4 bands: after its top band, the rows below show the
+  // half-size picture scaled up (each of its pixels over 2 x 2), not an empty framebuffer.
+  scene.window->SetSize(40, 40);
+  scene.pass->SetFrameBands(4);
+  ASSERT_EQ(scene.render(), 0);
+  const int drawnFrom = scene.pass->GetBandEdges()[1];
+  ASSERT_GT(drawnFrom, 4);
+  vtkNew<vtkUnsignedCharArray> large;
+  scene.window->GetRGBACharPixelData(0, 0, 39, 39, 0, large);
+  int differing = 0;
+  int lit = 0;
+  for (int y = 0; y < drawnFrom; ++y)
+  {
+    for (int x = 0; x < 40; ++x)
+    {
+      for (int c = 0; c < 3; ++c)
+      {
+        const int shown = large->GetValue((y * 40 + x) * 4 + c);
+        const int before = small->GetValue(((y / 2) * 20 + x / 2) * 4 + c);
+        differing += shown != before ? 1 : 0;
+        lit += shown > 0 ? 1 : 0;
+      }
+    }
+  }
+  EXPECT_EQ(differing, 0) << "of " << drawnFrom * 40 * 3 << " values";
+  EXPECT_GT(lit, drawnFrom * 40) << "the picture below is not dark";
+  // Once the frame is whole, all of it is the new size's.
+  for (int band = 1; band < 4; ++band)
+  {
+    scene.render();
+  }
+  EXPECT_EQ(scene.pass->GetAccumulatedFrames(), 1);
 }
 
 TEST(RenderAccumulation, ChangeWithinABandedFrameStartsOver)
