@@ -128,11 +128,10 @@ vtkRenderer* CompareWindow::viewport(int index) const
 
 void CompareWindow::refresh()
 {
-  // The view's own actor (the first one) holds the mesh whatever model the view shows.
+  // The view's own actor (the first one) carries the drawing frame whatever model the view
+  // shows; the mesh is the surface itself (the view's mapper draws a stand-in while moving).
   vtkActor* sceneActor = firstActorOf(view_->renderer());
-  auto* sceneMapper =
-      sceneActor ? vtkPolyDataMapper::SafeDownCast(sceneActor->GetMapper()) : nullptr;
-  vtkPolyData* mesh = sceneMapper ? sceneMapper->GetInput() : nullptr;
+  vtkPolyData* mesh = view_->drawnSurface();
   for (auto& pane : panes_)
   {
     pane->mapper->SetInputData(mesh);

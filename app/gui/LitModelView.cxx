@@ -136,8 +136,7 @@ void LitModelView::update()
     // The surface models (LEADR, microstructure) are SurfaceModelView's.
     if (lit)
     {
-      auto* sceneMapper = vtkPolyDataMapper::SafeDownCast(sceneActor_->GetMapper());
-      vtkPolyData* mesh = sceneMapper ? sceneMapper->GetInput() : nullptr;
+      vtkPolyData* mesh = view_->drawnSurface();
       if (mesh != mapper_->GetInput())
       {
         mapper_->SetInputData(mesh);

@@ -53,6 +53,7 @@ public:
   SceneEditor* editor() { return &editor_; }
   SceneView* view() const { return view_; }
   SurfaceModelView* surfaceView() const { return surfaceView_; }
+  LitModelView* litView() const { return litView_; }
   LightsDock* lightsDock() const { return lightsDock_; }
   // The comparison view (View > Compare models), made when first opened.
   CompareWindow* compareWindow() const { return compareWindow_; }

@@ -540,6 +540,11 @@ void SceneView::showDrawnSurface()
   }
 }
 
+vtkPolyData* SceneView::drawnSurface() const
+{
+  return drawnSurface_;
+}
+
 long long SceneView::drawnTriangles() const
 {
   vtkPolyData* drawn = vtkPolyData::SafeDownCast(mapper_->GetInput());

@@ -117,6 +117,9 @@ public:
   // Triangles of what the view draws now: the surface, or while things move the surface's
   // stand-in when it has one (SceneAssets::interactiveSurface, LevelOfDetail.h).
   long long drawnTriangles() const;
+  // The surface in the drawing frame (DrawingFrame.h) as drawn when still, never the stand-in:
+  // what views of other models (lit, LEADR, microstructure, the comparison) draw.
+  vtkPolyData* drawnSurface() const;
   void setSettleMs(int ms);
   // The longest a progressive frame should keep the UI thread (the window's render of it), by
   // which the samples per frame of a still view's refinement are chosen (frame_budget.h): at most

@@ -171,8 +171,7 @@ void SurfaceModelView::update()
     // A fresh actor, so a material that fails to apply leaves the previous one untouched.
     vtkNew<vtkOpenGLPolyDataMapper> mapper;
     mapper->ScalarVisibilityOff();
-    auto* sceneMapper = vtkPolyDataMapper::SafeDownCast(sceneActor_->GetMapper());
-    mapper->SetInputData(sceneMapper ? sceneMapper->GetInput() : nullptr);
+    mapper->SetInputData(view_->drawnSurface());
     auto actor = vtkSmartPointer<vtkActor>::New();
     actor->SetMapper(mapper);
     actor->SetUserMatrix(sceneActor_->GetUserMatrix());

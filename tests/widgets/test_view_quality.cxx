@@ -20,6 +20,7 @@
 #include "BuiltinMeshes.h"
 #include "EnvironmentLighting.h"
 #include "LevelOfDetail.h"
+#include "LitModelView.h"
 #include "LutScheduler.h"
 #include "MainWindow.h"
 #include "SceneView.h"
@@ -39,7 +40,9 @@
 #include <QtTest>
 #include <algorithm>
 #include <cmath>
+#include <vtkActor.h>
 #include <vtkCellArray.h>
+#include <vtkMapper.h>
 #include <vtkOpenGLRenderer.h>
 #include <vtkPolyData.h>
 #include <vtkRenderWindow.h>
@@ -352,6 +355,17 @@ private slots:
     QVERIFY(view->interacting());
     QVERIFY(view->drawnTriangles() > 0);
     QVERIFY(view->drawnTriangles() <= aniso::kInteractiveTriangles);
+    // A view of another model made meanwhile (here the lit Banks model) draws the surface
+    // itself, not the stand-in the scene's mapper holds while things move.
+    window.editor()->edit("model", textValue("banks"));
+    QVERIFY(view->interacting());
+    QVERIFY(window.litView()->active());
+    vtkActor* lit = window.litView()->litActor();
+    QVERIFY(lit && lit->GetMapper());
+    auto* litMesh = vtkPolyData::SafeDownCast(lit->GetMapper()->GetInputDataObject(0, 0));
+    QVERIFY(litMesh);
+    QCOMPARE(static_cast<long long>(litMesh->GetNumberOfPolys()), triangles);
+    window.editor()->edit("model", textValue("as-env"));
 
     // Still again with the same settings: the surface, and the same image.
     window.editor()->edit("samples", numberValue(4.0));
