@@ -103,6 +103,16 @@ LitModelView::LitModelView(SceneModel* model, SceneView* view, QObject* parent)
               update();
             }
           });
+  // The stand-in of a large surface while things move, the surface once still, as the view.
+  connect(view_, &SceneView::interactionChanged, this,
+          [this]
+          {
+            vtkPolyData* mesh = view_->surfaceToDraw();
+            if (mapper_->GetInput() && mesh && mesh != mapper_->GetInput())
+            {
+              mapper_->SetInputData(mesh);
+            }
+          });
   update();
 }
 
@@ -136,7 +146,7 @@ void LitModelView::update()
     // The surface models (LEADR, microstructure) are SurfaceModelView's.
     if (lit)
     {
-      vtkPolyData* mesh = view_->drawnSurface();
+      vtkPolyData* mesh = view_->surfaceToDraw();
       if (mesh != mapper_->GetInput())
       {
         mapper_->SetInputData(mesh);

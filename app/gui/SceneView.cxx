@@ -529,9 +529,14 @@ void SceneView::applySurface()
   }
 }
 
+vtkPolyData* SceneView::surfaceToDraw() const
+{
+  return interacting_ && drawnInteractive_ ? drawnInteractive_ : drawnSurface_;
+}
+
 void SceneView::showDrawnSurface()
 {
-  vtkPolyData* drawn = interacting_ && drawnInteractive_ ? drawnInteractive_ : drawnSurface_;
+  vtkPolyData* drawn = surfaceToDraw();
   if (drawn && mapper_->GetInput() != drawn)
   {
     // A new input: the mapper builds its buffers for it in the next render (a few ms even for

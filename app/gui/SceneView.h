@@ -117,9 +117,13 @@ public:
   // Triangles of what the view draws now: the surface, or while things move the surface's
   // stand-in when it has one (SceneAssets::interactiveSurface, LevelOfDetail.h).
   long long drawnTriangles() const;
-  // The surface in the drawing frame (DrawingFrame.h) as drawn when still, never the stand-in:
-  // what views of other models (lit, LEADR, microstructure, the comparison) draw.
+  // The surface in the drawing frame (DrawingFrame.h) as drawn when still, never the stand-in
+  // (the comparison window draws it).
   vtkPolyData* drawnSurface() const;
+  // What the view draws now: the stand-in while things move (when the surface has one), else
+  // drawnSurface(). Views of other models (lit, LEADR, microstructure) follow it, swapping their
+  // mapper's input on interactionChanged.
+  vtkPolyData* surfaceToDraw() const;
   void setSettleMs(int ms);
   // The longest a progressive frame should keep the UI thread (the window's render of it), by
   // which the samples per frame of a still view's refinement are chosen (frame_budget.h): at most

@@ -97,6 +97,17 @@ SurfaceModelView::SurfaceModelView(SceneModel* model, SceneAssets* assets, Scene
               update();
             }
           });
+  // The stand-in of a large surface while things move, the surface once still, as the view.
+  connect(view_, &SceneView::interactionChanged, this,
+          [this]
+          {
+            vtkMapper* mapper = actor_ ? actor_->GetMapper() : nullptr;
+            vtkPolyData* mesh = view_->surfaceToDraw();
+            if (mapper && mesh && mesh != mapper->GetInputDataObject(0, 0))
+            {
+              mapper->SetInputDataObject(mesh);
+            }
+          });
   update();
 }
 
@@ -171,7 +182,7 @@ void SurfaceModelView::update()
     // A fresh actor, so a material that fails to apply leaves the previous one untouched.
     vtkNew<vtkOpenGLPolyDataMapper> mapper;
     mapper->ScalarVisibilityOff();
-    mapper->SetInputData(view_->drawnSurface());
+    mapper->SetInputData(view_->surfaceToDraw());
     auto actor = vtkSmartPointer<vtkActor>::New();
     actor->SetMapper(mapper);
     actor->SetUserMatrix(sceneActor_->GetUserMatrix());
