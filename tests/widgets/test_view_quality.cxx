@@ -16,7 +16,8 @@
 //     a N^-p <= error-target for the lobe's fitted a and p (computed here from the model's
 //     table entry for the lobe, n_u = n_v = 10 unfiltered: a = 3.259, p = 0.9757);
 //   - a surface of more than kInteractiveTriangleLimit triangles is drawn as its stand-in while
-//     things move, as itself when still, and the still image after a move is the one before.
+//     things move, as itself when still, and the still image after a move is the one before;
+//     the lit and LEADR models' views follow the same swap.
 #include "BuiltinMeshes.h"
 #include "EnvironmentLighting.h"
 #include "LevelOfDetail.h"
