@@ -42,6 +42,9 @@
 #include <QtTest>
 #include <algorithm>
 #include <cmath>
+#include <functional>
+#include <string>
+#include <utility>
 #include <vtkActor.h>
 #include <vtkCellArray.h>
 #include <vtkDataArray.h>
@@ -391,41 +394,33 @@ private slots:
     qInfo("largest difference after the move: %g", largest);
     QVERIFY(largest <= 1e-6);
 
-    // A view of another model chosen meanwhile (here the lit Banks model) draws the stand-in too
-    // while things move, and the surface once still.
-    view->setSettleMs(3000);
-    window.editor()->edit("model", textValue("banks"));
-    QVERIFY(view->interacting());
-    QVERIFY(window.litView()->active());
-    vtkActor* lit = window.litView()->litActor();
-    QVERIFY(lit && lit->GetMapper());
-    const auto litTriangles = [&]
+    // A view of another model chosen meanwhile draws the stand-in too while things move, and
+    // the surface once still: the lit Banks model's, and LEADR's (a surface model: an actor of
+    // its own, made while moving).
+    const auto trianglesOf = [](vtkActor* actor)
     {
-      auto* mesh = vtkPolyData::SafeDownCast(lit->GetMapper()->GetInputDataObject(0, 0));
+      auto* mesh = actor && actor->GetMapper()
+                       ? vtkPolyData::SafeDownCast(actor->GetMapper()->GetInputDataObject(0, 0))
+                       : nullptr;
       return mesh ? static_cast<long long>(mesh->GetNumberOfPolys()) : 0LL;
     };
-    QVERIFY(litTriangles() > 0);
-    QVERIFY(litTriangles() <= aniso::kInteractiveTriangles);
-    view->setSettleMs(20);
-    QTRY_VERIFY_WITH_TIMEOUT(!view->interacting(), 10000);
-    QCOMPARE(litTriangles(), triangles);
-    // The same for LEADR's view (a surface model: an actor of its own, made while moving).
-    view->setSettleMs(3000);
-    window.editor()->edit("model", textValue("leadr"));
-    QVERIFY(view->interacting());
-    QVERIFY(window.surfaceView()->active());
-    vtkActor* leadr = window.surfaceView()->surfaceActor();
-    QVERIFY(leadr && leadr->GetMapper());
-    const auto leadrTriangles = [&]
+    const std::pair<std::string, std::function<vtkActor*()>> others[] = {
+        {"banks",
+         [&] { return window.litView()->active() ? window.litView()->litActor() : nullptr; }},
+        {"leadr", [&] {
+           return window.surfaceView()->active() ? window.surfaceView()->surfaceActor() : nullptr;
+         }}};
+    for (const auto& [name, actorOf] : others)
     {
-      auto* mesh = vtkPolyData::SafeDownCast(leadr->GetMapper()->GetInputDataObject(0, 0));
-      return mesh ? static_cast<long long>(mesh->GetNumberOfPolys()) : 0LL;
-    };
-    QVERIFY(leadrTriangles() > 0);
-    QVERIFY(leadrTriangles() <= aniso::kInteractiveTriangles);
-    view->setSettleMs(20);
-    QTRY_VERIFY_WITH_TIMEOUT(!view->interacting(), 10000);
-    QCOMPARE(leadrTriangles(), triangles);
+      view->setSettleMs(3000);
+      window.editor()->edit("model", textValue(name));
+      QVERIFY(view->interacting());
+      const long long moving = trianglesOf(actorOf());
+      QVERIFY2(moving > 0 && moving <= aniso::kInteractiveTriangles, name.c_str());
+      view->setSettleMs(20);
+      QTRY_VERIFY_WITH_TIMEOUT(!view->interacting(), 10000);
+      QCOMPARE(trianglesOf(actorOf()), triangles);
+    }
   }
 };
 
