@@ -4,7 +4,6 @@
 #include <cmath>
 #include <vtkCellArray.h>
 #include <vtkDataArray.h>
-#include <vtkIdList.h>
 #include <vtkNew.h>
 #include <vtkPointData.h>
 #include <vtkPoints.h>

@@ -381,6 +381,10 @@ void vtkAnisoAccumulationPass::PlanBandRows(const vtkRenderState* state, int hei
   const int bands = this->Bands;
   this->BandEdges.assign(std::size_t(bands) + 1, 0);
   this->BandEdges[0] = height;
+  if (bands == 1)
+  {
+    return; // a whole frame (every frame while things move): nothing to weigh
+  }
   std::vector<double> weights(std::size_t(height), 1.0);
   const bool measured = static_cast<int>(this->RowCosts.size()) == height &&
                         (this->RowCostsView.empty() || this->RowCostsView == clip);

@@ -5,18 +5,18 @@
 #include "BuiltinMeshes.h"
 #include "LevelOfDetail.h"
 #include "SurfacePreparation.h"
+#include "mesh_test_helpers.h"
 
 #include <array>
 #include <cmath>
+#include <glm/geometric.hpp>
 #include <gtest/gtest.h>
 #include <map>
 #include <vector>
-#include <vtkCellArray.h>
 #include <vtkDataArray.h>
 #include <vtkPointData.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
-#include <vtkTriangle.h>
 
 namespace aniso
 {
@@ -29,23 +29,6 @@ vtkSmartPointer<vtkPolyData> preparedTorus(int around, int tube)
 {
   vtkSmartPointer<vtkPolyData> torus = makeTorus(around, tube, kMajor, kMinor);
   return prepareSurface(torus, SurfaceOptions{}, "torus").polyData;
-}
-
-double area(vtkPolyData* surface)
-{
-  double sum = 0.0;
-  vtkIdType n = 0;
-  const vtkIdType* ids = nullptr;
-  double a[3], b[3], c[3];
-  vtkCellArray* polys = surface->GetPolys();
-  for (polys->InitTraversal(); polys->GetNextCell(n, ids);)
-  {
-    surface->GetPoint(ids[0], a);
-    surface->GetPoint(ids[1], b);
-    surface->GetPoint(ids[2], c);
-    sum += vtkTriangle::TriangleArea(a, b, c);
-  }
-  return sum;
 }
 
 // Every value of a point: position, then each point array's components in array order.
@@ -118,8 +101,8 @@ TEST(LevelOfDetail, ALargeTorusKeepsItsShapeAttributesAndFacing)
 
   // Shape: the area of the torus (4 pi^2 R r) within 2 % (the surface's own chords lose 0.01 %;
   // the stand-in's coarser chords cut a little more), bounds within a cell of the surface's.
-  const double analytic = 4.0 * M_PI * M_PI * kMajor * kMinor;
-  EXPECT_NEAR(area(coarse), analytic, 0.02 * analytic);
+  const double analytic = 4.0 * test::kPi * test::kPi * kMajor * kMinor;
+  EXPECT_NEAR(test::surfaceArea(coarse), analytic, 0.02 * analytic);
   double a[6], b[6];
   surface->GetBounds(a);
   coarse->GetBounds(b);
@@ -132,27 +115,15 @@ TEST(LevelOfDetail, ALargeTorusKeepsItsShapeAttributesAndFacing)
   // Facing: each triangle's winding agrees with its vertices' normals (clustering folds a few
   // slivers over, 280 of 38 176 here, which a culling or two-sided view would show).
   int flipped = 0;
-  vtkIdType n = 0;
-  const vtkIdType* ids = nullptr;
   vtkDataArray* normals = out->GetNormals();
-  vtkCellArray* polys = coarse->GetPolys();
-  for (polys->InitTraversal(); polys->GetNextCell(n, ids);)
-  {
-    double p0[3], p1[3], p2[3], face[3];
-    coarse->GetPoint(ids[0], p0);
-    coarse->GetPoint(ids[1], p1);
-    coarse->GetPoint(ids[2], p2);
-    vtkTriangle::ComputeNormal(p0, p1, p2, face);
-    double mean[3] = {0, 0, 0};
-    for (int k = 0; k < 3; ++k)
-    {
-      for (int c = 0; c < 3; ++c)
-      {
-        mean[c] += normals->GetComponent(ids[k], c);
-      }
-    }
-    flipped += (face[0] * mean[0] + face[1] * mean[1] + face[2] * mean[2]) <= 0.0 ? 1 : 0;
-  }
+  test::forEachTriangle(coarse,
+                        [&](vtkIdType i, vtkIdType j, vtkIdType k)
+                        {
+                          const glm::dvec3 mean = test::vec3(normals, i) + test::vec3(normals, j) +
+                                                  test::vec3(normals, k);
+                          const glm::dvec3 face = test::faceNormalUnnormalised(coarse, i, j, k);
+                          flipped += glm::dot(face, mean) <= 0.0 ? 1 : 0;
+                        });
   EXPECT_EQ(flipped, 0) << "of " << triangles;
 }
 } // namespace
