@@ -1,13 +1,13 @@
-#include "bake_command.h"
+#include "app/bake_command.h"
 
-#include "cli.h"
-#include "env/cubemap.h"
-#include "env/environment.h"
-#include "image/image.h"
-#include "lut/lut.h"
-#include "lut/lut_cache.h"
-#include "maps/quaternion_map.h"
-#include "maps/tpr_map.h"
+#include "app/cli.h"
+#include "core/env/cubemap.h"
+#include "core/env/environment.h"
+#include "core/image/image.h"
+#include "core/lut/lut.h"
+#include "core/lut/lut_cache.h"
+#include "core/maps/quaternion_map.h"
+#include "core/maps/tpr_map.h"
 
 #include <algorithm>
 #include <cctype>

@@ -1,9 +1,9 @@
 #pragma once
 // A small command-line parser for the aniso subcommands. Options that set a tunable
-// parameter are derived from its declaration (core/material/parameters.h), so their type,
+// parameter are derived from its declaration (core/parameters/parameters.h), so their type,
 // default, range and help text are stated once for the CLI, the docks and the sessions.
-#include "error.h"
-#include "material/parameters.h"
+#include "core/error.h"
+#include "core/parameters/parameters.h"
 
 #include <functional>
 #include <glm/vec3.hpp>

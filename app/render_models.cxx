@@ -1,8 +1,8 @@
-#include "render_models.h"
+#include "app/render_models.h"
 
-#include "LitModelMaterial.h"
-#include "materials/models.h"
-#include "render_surface_models.h"
+#include "vtkpasses/render/LitModelMaterial.h"
+#include "core/models/models.h"
+#include "app/render_surface_models.h"
 
 #include <memory>
 

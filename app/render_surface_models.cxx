@@ -1,13 +1,13 @@
-#include "render_surface_models.h"
+#include "app/render_surface_models.h"
 
-#include "LeadrMaterial.h"
-#include "MicrostructureMaterial.h"
-#include "error.h"
-#include "leadr/leadr.h"
-#include "maps/map_files.h"
-#include "materials/height_field.h"
-#include "microstructure/microstructure.h"
-#include "render_models.h"
+#include "vtkpasses/render/LeadrMaterial.h"
+#include "vtkpasses/render/MicrostructureMaterial.h"
+#include "core/error.h"
+#include "core/leadr/leadr.h"
+#include "core/maps/map_files.h"
+#include "core/models/height_field.h"
+#include "core/microstructure/microstructure.h"
+#include "app/render_models.h"
 
 #include <cmath>
 #include <memory>
@@ -16,7 +16,7 @@ namespace aniso::cli
 {
 namespace
 {
-// The option NAME of declared parameter KEY (core/material/parameters.cxx, shared with the
+// The option NAME of declared parameter KEY (core/parameters/parameters.cxx, shared with the
 // window's scene keys): a choice lists its values, a number shows VALUE_NAME.
 Option declaredOption(std::string_view key, std::string name, const std::string& valueName,
                       std::string_view help = {})

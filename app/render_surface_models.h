@@ -2,11 +2,11 @@
 // The options of `aniso render` for the LEADR and microstructure models (--model leadr,
 // --model microstructure): the relief LEADR filters (--height-map, --normal-map or a built-in
 // one) and the structure, grid, masking, shadowing and BRDF of the microstructure sampling.
-#include "LeadrMaterial.h"
-#include "MicrostructureMaterial.h"
-#include "OffscreenRenderer.h"
-#include "cli.h"
-#include "image/image.h"
+#include "vtkpasses/render/LeadrMaterial.h"
+#include "vtkpasses/render/MicrostructureMaterial.h"
+#include "vtkpasses/render/OffscreenRenderer.h"
+#include "app/cli.h"
+#include "core/image/image.h"
 
 #include <functional>
 #include <string_view>
@@ -21,7 +21,7 @@ void addSurfaceModelOptions(Command& command);
 // none of these options was given (UsageError otherwise).
 bool applySurfaceModelOptions(const Arguments& arguments, RenderSettings& settings);
 
-// The value of a declared parameter (core/material/parameters.cxx) by its key: an option of the
+// The value of a declared parameter (core/parameters/parameters.cxx) by its key: an option of the
 // command line or a scene key of the window, which share those declarations.
 using DeclaredValues = std::function<const ParameterValue&(std::string_view key)>;
 

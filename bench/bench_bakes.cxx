@@ -1,11 +1,11 @@
 // LUT bake and cache timings, and the BRDF LUT's error against the reference integrator for
 // each sample count (time against error). Goals: the default pair (64x64 each, 1024 samples)
 // under 50 ms on a 2-core machine, a cache hit under 1 ms.
-#include "env/environment.h"
-#include "frame.h"
-#include "lut/lut.h"
-#include "lut/lut_cache.h"
-#include "reference/reference_integrator.h"
+#include "core/env/environment.h"
+#include "core/frame.h"
+#include "core/lut/lut.h"
+#include "core/lut/lut_cache.h"
+#include "core/reference/reference_integrator.h"
 
 #include <algorithm>
 #include <benchmark/benchmark.h>

@@ -7,7 +7,7 @@
 // CPU evaluation, per structure and masking mode. Each scene also times the Ashikhmin-Shirley
 // environment frame (exact, filtered, LUT, 16 samples), so every row carries its frame time as a
 // ratio to that baseline measured in the same run.
-#include "bench_run.h"
+#include "bench/bench_run.h"
 
 #include <ostream>
 #include <string>

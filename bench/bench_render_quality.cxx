@@ -1,13 +1,13 @@
 // Error against cost of the GPU specular methods: one frame of the built-in sphere under the
 // studio (64 x 64, F0 = 1, no jitter), for each method, filtering and half-vector source and
 // N samples, against the CPU reference integrator at every other pixel (relative L2 over RGB,
-// as in tests/vtkpasses/test_render_reference.cxx). Prints a Markdown table per lobe with the
+// as in tests/vtkpasses/render/test_render_reference.cxx). Prints a Markdown table per lobe with the
 // error and the frame time. Needs an X display (xvfb-run).
-#include "BuiltinMeshes.h"
-#include "OffscreenRenderer.h"
-#include "env/environment.h"
-#include "frame.h"
-#include "reference/reference_integrator.h"
+#include "vtkpasses/mesh/BuiltinMeshes.h"
+#include "vtkpasses/render/OffscreenRenderer.h"
+#include "core/env/environment.h"
+#include "core/frame.h"
+#include "core/reference/reference_integrator.h"
 
 #include <chrono>
 #include <cmath>

@@ -1,10 +1,10 @@
-#include "bench_run.h"
+#include "bench/bench_run.h"
 
-#include "bench_models.h"
-#include "bench_scenes.h"
-#include "error.h"
-#include "reference_image.h"
-#include "render_session.h"
+#include "bench/bench_models.h"
+#include "bench/bench_scenes.h"
+#include "core/error.h"
+#include "bench/reference_image.h"
+#include "bench/render_session.h"
 
 #include <algorithm>
 #include <chrono>

@@ -5,7 +5,7 @@
 // file and a Markdown report, an error-against-time plot (SVG and PNG), the goals of the
 // benchmark issue evaluated, the counters that show nothing is redone when nothing changed, and
 // the fitted model of the adaptive quality control.
-#include "brdf/ashikhmin_shirley.h"
+#include "core/brdf/ashikhmin_shirley.h"
 
 #include <cstdint>
 #include <ostream>

@@ -1,4 +1,4 @@
-#include "flange_mesh.h"
+#include "bench/flange_mesh.h"
 
 #include <array>
 #include <cmath>

@@ -2,7 +2,7 @@
 // The lobe share of one-sample MIS used before misLobeFraction (core/env/env_sampling.h) took the
 // environment into account, kept for the benchmarks that compare the two: 1/2 up to a lobe width
 // sqrt((n_u + 1)(n_v + 1)) of 16, rising smoothly in log2 of it to 15/16 at 1024.
-#include "brdf/ashikhmin_shirley.h"
+#include "core/brdf/ashikhmin_shirley.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,7 +1,7 @@
-#include "pixel_geometry.h"
+#include "bench/pixel_geometry.h"
 
-#include "env/parallel.h"
-#include "error.h"
+#include "core/env/parallel.h"
+#include "core/error.h"
 
 #include <algorithm>
 #include <cmath>

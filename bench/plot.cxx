@@ -1,6 +1,6 @@
-#include "plot.h"
+#include "bench/plot.h"
 
-#include "raster_font.h"
+#include "bench/raster_font.h"
 
 #include <algorithm>
 #include <cmath>

@@ -3,7 +3,7 @@
 // of drawing primitives, then written as SVG text or rasterised into an image for PNG files,
 // so both show the same picture. The rasteriser anti-aliases by exact pixel coverage and draws
 // text with a built-in 5x7 bitmap font (printable ASCII). GL-free, no dependencies.
-#include "image/image.h"
+#include "core/image/image.h"
 
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>

@@ -1,4 +1,4 @@
-#include "raster_font.h"
+#include "bench/raster_font.h"
 
 namespace aniso::bench
 {

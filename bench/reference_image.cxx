@@ -1,8 +1,8 @@
-#include "reference_image.h"
+#include "bench/reference_image.h"
 
-#include "env/parallel.h"
-#include "error.h"
-#include "frame.h"
+#include "core/env/parallel.h"
+#include "core/error.h"
+#include "core/frame.h"
 
 #include <algorithm>
 #include <chrono>

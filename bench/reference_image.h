@@ -4,12 +4,12 @@
 // shader shades there (pixel_geometry.h). References are expensive (milliseconds to a tenth of
 // a second per pixel), so they are cached on disk, keyed by everything they depend on.
 // GL-free.
-#include "brdf/ashikhmin_shirley.h"
-#include "brdf/ggx.h"
-#include "env/environment.h"
-#include "image/image.h"
-#include "pixel_geometry.h"
-#include "reference/reference_integrator.h"
+#include "core/brdf/ashikhmin_shirley.h"
+#include "core/brdf/ggx.h"
+#include "core/env/environment.h"
+#include "core/image/image.h"
+#include "bench/pixel_geometry.h"
+#include "core/reference/reference_integrator.h"
 
 #include <cstdint>
 #include <glm/vec3.hpp>

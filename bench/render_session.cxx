@@ -1,12 +1,12 @@
-#include "render_session.h"
+#include "bench/render_session.h"
 
-#include "AnisoMaterial.h"
-#include "OffscreenRenderer.h"
-#include "RendererMatrices.h"
-#include "TextureUpload.h"
-#include "error.h"
-#include "lut/lut_cache.h"
-#include "vtkAnisoAccumulationPass.h"
+#include "vtkpasses/render/AnisoMaterial.h"
+#include "vtkpasses/render/OffscreenRenderer.h"
+#include "vtkpasses/render/RendererMatrices.h"
+#include "vtkpasses/render/TextureUpload.h"
+#include "core/error.h"
+#include "core/lut/lut_cache.h"
+#include "vtkpasses/render/vtkAnisoAccumulationPass.h"
 
 #include <algorithm>
 #include <chrono>

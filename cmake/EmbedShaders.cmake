@@ -20,7 +20,7 @@ function(_aniso_shader_identifier path out)
 endfunction()
 
 function(_aniso_write_shader_header output namespace files)
-  set(_text "// Generated from vtkpasses/shaders by cmake/EmbedShaders.cmake; edit the .glsl files.\n")
+  set(_text "// Generated from vtkpasses/render/shaders by cmake/EmbedShaders.cmake; edit the .glsl files.\n")
   string(APPEND _text "#pragma once\n\nnamespace ${namespace}\n{\n")
   foreach(_file IN LISTS files)
     file(READ "${_file}" _source)

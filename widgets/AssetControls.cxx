@@ -1,8 +1,8 @@
-#include "AssetControls.h"
+#include "widgets/AssetControls.h"
 
-#include "error.h"
-#include "maps/tpr_map.h"
-#include "material/parameters.h"
+#include "core/error.h"
+#include "core/maps/tpr_map.h"
+#include "core/parameters/parameters.h"
 
 #include <QComboBox>
 #include <QDoubleSpinBox>

@@ -1,8 +1,8 @@
-#include "EnvironmentDock.h"
+#include "widgets/EnvironmentDock.h"
 
-#include "EnvironmentThumbnails.h"
-#include "ParameterPanel.h"
-#include "error.h"
+#include "widgets/EnvironmentThumbnails.h"
+#include "widgets/ParameterPanel.h"
+#include "core/error.h"
 
 #include <QDir>
 #include <QFileDialog>

@@ -2,7 +2,7 @@
 // The environment dock: the built-in studio, the CC0 HDRIs that Blender installs (when present)
 // and any file, each with a thumbnail made off the UI thread; rotation, exposure, background
 // and tone mapping.
-#include "SceneEditor.h"
+#include "scene/SceneEditor.h"
 
 #include <QDockWidget>
 #include <QString>

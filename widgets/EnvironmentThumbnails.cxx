@@ -1,8 +1,8 @@
-#include "EnvironmentThumbnails.h"
+#include "widgets/EnvironmentThumbnails.h"
 
-#include "ParameterControls.h"
-#include "env/environment.h"
-#include "error.h"
+#include "widgets/ParameterControls.h"
+#include "core/env/environment.h"
+#include "core/error.h"
 
 #include <algorithm>
 #include <cmath>

@@ -2,7 +2,7 @@
 // Small previews of environments for the environment dock, made from core's data: an image
 // file read by readImage, or a built-in environment sampled by renderEquirect, then a
 // tone-mapped downscale.
-#include "image/image.h"
+#include "core/image/image.h"
 
 #include <QImage>
 #include <string>

@@ -1,9 +1,9 @@
-#include "LightsDock.h"
+#include "widgets/LightsDock.h"
 
-#include "ParameterPanel.h"
-#include "SceneShading.h"
-#include "error.h"
-#include "materials/models.h"
+#include "widgets/ParameterPanel.h"
+#include "scene/SceneShading.h"
+#include "core/error.h"
+#include "core/models/models.h"
 
 #include <QColorDialog>
 #include <QComboBox>

@@ -1,10 +1,10 @@
 #pragma once
-// The lights dock: the shading model (from the registry of materials/models.h), the built-in
+// The lights dock: the shading model (from the registry of core/models/models.h), the built-in
 // sample material of the lit models, and the list of point and directional lights with their
 // direction or position and RGB intensity (spin boxes and a colour button). Every change is one
 // undoable edit of the scene's "model", "sample-material" or "lights" key (SceneShading.h).
-#include "SceneEditor.h"
-#include "lights/light.h"
+#include "scene/SceneEditor.h"
+#include "core/lights/light.h"
 
 #include <QDockWidget>
 #include <array>

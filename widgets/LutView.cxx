@@ -1,7 +1,7 @@
-#include "LutView.h"
+#include "widgets/LutView.h"
 
-#include "LutScheduler.h"
-#include "material/parameters.h"
+#include "scene/LutScheduler.h"
+#include "core/parameters/parameters.h"
 
 #include <QGridLayout>
 #include <QLabel>

@@ -1,7 +1,7 @@
-#include "MapsDock.h"
+#include "widgets/MapsDock.h"
 
-#include "AssetControls.h"
-#include "ParameterPanel.h"
+#include "widgets/AssetControls.h"
+#include "widgets/ParameterPanel.h"
 
 #include <QGroupBox>
 #include <QVBoxLayout>

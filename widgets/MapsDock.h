@@ -3,7 +3,7 @@
 // a file), height map with its scale, albedo, AO and metallic maps, and the tangent source with
 // its axis. Files are checked by the model's validators (the application loads them), so a map
 // that does not load is reported and the scene keeps the previous one.
-#include "SceneEditor.h"
+#include "scene/SceneEditor.h"
 
 #include <QDockWidget>
 #include <functional>

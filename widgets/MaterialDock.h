@@ -6,7 +6,7 @@
 // (error-target, whose samples follow from the lobe by core/quality's error model), by
 // quality-mode; the control of the mode not in use is disabled. Slider and roughness mappings:
 // SliderMapping.h.
-#include "SceneEditor.h"
+#include "scene/SceneEditor.h"
 
 #include <QDockWidget>
 #include <array>

@@ -1,6 +1,6 @@
-#include "ParameterControls.h"
+#include "widgets/ParameterControls.h"
 
-#include "SliderMapping.h"
+#include "widgets/SliderMapping.h"
 
 #include <QColorDialog>
 #include <QComboBox>

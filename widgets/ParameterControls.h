@@ -3,7 +3,7 @@
 // choices, help): NumberControl (slider + exact spin box), ColorControl (R, G, B + swatch),
 // ChoiceControl (combo box). A control shows values it is given without signalling and reports
 // what the user does through `edited`; it never touches the model itself.
-#include "material/parameters.h"
+#include "core/parameters/parameters.h"
 
 #include <QWidget>
 

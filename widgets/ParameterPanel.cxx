@@ -1,7 +1,7 @@
-#include "ParameterPanel.h"
+#include "widgets/ParameterPanel.h"
 
-#include "ParameterControls.h"
-#include "error.h"
+#include "widgets/ParameterControls.h"
+#include "core/error.h"
 
 #include <QFormLayout>
 #include <QLabel>

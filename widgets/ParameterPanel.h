@@ -2,7 +2,7 @@
 // A form of parameter rows (label + control from the declaration) bound to a scene: it shows
 // the model's values as they change and sends what the user does through the SceneEditor (one
 // undoable command per edit, one per slider drag). Docks are made of these.
-#include "SceneEditor.h"
+#include "scene/SceneEditor.h"
 
 #include <QWidget>
 #include <functional>

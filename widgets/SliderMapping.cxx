@@ -1,6 +1,6 @@
-#include "SliderMapping.h"
+#include "widgets/SliderMapping.h"
 
-#include "brdf/ashikhmin_shirley.h"
+#include "core/brdf/ashikhmin_shirley.h"
 
 #include <algorithm>
 #include <cmath>

@@ -15,7 +15,7 @@
 // matches a Blinn-Phong lobe of exponent n (Walter et al. 2007, "Microfacet models for
 // refraction", eq. 32, used per axis for the anisotropic lobe); inverse n = 2 / alpha^2 - 2.
 // n in [0, 1e6] gives alpha in [0.0014142, 1].
-#include "material/parameters.h"
+#include "core/parameters/parameters.h"
 
 namespace aniso
 {

@@ -1,11 +1,11 @@
-#include "CompareWindow.h"
+#include "app/gui/CompareWindow.h"
 
-#include "DrawingFrame.h"
-#include "LitModelMaterial.h"
-#include "LitModelView.h"
-#include "SceneView.h"
-#include "error.h"
-#include "materials/models.h"
+#include "vtkpasses/render/DrawingFrame.h"
+#include "vtkpasses/render/LitModelMaterial.h"
+#include "app/gui/LitModelView.h"
+#include "app/gui/SceneView.h"
+#include "core/error.h"
+#include "core/models/models.h"
 
 #include <QVBoxLayout>
 #include <QVTKOpenGLNativeWidget.h>

@@ -2,7 +2,7 @@
 // The comparison view: the scene's mesh drawn by every lit model of the registry side by side,
 // one viewport each in a grid, with one camera for all (moving it in any viewport moves every
 // one), the scene's lights and material. It follows the scene's changes while open.
-#include "SceneModel.h"
+#include "scene/SceneModel.h"
 
 #include <QWidget>
 #include <memory>

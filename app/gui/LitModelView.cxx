@@ -1,10 +1,10 @@
-#include "LitModelView.h"
+#include "app/gui/LitModelView.h"
 
-#include "DrawingFrame.h"
-#include "LitModelMaterial.h"
-#include "SceneShading.h"
-#include "SceneView.h"
-#include "error.h"
+#include "vtkpasses/render/DrawingFrame.h"
+#include "vtkpasses/render/LitModelMaterial.h"
+#include "scene/SceneShading.h"
+#include "app/gui/SceneView.h"
+#include "core/error.h"
 
 #include <vtkActor.h>
 #include <vtkActorCollection.h>

@@ -3,10 +3,10 @@
 // lookup-table docks around it, menus (File, Edit, View), a status bar with the progressive
 // sample count, recent files, drag and drop, sessions and screenshot export. Every failure is
 // reported once, in words, and leaves the scene as it was.
-#include "SceneAssets.h"
-#include "SceneEditor.h"
-#include "SceneModel.h"
-#include "Session.h"
+#include "app/gui/SceneAssets.h"
+#include "scene/SceneEditor.h"
+#include "scene/SceneModel.h"
+#include "scene/Session.h"
 
 #include <QMainWindow>
 #include <QString>

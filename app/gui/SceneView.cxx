@@ -1,12 +1,12 @@
-#include "SceneView.h"
+#include "app/gui/SceneView.h"
 
-#include "AnisoMaterial.h"
-#include "EnvironmentLighting.h"
-#include "LutScheduler.h"
-#include "SceneAssets.h"
-#include "ViewSettings.h"
-#include "error.h"
-#include "vtkAnisoAccumulationPass.h"
+#include "vtkpasses/render/AnisoMaterial.h"
+#include "vtkpasses/render/EnvironmentLighting.h"
+#include "scene/LutScheduler.h"
+#include "app/gui/SceneAssets.h"
+#include "vtkpasses/render/ViewSettings.h"
+#include "core/error.h"
+#include "vtkpasses/render/vtkAnisoAccumulationPass.h"
 
 #include <QThreadPool>
 #include <QTimer>

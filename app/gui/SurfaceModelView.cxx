@@ -1,16 +1,16 @@
-#include "SurfaceModelView.h"
+#include "app/gui/SurfaceModelView.h"
 
-#include "DrawingFrame.h"
-#include "LeadrMaterial.h"
-#include "LitModelView.h"
-#include "MicrostructureMaterial.h"
-#include "SceneAssets.h"
-#include "SceneShading.h"
-#include "SceneView.h"
-#include "error.h"
-#include "leadr/leadr.h"
-#include "microstructure/microstructure.h"
-#include "render_surface_models.h"
+#include "vtkpasses/render/DrawingFrame.h"
+#include "vtkpasses/render/LeadrMaterial.h"
+#include "app/gui/LitModelView.h"
+#include "vtkpasses/render/MicrostructureMaterial.h"
+#include "app/gui/SceneAssets.h"
+#include "scene/SceneShading.h"
+#include "app/gui/SceneView.h"
+#include "core/error.h"
+#include "core/leadr/leadr.h"
+#include "core/microstructure/microstructure.h"
+#include "app/render_surface_models.h"
 
 #include <algorithm>
 #include <vtkActor.h>

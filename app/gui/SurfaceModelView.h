@@ -2,13 +2,13 @@
 // Draws the scene with the LEADR or the microstructure model when the scene chooses one ("model"
 // key, SceneShading.h), as LitModelView does for the lit models: a second actor in the view's
 // renderer draws the view's mesh with a LeadrShadingMaterial or MicrostructureShadingMaterial
-// (vtkpasses/LeadrMaterial.h, MicrostructureMaterial.h) and is shown in place of the view's own
+// (vtkpasses/render/LeadrMaterial.h, MicrostructureMaterial.h) and is shown in place of the view's own
 // actor while the model is one of them. The settings come from the scene's declared keys
 // (surfaceModelKeys), lights, F0, albedo and TPR map, as `aniso render --model NAME` takes them
 // from its options. Each change builds a new actor and material; one that fails leaves the
 // previous picture on screen and is reported once.
-#include "OffscreenRenderer.h"
-#include "SceneModel.h"
+#include "vtkpasses/render/OffscreenRenderer.h"
+#include "scene/SceneModel.h"
 
 #include <QObject>
 #include <memory>

@@ -1,10 +1,10 @@
-#include "run_gui.h"
+#include "app/gui/run_gui.h"
 
-#include "LutScheduler.h"
-#include "MainWindow.h"
-#include "SceneView.h"
-#include "cli.h"
-#include "error.h"
+#include "scene/LutScheduler.h"
+#include "app/gui/MainWindow.h"
+#include "app/gui/SceneView.h"
+#include "app/cli.h"
+#include "core/error.h"
 
 #include <QApplication>
 #include <QSurfaceFormat>

@@ -1,6 +1,6 @@
-#include "brdf/ashikhmin_shirley.h"
+#include "core/brdf/ashikhmin_shirley.h"
 
-#include "error.h"
+#include "core/error.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,5 +1,5 @@
 #pragma once
-// The Ashikhmin-Shirley anisotropic Phong model (DESIGN.md, source 1), in tangent space:
+// The Ashikhmin-Shirley anisotropic Phong model (docs/METHOD.md, source 1), in tangent space:
 // t = +X (n_u acts along it), b = +Y (n_v), n = +Z. All vectors are unit length.
 // Valid for n_u, n_v in [0, 1e6] and views down to grazing; never returns NaN or Inf.
 #include <glm/vec2.hpp>

@@ -1,6 +1,6 @@
-#include "brdf/ashikhmin_shirley_lights.h"
+#include "core/brdf/ashikhmin_shirley_lights.h"
 
-#include "brdf/sv_common.h"
+#include "core/brdf/sv_common.h"
 
 namespace aniso
 {

@@ -1,13 +1,13 @@
 #pragma once
-// The Ashikhmin-Shirley model under point and directional lights (DESIGN.md, sources 1 and 2):
+// The Ashikhmin-Shirley model under point and directional lights (docs/METHOD.md, sources 1 and 2):
 // the specular term of brdf/ashikhmin_shirley.h plus the AS diffuse term that couples to it,
 //   f_d(v, l) = 28 rho_d / (23 pi) (1 - R_s) (1 - (1 - n.l/2)^5) (1 - (1 - n.v/2)^5),
 // R_s the specular reflectance at normal incidence (F0, per channel). Its directional albedo is
 // rho_d (1 - R_s) (1 - (1 - n.v/2)^5) <= rho_d (1 - R_s): the diffuse only takes what the
 // specular leaves. Reciprocal. Tangent space: t = +X (n_u), b = +Y (n_v), n = +Z.
-#include "brdf/ashikhmin_shirley.h"
-#include "frame.h"
-#include "lights/light.h"
+#include "core/brdf/ashikhmin_shirley.h"
+#include "core/frame.h"
+#include "core/lights/light.h"
 
 #include <glm/vec3.hpp>
 #include <vector>

@@ -1,6 +1,6 @@
-#include "brdf/banks.h"
+#include "core/brdf/banks.h"
 
-#include "brdf/sv_common.h"
+#include "core/brdf/sv_common.h"
 
 namespace aniso
 {

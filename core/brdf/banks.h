@@ -1,5 +1,5 @@
 #pragma once
-// Banks's fibre model (Banks 1994; DESIGN.md, source 2) in tangent space: the fibres run along
+// Banks's fibre model (Banks 1994; docs/METHOD.md, source 2) in tangent space: the fibres run along
 // t = +X, b = +Y, n = +Z, all vectors unit length. A fibre has every normal of its normal plane;
 // for the diffuse part the one closest to l (its projection N') lights it, and l mirrors into a
 // cone of directions around t (all with r.t = -l.t), whose direction R' closest to v gives the
@@ -12,8 +12,8 @@
 // The specular part is reciprocal (V.R' is symmetric in v and l); the diffuse part is not (it
 // depends on l only). Diffuse albedo is rho_d 8 / (3 pi) for every view (the fibre cosine never
 // exceeds Lambert's); the specular part is not normalised (k_s is the peak value of f, sr^-1).
-#include "frame.h"
-#include "lights/light.h"
+#include "core/frame.h"
+#include "core/lights/light.h"
 
 #include <glm/vec3.hpp>
 #include <vector>

@@ -1,6 +1,6 @@
-#include "brdf/blinn_phong_aniso.h"
+#include "core/brdf/blinn_phong_aniso.h"
 
-#include "brdf/sv_common.h"
+#include "core/brdf/sv_common.h"
 
 #include <glm/geometric.hpp>
 

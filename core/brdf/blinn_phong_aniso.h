@@ -1,5 +1,5 @@
 #pragma once
-// Anisotropic Blinn-Phong (DESIGN.md, source 2) in tangent space: t = +X, b = +Y, n = +Z, all
+// Anisotropic Blinn-Phong (docs/METHOD.md, source 2) in tangent space: t = +X, b = +Y, n = +Z, all
 // vectors unit length. The exponent is read from the material textures t / alpha_x and
 // b / alpha_y (the "exponent form"):
 //   e(h) = ((h . t/alpha_x)^2 + (h . b/alpha_y)^2) / (1 - (n.h)^2)
@@ -11,9 +11,9 @@
 // BRDF uses the implicit geometry term (n.l)(n.v) of normalised Blinn-Phong:
 //   f(v, l) = rho_d / pi + k_s D(h) / 4.
 // Reciprocal (it depends on h only); not a Fresnel model (k_s is the specular reflectance).
-#include "brdf/shading_frame.h"
-#include "frame.h"
-#include "lights/light.h"
+#include "core/brdf/shading_frame.h"
+#include "core/frame.h"
+#include "core/lights/light.h"
 
 #include <glm/vec3.hpp>
 #include <vector>

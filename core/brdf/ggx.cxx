@@ -1,7 +1,7 @@
-#include "brdf/ggx.h"
+#include "core/brdf/ggx.h"
 
-#include "brdf/ashikhmin_shirley.h"
-#include "error.h"
+#include "core/brdf/ashikhmin_shirley.h"
+#include "core/error.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,6 +1,6 @@
-#include "brdf/heidrich_seidel.h"
+#include "core/brdf/heidrich_seidel.h"
 
-#include "brdf/sv_common.h"
+#include "core/brdf/sv_common.h"
 
 namespace aniso
 {

@@ -1,5 +1,5 @@
 #pragma once
-// Heidrich-Seidel line lighting applied to surfaces (Heidrich and Seidel 1998; DESIGN.md,
+// Heidrich-Seidel line lighting applied to surfaces (Heidrich and Seidel 1998; docs/METHOD.md,
 // source 2) in tangent space: fibres along t = +X, b = +Y, n = +Z, all vectors unit length.
 // The specular highlight is that of an infinitely thin fibre, a function of (l.t, v.t) only
 // (which is why it fits a 2D table indexed by the two dot products):
@@ -11,9 +11,9 @@
 // As a BRDF (radiance = f E (n.l)+): f = rho_d / pi + k_s max(V.R', 0)^e / (n.l), which is not
 // reciprocal (the 1 / (n.l) of line lighting). The specular directional albedo is bounded by
 // k_s 2 pi sqrt(pi) Gamma((e+1)/2) / Gamma(e/2 + 1) (the integral over the whole reflection cone).
-#include "brdf/banks.h"
-#include "frame.h"
-#include "lights/light.h"
+#include "core/brdf/banks.h"
+#include "core/frame.h"
+#include "core/lights/light.h"
 
 #include <glm/vec3.hpp>
 #include <vector>

@@ -1,6 +1,6 @@
-#include "brdf/shading_frame.h"
+#include "core/brdf/shading_frame.h"
 
-#include "maps/quaternion_map.h"
+#include "core/maps/quaternion_map.h"
 
 #include <cmath>
 #include <glm/geometric.hpp>

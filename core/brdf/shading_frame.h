@@ -1,9 +1,9 @@
 #pragma once
-// Per-pixel shading frames (DESIGN.md, sources 1 and 2). Interpolated vertex normals and tangents
+// Per-pixel shading frames (docs/METHOD.md, sources 1 and 2). Interpolated vertex normals and tangents
 // are not unit length (nor orthogonal) inside a triangle, so they are renormalised and made
 // orthogonal here; a normal map then tilts the frame by the minimal rotation (the quaternion
 // construction of source 1), and a tangent map turns t within the tilted tangent plane.
-#include "frame.h"
+#include "core/frame.h"
 
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>

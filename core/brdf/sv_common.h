@@ -1,6 +1,6 @@
 #pragma once
 // Small pieces shared by the shift-variant models' implementations (not part of the API).
-#include "error.h"
+#include "core/error.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,6 +1,6 @@
-#include "brdf/ward.h"
+#include "core/brdf/ward.h"
 
-#include "brdf/sv_common.h"
+#include "core/brdf/sv_common.h"
 
 #include <glm/geometric.hpp>
 #include <limits>

@@ -1,5 +1,5 @@
 #pragma once
-// Ward's anisotropic Gaussian model (Ward 1992; DESIGN.md, source 2) in tangent space: t = +X,
+// Ward's anisotropic Gaussian model (Ward 1992; docs/METHOD.md, source 2) in tangent space: t = +X,
 // b = +Y, n = +Z, all vectors unit length.
 //   f(v, l) = rho_d / pi + rho_s / (4 pi alpha_x alpha_y) * S(p) * E
 // with S(p) = 1 / sqrt(p), p = (n.l)(n.v), and the Gaussian factor E in one of Ward's two forms:
@@ -13,10 +13,10 @@
 // the isotropic model. Reciprocal in both forms. The directional albedo is about cos(theta_v) for
 // narrow lobes; towards grazing views the 1/sqrt(p) factor makes it grow without bound, so rough
 // lobes exceed 1 there (alpha = 1 at 89.9 degrees; see the tests).
-#include "brdf/blinn_phong_aniso.h"
-#include "brdf/shading_frame.h"
-#include "frame.h"
-#include "lights/light.h"
+#include "core/brdf/blinn_phong_aniso.h"
+#include "core/brdf/shading_frame.h"
+#include "core/frame.h"
+#include "core/lights/light.h"
 
 #include <glm/vec3.hpp>
 #include <vector>

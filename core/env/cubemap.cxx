@@ -1,8 +1,8 @@
-#include "env/cubemap.h"
+#include "core/env/cubemap.h"
 
-#include "env/parallel.h"
-#include "env/quadrature.h"
-#include "error.h"
+#include "core/env/parallel.h"
+#include "core/env/quadrature.h"
+#include "core/error.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,7 +1,7 @@
 #pragma once
 // Float cubemaps with full mip chains, and 9-coefficient spherical-harmonic irradiance.
-#include "env/environment.h"
-#include "image/image.h"
+#include "core/env/environment.h"
+#include "core/image/image.h"
 
 #include <array>
 #include <glm/vec3.hpp>

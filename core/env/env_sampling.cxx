@@ -1,8 +1,8 @@
-#include "env/env_sampling.h"
+#include "core/env/env_sampling.h"
 
-#include "env/parallel.h"
-#include "error.h"
-#include "sampling/hammersley.h"
+#include "core/env/parallel.h"
+#include "core/error.h"
+#include "core/sampling/hammersley.h"
 
 #include <algorithm>
 #include <cmath>

@@ -11,9 +11,9 @@
 // R32F texture searched by bisection (about log2 W + log2 H texel fetches per sample) and the
 // pdf as a W x H R32F texture (one fetch per direction). Sizes are whatever the caller bakes;
 // 512 x 256 costs 0.5 MB per table.
-#include "brdf/ashikhmin_shirley.h"
-#include "env/environment.h"
-#include "image/image.h"
+#include "core/brdf/ashikhmin_shirley.h"
+#include "core/env/environment.h"
+#include "core/image/image.h"
 
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>

@@ -1,8 +1,8 @@
-#include "env/environment.h"
-#include "env/sun_sky.h"
+#include "core/env/environment.h"
+#include "core/env/sun_sky.h"
 
-#include "env/parallel.h"
-#include "error.h"
+#include "core/env/parallel.h"
+#include "core/error.h"
 
 #include <algorithm>
 #include <array>

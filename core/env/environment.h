@@ -1,7 +1,7 @@
 #pragma once
 // Environments: radiance as a function of a world direction (Z up), the Blender-compatible
 // equirectangular mapping, and the built-in procedural studio.
-#include "image/image.h"
+#include "core/image/image.h"
 
 #include <cstddef>
 #include <glm/vec2.hpp>

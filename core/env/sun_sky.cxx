@@ -1,6 +1,6 @@
-#include "env/sun_sky.h"
+#include "core/env/sun_sky.h"
 
-#include "error.h"
+#include "core/error.h"
 
 #include <cmath>
 #include <glm/geometric.hpp>

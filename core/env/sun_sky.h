@@ -3,7 +3,7 @@
 // ~1e5) over a uniform sky (1, or black), analytic so the reference integrator can integrate it
 // exactly. Real HDRIs hold such sources; sampling only the BRDF lobe leaves rough materials
 // noisy next to them.
-#include "env/environment.h"
+#include "core/env/environment.h"
 
 #include <glm/vec3.hpp>
 #include <string>

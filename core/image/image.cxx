@@ -1,6 +1,6 @@
-#include "image/image.h"
+#include "core/image/image.h"
 
-#include "error.h"
+#include "core/error.h"
 
 #include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>

@@ -1,10 +1,10 @@
-#include "leadr/leadr.h"
+#include "core/leadr/leadr.h"
 
-#include "brdf/ashikhmin_shirley.h"
-#include "brdf/sv_common.h"
-#include "error.h"
-#include "materials/height_field.h"
-#include "materials/texture_sampling.h"
+#include "core/brdf/ashikhmin_shirley.h"
+#include "core/brdf/sv_common.h"
+#include "core/error.h"
+#include "core/models/height_field.h"
+#include "core/models/texture_sampling.h"
 
 #include <algorithm>
 #include <array>

@@ -1,5 +1,5 @@
 #pragma once
-// LEADR mapping (Dupuy et al. 2013; DESIGN.md, source 3). A height or normal map is turned into
+// LEADR mapping (Dupuy et al. 2013; docs/METHOD.md, source 3). A height or normal map is turned into
 // the five moments of its slopes, E[x], E[y], E[x^2], E[y^2], E[xy], which average linearly: a
 // box-filtered mip level (or a trilinear lookup) holds exactly the moments of all the fine
 // texels it covers. Each texel's moments define a Gaussian distribution of slopes (mean slope and
@@ -8,7 +8,7 @@
 // spread of normals it really has instead of their (flattened) average.
 //
 // Conventions: slopes are relative to the geometric shading frame (t = +X along +u, b = +Y,
-// n = +Z), slope (x, y) <-> microfacet normal normalize(-x, -y, 1) (materials/height_field.h).
+// n = +Z), slope (x, y) <-> microfacet normal normalize(-x, -y, 1) (core/models/height_field.h).
 // Masking is Smith's for the shifted Gaussian: along the azimuth of a direction w, the slopes
 // are Gaussian with mean mu_w and deviation sigma_w, and
 //   Lambda(w) = Lambda_Beckmann(a),  a = (cot(theta_w) - mu_w) / (sqrt(2) sigma_w),
@@ -17,11 +17,11 @@
 // the mean surface). Lambda_Beckmann uses Walter's rational approximation unless stated.
 // Specular: f = F(v.h) D(h) G1(v) G1(l) / (4 (n.v)(n.l)) with the geometric n, so that the
 // average of f over fine texels is f with the averaged distribution (up to the masking terms).
-#include "env/cubemap.h"
-#include "env/environment.h"
-#include "frame.h"
-#include "image/image.h"
-#include "lights/light.h"
+#include "core/env/cubemap.h"
+#include "core/env/environment.h"
+#include "core/frame.h"
+#include "core/image/image.h"
+#include "core/lights/light.h"
 
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>

@@ -1,6 +1,6 @@
-#include "lights/light.h"
+#include "core/lights/light.h"
 
-#include "error.h"
+#include "core/error.h"
 
 #include <cctype>
 #include <cerrno>

@@ -1,9 +1,9 @@
 #pragma once
-// Point and directional lights (DESIGN.md, source 2) and the sum every lit model evaluates:
+// Point and directional lights (docs/METHOD.md, source 2) and the sum every lit model evaluates:
 // radiance = sum over lights of term(v, l) * E_light, where E_light is the irradiance the light
 // delivers on a surface facing it and term(v, l) is the model's reflected radiance per unit of
 // that irradiance (for a BRDF: f(v, l) (n.l)+).
-#include "frame.h"
+#include "core/frame.h"
 
 #include <algorithm>
 #include <glm/vec3.hpp>

@@ -1,7 +1,7 @@
-#include "lut/lut.h"
+#include "core/lut/lut.h"
 
-#include "error.h"
-#include "sampling/hammersley.h"
+#include "core/error.h"
+#include "core/sampling/hammersley.h"
 
 #include <algorithm>
 #include <atomic>

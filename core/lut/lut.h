@@ -1,8 +1,8 @@
 #pragma once
-// Lookup tables of the AS method (DESIGN.md, source 1), float, baked on all cores,
+// Lookup tables of the AS method (docs/METHOD.md, source 1), float, baked on all cores,
 // deterministic (same inputs, same bits, whatever the thread count), cached by their inputs.
-#include "brdf/ashikhmin_shirley.h"
-#include "error.h"
+#include "core/brdf/ashikhmin_shirley.h"
+#include "core/error.h"
 
 #include <atomic>
 #include <cstdint>

@@ -1,4 +1,4 @@
-#include "lut/lut_cache.h"
+#include "core/lut/lut_cache.h"
 
 #include <OpenImageIO/imageio.h>
 #include <algorithm>

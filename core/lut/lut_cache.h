@@ -2,7 +2,7 @@
 // Memory + disk cache of baked LUTs keyed by their inputs. Disk: $XDG_CACHE_HOME/aniso
 // (or ~/.cache/aniso), EXR files written atomically; a corrupt or foreign file is ignored and
 // re-baked. Thread-safe. Asking twice for the same inputs costs a map lookup.
-#include "lut/lut.h"
+#include "core/lut/lut.h"
 
 #include <cstddef>
 #include <cstdint>

@@ -1,7 +1,7 @@
-#include "maps/map_files.h"
+#include "core/maps/map_files.h"
 
-#include "error.h"
-#include "maps/tpr_map.h"
+#include "core/error.h"
+#include "core/maps/tpr_map.h"
 
 #include <filesystem>
 #include <utility>

@@ -1,7 +1,7 @@
 #pragma once
 // Material maps read from files (or, for TPR, written as a pattern), decoded the way the
 // renderer takes them. Shared by `aniso render` and the window, so both read a file alike.
-#include "image/image.h"
+#include "core/image/image.h"
 
 #include <string>
 

@@ -1,6 +1,6 @@
-#include "maps/quaternion_map.h"
+#include "core/maps/quaternion_map.h"
 
-#include "error.h"
+#include "core/error.h"
 
 #include <algorithm>
 #include <cmath>

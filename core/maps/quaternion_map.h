@@ -1,8 +1,8 @@
 #pragma once
-// Quaternion maps from normal maps (DESIGN.md, source 1): n' = (x, y, z) gives
+// Quaternion maps from normal maps (docs/METHOD.md, source 1): n' = (x, y, z) gives
 // a = sqrt((z+1)/2), b = y/(2a), c = -x/(2a); the frame t', b', n' follows from (a, b, c).
-#include "frame.h"
-#include "image/image.h"
+#include "core/frame.h"
+#include "core/image/image.h"
 
 #include <cstddef>
 #include <glm/vec3.hpp>
@@ -32,7 +32,7 @@ struct QuaternionBakeStats
 // scaled by sqrt((1-z)/2), equal to (y, -x)/(2a) for unit normals but exact as z -> -1;
 // exactly (0, 0, -1) gives (0, 1, 0), the half turn about t.
 glm::dvec3 quaternionFromNormal(const glm::dvec3& n);
-// The rotated frame of (a, b, c): t', b', n' per DESIGN.md.
+// The rotated frame of (a, b, c): t', b', n' per docs/METHOD.md.
 Frame frameFromQuaternion(const glm::dvec3& abc);
 
 // Normal map: integer formats are decoded n = 2 c - 1, float formats are taken as stored.

@@ -1,6 +1,6 @@
-#include "maps/tpr_map.h"
+#include "core/maps/tpr_map.h"
 
-#include "error.h"
+#include "core/error.h"
 
 #include <algorithm>
 #include <cctype>

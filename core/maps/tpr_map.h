@@ -1,7 +1,7 @@
 #pragma once
-// Tangent-plane rotation (TPR) maps (DESIGN.md, source 1): two channels (x, y), the rotated
+// Tangent-plane rotation (TPR) maps (docs/METHOD.md, source 1): two channels (x, y), the rotated
 // tangent in the tangent plane of the (quaternion) frame; b = J t (90 degree rotation).
-#include "image/image.h"
+#include "core/image/image.h"
 
 #include <glm/vec2.hpp>
 #include <string>

@@ -1,12 +1,12 @@
-#include "microstructure/microstructure.h"
+#include "core/microstructure/microstructure.h"
 
-#include "brdf/ashikhmin_shirley.h"
-#include "brdf/blinn_phong_aniso.h"
-#include "brdf/ggx.h"
-#include "brdf/sv_common.h"
-#include "error.h"
-#include "materials/height_field.h"
-#include "materials/texture_sampling.h"
+#include "core/brdf/ashikhmin_shirley.h"
+#include "core/brdf/blinn_phong_aniso.h"
+#include "core/brdf/ggx.h"
+#include "core/brdf/sv_common.h"
+#include "core/error.h"
+#include "core/models/height_field.h"
+#include "core/models/texture_sampling.h"
 
 #include <algorithm>
 #include <array>

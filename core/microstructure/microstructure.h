@@ -1,5 +1,5 @@
 #pragma once
-// Small-scale microstructure (DESIGN.md, source 4): a small repeating structure (albedo, normal,
+// Small-scale microstructure (docs/METHOD.md, source 4): a small repeating structure (albedo, normal,
 // height) far finer than a pixel, shaded by sampling it K x K times inside each pixel's footprint
 // and averaging. Each sample finds the structure point it sees (normal mapping, parallax
 // mapping or parallax occlusion mapping), optionally tests its shadowing towards each light, and
@@ -9,9 +9,9 @@
 // Structure space: one tile is [0, 1)^2 (x along the tangent t, y along b) and repeats; heights
 // h in [0, 1] put a point depth * (1 - h) below the mesh surface (h = 1 is the top, in tile
 // widths), so normals follow from the slopes depth * grad(h). Image row 0 is y = 1.
-#include "frame.h"
-#include "image/image.h"
-#include "lights/light.h"
+#include "core/frame.h"
+#include "core/image/image.h"
+#include "core/lights/light.h"
 
 #include <cstdint>
 #include <glm/vec2.hpp>

@@ -1,6 +1,6 @@
-#include "quality/adaptive_quality.h"
+#include "core/quality/adaptive_quality.h"
 
-#include "error.h"
+#include "core/error.h"
 
 #include <algorithm>
 #include <cmath>

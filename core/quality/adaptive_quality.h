@@ -7,7 +7,7 @@
 // rough ones more; filtering lowers a for rough lobes. Between the measured lobes, log a and p
 // are interpolated in the logarithm of the lobe's mean exponent sqrt((n_u + 1)(n_v + 1)); beyond
 // them the nearest measured lobe is used. GL-free, so the docks and the CLI share it.
-#include "brdf/ashikhmin_shirley.h"
+#include "core/brdf/ashikhmin_shirley.h"
 
 namespace aniso
 {

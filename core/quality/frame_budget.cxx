@@ -1,4 +1,4 @@
-#include "quality/frame_budget.h"
+#include "core/quality/frame_budget.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,7 +1,7 @@
-#include "reference/mc_estimator.h"
+#include "core/reference/mc_estimator.h"
 
-#include "error.h"
-#include "sampling/hammersley.h"
+#include "core/error.h"
+#include "core/sampling/hammersley.h"
 
 #include <algorithm>
 #include <cmath>

@@ -5,11 +5,11 @@
 // Points are an N-point Hammersley set under a Cranley-Patterson rotation: with a uniformly
 // random shift every point is uniform, so each estimate is unbiased, and the spread over shifts
 // is the estimator's error at that N.
-#include "brdf/ashikhmin_shirley.h"
-#include "brdf/ggx.h"
-#include "env/env_sampling.h"
-#include "env/environment.h"
-#include "frame.h"
+#include "core/brdf/ashikhmin_shirley.h"
+#include "core/brdf/ggx.h"
+#include "core/env/env_sampling.h"
+#include "core/env/environment.h"
+#include "core/frame.h"
 
 #include <cstdint>
 #include <glm/vec2.hpp>

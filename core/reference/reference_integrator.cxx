@@ -1,8 +1,8 @@
-#include "reference/reference_integrator.h"
+#include "core/reference/reference_integrator.h"
 
-#include "env/parallel.h"
-#include "env/quadrature.h"
-#include "error.h"
+#include "core/env/parallel.h"
+#include "core/env/quadrature.h"
+#include "core/error.h"
 
 #include <algorithm>
 #include <array>

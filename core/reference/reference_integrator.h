@@ -5,11 +5,11 @@
 // deterministically over the half-vector hemisphere with a change of variables adapted to the
 // lobe width, and doubles the resolution until three successive resolutions agree to the
 // requested precision.
-#include "brdf/ashikhmin_shirley.h"
-#include "brdf/ggx.h"
-#include "env/environment.h"
-#include "env/sun_sky.h"
-#include "frame.h"
+#include "core/brdf/ashikhmin_shirley.h"
+#include "core/brdf/ggx.h"
+#include "core/env/environment.h"
+#include "core/env/sun_sky.h"
+#include "core/frame.h"
 
 #include <cstdint>
 #include <glm/vec3.hpp>

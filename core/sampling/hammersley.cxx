@@ -1,6 +1,6 @@
-#include "sampling/hammersley.h"
+#include "core/sampling/hammersley.h"
 
-#include "error.h"
+#include "core/error.h"
 
 #include <cmath>
 #include <limits>

@@ -1,13 +1,13 @@
 // `aniso bake` end to end: runs the built executable, reads back what it wrote and compares it
 // with the core functions called directly here (so the file must round-trip the bake), and with
 // analytic forms where the header states one.
-#include "brdf/ashikhmin_shirley.h"
-#include "cli_runner.h"
-#include "env/cubemap.h"
-#include "env/environment.h"
-#include "image/image.h"
-#include "lut/lut.h"
-#include "maps/quaternion_map.h"
+#include "core/brdf/ashikhmin_shirley.h"
+#include "tests/app/cli_runner.h"
+#include "core/env/cubemap.h"
+#include "core/env/environment.h"
+#include "core/image/image.h"
+#include "core/lut/lut.h"
+#include "core/maps/quaternion_map.h"
 
 #include <array>
 #include <cmath>

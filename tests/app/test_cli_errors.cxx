@@ -3,11 +3,11 @@
 // Most cases call the bake command in-process through the same error reporting main() uses
 // (each launch of the executable costs the dynamic loading of OpenImageIO's dependencies); the
 // executable itself is run for the top-level command line and one case of each exit code.
-#include "bake_command.h"
-#include "cli.h"
-#include "cli_runner.h"
-#include "image/image.h"
-#include "material/parameters.h"
+#include "app/bake_command.h"
+#include "app/cli.h"
+#include "tests/app/cli_runner.h"
+#include "core/image/image.h"
+#include "core/parameters/parameters.h"
 
 #include <fstream>
 #include <gtest/gtest.h>

@@ -7,12 +7,12 @@
 //     a single frame uses) at the chosen N, on points of the unit sphere seen from -Y under the
 //     built-in studio, has a relative L2 error against the reference integrator within a factor
 //     2.5 of the target (measured: 0.5 to 2 times).
-#include "env/environment.h"
-#include "error.h"
-#include "frame.h"
-#include "quality/adaptive_quality.h"
-#include "reference/mc_estimator.h"
-#include "reference/reference_integrator.h"
+#include "core/env/environment.h"
+#include "core/error.h"
+#include "core/frame.h"
+#include "core/quality/adaptive_quality.h"
+#include "core/reference/mc_estimator.h"
+#include "core/reference/reference_integrator.h"
 
 #include <cmath>
 #include <glm/geometric.hpp>

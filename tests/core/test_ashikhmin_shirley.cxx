@@ -1,9 +1,9 @@
 // The Ashikhmin-Shirley model: normalisation, sampling, inversion, reciprocity, energy and
 // robustness. References are deterministic quadrature of the densities (never the sampler),
-// the closed forms of DESIGN.md, and analytic albedos.
-#include "brdf/ashikhmin_shirley.h"
-#include "chi_square.h"
-#include "error.h"
+// the closed forms of docs/METHOD.md, and analytic albedos.
+#include "core/brdf/ashikhmin_shirley.h"
+#include "tests/core/chi_square.h"
+#include "core/error.h"
 
 #include <algorithm>
 #include <array>
@@ -155,7 +155,7 @@ double integrateUpperHemisphere(const G& g, double tolerance)
 
 // ---- Independent forms of the design formulas -------------------------------------------------
 
-// e(phi) = n_u cos^2 phi + n_v sin^2 phi (DESIGN.md, with t.h = sin(theta) cos(phi), etc.).
+// e(phi) = n_u cos^2 phi + n_v sin^2 phi (docs/METHOD.md, with t.h = sin(theta) cos(phi), etc.).
 double exponentAt(const AsLobe& lobe, double phi)
 {
   const double c = std::cos(phi);
@@ -202,7 +202,7 @@ const std::vector<AsLobe> kStressLobes = []
 }();
 } // namespace
 
-// 1. p_h integrates to 1 over the hemisphere (reference: the normalisation stated in DESIGN.md),
+// 1. p_h integrates to 1 over the hemisphere (reference: the normalisation stated in docs/METHOD.md),
 // by adaptive Gauss-Kronrod quadrature in (phi, -ln(1 - cos theta)); no sampling involved.
 TEST(AshikhminShirley, HalfVectorPdfIntegratesToOne)
 {
@@ -354,7 +354,7 @@ TEST(AshikhminShirley, SamplerMatchesPdfChiSquare)
   }
 }
 
-// 3a. The sampler is the construction of DESIGN.md: phi = atan(A tan(pi u / 2)) mirrored into the
+// 3a. The sampler is the construction of docs/METHOD.md: phi = atan(A tan(pi u / 2)) mirrored into the
 // quadrants, cos theta = (1 - xi2)^(1/(e+1)), here evaluated directly with tan and pow away from
 // the edges where those forms are exact enough.
 TEST(AshikhminShirley, SamplerFollowsTheDesignFormulas)
@@ -506,7 +506,7 @@ TEST(AshikhminShirley, InverseRoundTrips)
 }
 
 // 4a. Reciprocity f_s(v, l) = f_s(l, v), and p_l = p_h(h) / (4 v.h) with h = (v + l)/|v + l|
-// (the Jacobian of the reflection, DESIGN.md).
+// (the Jacobian of the reflection, docs/METHOD.md).
 TEST(AshikhminShirley, ReciprocityAndLightPdf)
 {
   std::mt19937_64 rng(11);
@@ -529,7 +529,7 @@ TEST(AshikhminShirley, ReciprocityAndLightPdf)
       const double pdf = aniso::pdfLight(lobe, v, l);
       ASSERT_NEAR(pdf, expectedPdf, 1e-12 * std::max(1.0, expectedPdf)) << describe(lobe);
 
-      // f_s itself from the formula of DESIGN.md, with Schlick's Fresnel written out.
+      // f_s itself from the formula of docs/METHOD.md, with Schlick's Fresnel written out.
       const double vh = glm::dot(v, h);
       const double fresnelWeight = std::pow(1.0 - vh, 5.0);
       const double ph = aniso::pdfHalfVector(lobe, h);

@@ -3,10 +3,10 @@
 // mean of level 0 (a 2x2 box filter keeps it), and SH9 irradiance against closed forms for
 // band-limited radiance and against the brute-force irradiance quadrature of the reference
 // integrator for the studio.
-#include "env/cubemap.h"
-#include "env/environment.h"
-#include "error.h"
-#include "reference/reference_integrator.h"
+#include "core/env/cubemap.h"
+#include "core/env/environment.h"
+#include "core/error.h"
+#include "core/reference/reference_integrator.h"
 
 #include <algorithm>
 #include <cmath>

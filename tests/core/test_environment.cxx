@@ -1,11 +1,11 @@
-// Environments: the equirectangular mapping against Blender's convention as DESIGN.md states it
+// Environments: the equirectangular mapping against Blender's convention as docs/METHOD.md states it
 // (axes land on known pixels), the bilinear equirect environment against hand-made images (one
 // lit texel comes back from exactly its direction), the loader against files written here with
 // OpenImageIO directly (and a real Blender HDRI when installed), and the studio's stated
 // properties (range, colours, no hard edge).
-#include "env/environment.h"
-#include "error.h"
-#include "image/image.h"
+#include "core/env/environment.h"
+#include "core/error.h"
+#include "core/image/image.h"
 
 #include <OpenImageIO/imageio.h>
 #include <algorithm>
@@ -101,7 +101,7 @@ public:
 };
 } // namespace
 
-// DESIGN.md: +X looks at the image centre, +Y at u = 0.25 (left of centre, as in Blender),
+// docs/METHOD.md: +X looks at the image centre, +Y at u = 0.25 (left of centre, as in Blender),
 // v = 1 is the zenith and v = 0 the nadir.
 TEST(EquirectMapping, AxesLandWhereBlenderPutsThem)
 {

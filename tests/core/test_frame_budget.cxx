@@ -15,7 +15,7 @@
 //   - under a changing load the plan keeps the largest recent measured/predicted ratio in hand
 //     (bounded), which shrinks the chosen count to what the slower machine meets (worked out by
 //     hand), and a frame overruns only beyond the budget's tolerance.
-#include "quality/frame_budget.h"
+#include "core/quality/frame_budget.h"
 
 #include <gtest/gtest.h>
 #include <limits>

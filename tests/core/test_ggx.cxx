@@ -5,14 +5,14 @@
 // hand, visible-normal samples against their density (chi-square), the reference integral
 // against brute force over the light direction and never above 1 in the white furnace, and
 // finite values over the whole stress range.
-#include "brdf/ashikhmin_shirley.h"
-#include "brdf/ggx.h"
-#include "chi_square.h"
-#include "env/environment.h"
-#include "env/quadrature.h"
-#include "error.h"
-#include "frame.h"
-#include "reference/reference_integrator.h"
+#include "core/brdf/ashikhmin_shirley.h"
+#include "core/brdf/ggx.h"
+#include "tests/core/chi_square.h"
+#include "core/env/environment.h"
+#include "core/env/quadrature.h"
+#include "core/error.h"
+#include "core/frame.h"
+#include "core/reference/reference_integrator.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,7 +1,7 @@
 // Hammersley points, Cranley-Patterson rotation and the R2 frame shifts, checked against
 // digit-by-digit definitions, exact binary values and stratification properties.
-#include "error.h"
-#include "sampling/hammersley.h"
+#include "core/error.h"
+#include "core/sampling/hammersley.h"
 
 #include <cmath>
 #include <cstdint>

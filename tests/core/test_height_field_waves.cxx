@@ -1,12 +1,12 @@
-// randomWaveHeight (materials/height_field.h), checked against what it states:
+// randomWaveHeight (core/models/height_field.h), checked against what it states:
 //   - each slope axis has the requested deviation (measured by central differences, which damp
 //     a wave of f cycles over W texels by sin(2 pi f / W) / (2 pi f / W): at most 1.5% here);
 //   - the slopes are close to Gaussian: the share within one deviation and the kurtosis are
 //     those of a normal distribution (0.683 and 3) within stated tolerances;
 //   - the map tiles: the step across the wrap-around seam is no larger than the steps inside;
 //   - invalid arguments are refused naming the subject.
-#include "error.h"
-#include "materials/height_field.h"
+#include "core/error.h"
+#include "core/models/height_field.h"
 
 #include <algorithm>
 #include <cmath>

@@ -2,8 +2,8 @@
 // independent reference), within each format's stated precision, and the failure paths: every
 // bad input gives an aniso::Error naming the file, and no failed write leaves a partial or
 // temporary file or replaces an existing one.
-#include "error.h"
-#include "image/image.h"
+#include "core/error.h"
+#include "core/image/image.h"
 
 #include <OpenImageIO/imageio.h>
 #include <algorithm>

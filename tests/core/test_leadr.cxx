@@ -5,13 +5,13 @@
 // expectation by product quadrature, the silhouette micronormal, and the purpose of it all: a
 // coarse level shaded with LEADR matches the supersampled shading of the fine texels it covers,
 // while the averaged normal of plain normal-map filtering does not.
-#include "env/cubemap.h"
-#include "env/environment.h"
-#include "env/quadrature.h"
-#include "error.h"
-#include "leadr/leadr.h"
-#include "materials/height_field.h"
-#include "test_models_quadrature.h"
+#include "core/env/cubemap.h"
+#include "core/env/environment.h"
+#include "core/env/quadrature.h"
+#include "core/error.h"
+#include "core/leadr/leadr.h"
+#include "core/models/height_field.h"
+#include "tests/core/test_models_quadrature.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,9 +1,9 @@
 // LUT bakers against independent references: a deterministic adaptive quadrature over the
 // half-vector hemisphere written here from the AS formulas (no sampling), the white-furnace
-// bound, the closed-form coordinate mapping of DESIGN.md, the raw p_h formula, a float->half
+// bound, the closed-form coordinate mapping of docs/METHOD.md, the raw p_h formula, a float->half
 // round trip, a stress grid of exponents and sizes, and bit-identity across runs and threads.
-#include "error.h"
-#include "lut/lut.h"
+#include "core/error.h"
+#include "core/lut/lut.h"
 
 #include <algorithm>
 #include <cmath>
@@ -174,7 +174,7 @@ V integrateOverHalfVectors(const AsLobe& lobe, const glm::dvec3& v, const F& int
   return stretched<V>(line, -1.0, 1.0, 0.0, widthC, tolerance);
 }
 
-// p_h straight from DESIGN.md: sqrt((n_u+1)(n_v+1))/(2 pi) (n.h)^((n_u (t.h)^2 + n_v (b.h)^2)
+// p_h straight from docs/METHOD.md: sqrt((n_u+1)(n_v+1))/(2 pi) (n.h)^((n_u (t.h)^2 + n_v (b.h)^2)
 // / (1 - (n.h)^2)), with the exponent's tangent-plane form at h = n.
 double rawPdf(const AsLobe& lobe, const glm::dvec3& h)
 {
@@ -230,7 +230,7 @@ const std::vector<int> kSampledRows = {0, 1, 2, 3, 5, 8, 13, 20, 32, 45, 63};
 
 // ---- Coordinates -------------------------------------------------------------------------------
 
-// brdfLutView follows DESIGN.md's inverse mapping and brdfLutCoords inverts it.
+// brdfLutView follows docs/METHOD.md's inverse mapping and brdfLutCoords inverts it.
 TEST(BrdfLutCoords, FollowDesignMappingAndInvert)
 {
   for (double u : {0.0, 0.1, 0.25, 0.5, 0.77, 1.0})

@@ -2,9 +2,9 @@
 // files (checked independently through readImage) with values identical to a fresh bake,
 // damaged, truncated, foreign or renamed files are re-baked and overwritten, an unusable
 // directory degrades to memory, and concurrent requests for one key bake once.
-#include "error.h"
-#include "image/image.h"
-#include "lut/lut_cache.h"
+#include "core/error.h"
+#include "core/image/image.h"
+#include "core/lut/lut_cache.h"
 
 #include <atomic>
 #include <chrono>

@@ -2,8 +2,8 @@
 // stale): a set flag stops the bakers with BakeCancelled, the cache stores nothing for it, and
 // a caller waiting for the same LUT from a cancelled bake still gets it, bit-identical to a
 // direct bake (the reference).
-#include "lut/lut.h"
-#include "lut/lut_cache.h"
+#include "core/lut/lut.h"
+#include "core/lut/lut_cache.h"
 
 #include <atomic>
 #include <chrono>

@@ -2,9 +2,9 @@
 // against the byte values written, c = byte / 255), a float file's as stored; a TPR text that
 // names a file reads it (one channel: angles, (cos pi a, sin pi a)), one that does not is a
 // pattern, and one that is neither gives an error naming the subject and the text.
-#include "error.h"
-#include "image/image.h"
-#include "maps/map_files.h"
+#include "core/error.h"
+#include "core/image/image.h"
+#include "core/maps/map_files.h"
 
 #include <cmath>
 #include <cstdio>

@@ -5,15 +5,15 @@
 // reference within its statistical error); MIS cuts the error of a rough lobe next to the sun;
 // everything stays finite over the stress grid. The sun-sky reference itself is checked first,
 // against the small-disc limit and a brute-force quadrature over the disc.
-#include "brdf/ashikhmin_shirley.h"
-#include "brdf/ggx.h"
-#include "env/env_sampling.h"
-#include "env/environment.h"
-#include "env/sun_sky.h"
-#include "error.h"
-#include "frame.h"
-#include "reference/mc_estimator.h"
-#include "reference/reference_integrator.h"
+#include "core/brdf/ashikhmin_shirley.h"
+#include "core/brdf/ggx.h"
+#include "core/env/env_sampling.h"
+#include "core/env/environment.h"
+#include "core/env/sun_sky.h"
+#include "core/error.h"
+#include "core/frame.h"
+#include "core/reference/mc_estimator.h"
+#include "core/reference/reference_integrator.h"
 
 #include <algorithm>
 #include <cmath>

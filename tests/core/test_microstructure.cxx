@@ -4,9 +4,9 @@
 // a sweep of directional lights integrating over the hemisphere, one light per quadrature node),
 // and convergence of the K x K pixel sampling to a fine grid and to the analytic two-facet
 // average of V-grooves.
-#include "env/quadrature.h"
-#include "error.h"
-#include "microstructure/microstructure.h"
+#include "core/env/quadrature.h"
+#include "core/error.h"
+#include "core/microstructure/microstructure.h"
 
 #include <algorithm>
 #include <cmath>

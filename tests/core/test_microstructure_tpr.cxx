@@ -9,8 +9,8 @@
 //  - rotational symmetry: a point at angle phi lit and seen from directions turned by phi about
 //    the disk's normal (its footprint turned likewise) shades like the point at angle 0, while
 //    the unturned structure (straight grooves) breaks that symmetry.
-#include "maps/tpr_map.h"
-#include "microstructure/microstructure.h"
+#include "core/maps/tpr_map.h"
+#include "core/microstructure/microstructure.h"
 
 #include <cmath>
 #include <cstdio>

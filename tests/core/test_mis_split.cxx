@@ -3,13 +3,13 @@
 // reference integrator's value within a statistical bound), it leaves a soft or uniform
 // environment to the lobe, and next to a sun it gives sharp lobes the environment samples that
 // cut their error.
-#include "brdf/ashikhmin_shirley.h"
-#include "env/env_sampling.h"
-#include "env/environment.h"
-#include "env/sun_sky.h"
-#include "frame.h"
-#include "reference/mc_estimator.h"
-#include "reference/reference_integrator.h"
+#include "core/brdf/ashikhmin_shirley.h"
+#include "core/env/env_sampling.h"
+#include "core/env/environment.h"
+#include "core/env/sun_sky.h"
+#include "core/frame.h"
+#include "core/reference/mc_estimator.h"
+#include "core/reference/reference_integrator.h"
 
 #include <cmath>
 #include <glm/geometric.hpp>

@@ -2,9 +2,9 @@
 // evalSpecular x E x (n.l) computed by hand, the inverse-square falloff, the coupled diffuse
 // term's albedo against its closed form, reciprocity and energy. References: the specular
 // function of brdf/ashikhmin_shirley.h (tested on its own), closed forms, sphere quadrature.
-#include "brdf/ashikhmin_shirley_lights.h"
-#include "error.h"
-#include "test_models_quadrature.h"
+#include "core/brdf/ashikhmin_shirley_lights.h"
+#include "core/error.h"
+#include "tests/core/test_models_quadrature.h"
 
 #include <algorithm>
 #include <cmath>

@@ -2,9 +2,9 @@
 // Blinn-Phong, the exponent read from the t/alpha_x, b/alpha_y textures, reciprocity, energy and
 // finiteness. References: quadrature over the sphere (test_models_quadrature.h), closed forms of
 // the isotropic model written out here, and world-space vectors built independently.
-#include "brdf/blinn_phong_aniso.h"
-#include "error.h"
-#include "test_models_quadrature.h"
+#include "core/brdf/blinn_phong_aniso.h"
+#include "core/error.h"
+#include "tests/core/test_models_quadrature.h"
 
 #include <algorithm>
 #include <cmath>

@@ -5,11 +5,11 @@
 // is, Banks diffuse and Heidrich-Seidel are not), the customary shading forms written out in
 // world space, the Heidrich-Seidel specular albedo against a one-dimensional integral and its
 // bound, and finiteness.
-#include "brdf/banks.h"
-#include "brdf/heidrich_seidel.h"
-#include "env/quadrature.h"
-#include "error.h"
-#include "test_models_quadrature.h"
+#include "core/brdf/banks.h"
+#include "core/brdf/heidrich_seidel.h"
+#include "core/env/quadrature.h"
+#include "core/error.h"
+#include "tests/core/test_models_quadrature.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,7 +1,7 @@
 // Lights: parsing of the --light syntax (values and errors), the inverse-square falloff of point
 // lights, and the light sum against sums written out by hand.
-#include "error.h"
-#include "lights/light.h"
+#include "core/error.h"
+#include "core/lights/light.h"
 
 #include <cmath>
 #include <glm/geometric.hpp>

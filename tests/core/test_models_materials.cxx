@@ -3,10 +3,10 @@
 // value ranges of every built-in map, the intended structure (scratches along both axes and
 // carved, veins raised and darker, maps that tile), the brushing directions on the built-in
 // sphere's parametrisation, and the per-model parameter mappings.
-#include "error.h"
-#include "materials/height_field.h"
-#include "materials/samples.h"
-#include "materials/sv_material.h"
+#include "core/error.h"
+#include "core/models/height_field.h"
+#include "core/models/samples.h"
+#include "core/models/sv_material.h"
 
 #include <algorithm>
 #include <cmath>

@@ -4,7 +4,7 @@
 // Gauss-Legendre in the polar angle around a chosen axis (optionally graded towards the axis,
 // where narrow lobes live) times equally spaced azimuths (spectrally accurate for smooth periodic
 // integrands). It shares no code with the models it checks.
-#include "env/quadrature.h"
+#include "core/env/quadrature.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,11 +1,11 @@
-// The shading model registry (materials/models.h): names are unique and found again, unknown
+// The shading model registry (core/models/models.h): names are unique and found again, unknown
 // names are refused with the list of known ones, lit models round-trip through their names,
 // sample materials are the ones samples.h makes, uniformTexel inverts toAshikhminShirley's
 // exponent mapping, and shadeLitModel's factored Ward equals the direct eq. 5b evaluation
 // (the same function of the half vector for unit vectors).
-#include "error.h"
-#include "materials/models.h"
-#include "materials/samples.h"
+#include "core/error.h"
+#include "core/models/models.h"
+#include "core/models/samples.h"
 
 #include <cmath>
 #include <glm/geometric.hpp>

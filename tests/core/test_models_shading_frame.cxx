@@ -1,7 +1,7 @@
 // Per-pixel shading frames: renormalisation of interpolated vectors, the minimal tilt by a map
 // normal, the turn by a map tangent, and degenerate inputs. References are vectors worked out by
 // hand (rotations about known axes) and orthonormality identities.
-#include "brdf/shading_frame.h"
+#include "core/brdf/shading_frame.h"
 
 #include <cmath>
 #include <glm/geometric.hpp>

@@ -2,9 +2,9 @@
 // against the direct formula in the half vector's angles, the isotropic closed form, the two
 // forms of the Gaussian factor (eq. 5a and 5b) against each other, reciprocity, energy and
 // finiteness. References: closed forms written out here and quadrature over the sphere.
-#include "brdf/ward.h"
-#include "error.h"
-#include "test_models_quadrature.h"
+#include "core/brdf/ward.h"
+#include "core/error.h"
+#include "tests/core/test_models_quadrature.h"
 
 #include <algorithm>
 #include <cmath>

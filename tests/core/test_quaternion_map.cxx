@@ -2,9 +2,9 @@
 // carries +z to the input normal and leaves its axis (b, c, 0) fixed (the shortest arc), checked
 // over a dense sphere of normals down to the antipode; baked maps of an analytic dome reproduce
 // the dome's normals within the file format's precision; texel counts match hand-made inputs.
-#include "error.h"
-#include "image/image.h"
-#include "maps/quaternion_map.h"
+#include "core/error.h"
+#include "core/image/image.h"
+#include "core/maps/quaternion_map.h"
 
 #include <cmath>
 #include <filesystem>
@@ -92,7 +92,7 @@ TEST(QuaternionMap, FramesAreRotationsToTheNormalOverTheSphere)
   expectProperRotationTo({0.0, -1.0, 0.0}, 1e-15);
 }
 
-// Away from the antipode the stored (a, b, c) equals DESIGN.md's formulas evaluated literally.
+// Away from the antipode the stored (a, b, c) equals docs/METHOD.md's formulas evaluated literally.
 TEST(QuaternionMap, MatchesTheDesignFormulas)
 {
   std::mt19937 random(3);

@@ -4,10 +4,10 @@
 // out here, and the mirror limit F0 L(reflect(v)). Plus its own promise: the requested tolerance
 // is met for lobes from (10, 10) to (1e6, 1e6), and results stay finite and within [0, max L]
 // over the whole stress grid of exponents and views down to n.v = 1e-6.
-#include "env/environment.h"
-#include "error.h"
-#include "frame.h"
-#include "reference/reference_integrator.h"
+#include "core/env/environment.h"
+#include "core/error.h"
+#include "core/frame.h"
+#include "core/reference/reference_integrator.h"
 
 #include <algorithm>
 #include <cmath>

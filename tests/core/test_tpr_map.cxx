@@ -3,9 +3,9 @@
 // requested angle, circular orthogonal to the radius vector, radial along it, spiral at the pitch
 // angle to the circle, wave (cos pi v, sin pi v); angle images round-trip through atan2; every
 // malformed pattern text gives an aniso::Error naming it.
-#include "error.h"
-#include "image/image.h"
-#include "maps/tpr_map.h"
+#include "core/error.h"
+#include "core/image/image.h"
+#include "core/maps/tpr_map.h"
 
 #include <cmath>
 #include <glm/geometric.hpp>

@@ -2,10 +2,10 @@
 // formulas (computed here independently), a slider drag sets the model and is one undo step,
 // spin boxes set exact values, the link keeps n_v / n_u, and the metal presets set and
 // recognise their F0.
-#include "MaterialDock.h"
-#include "ParameterControls.h"
-#include "SceneEditor.h"
-#include "SliderMapping.h"
+#include "widgets/MaterialDock.h"
+#include "widgets/ParameterControls.h"
+#include "scene/SceneEditor.h"
+#include "widgets/SliderMapping.h"
 
 #include <QCheckBox>
 #include <QComboBox>

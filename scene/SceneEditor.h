@@ -1,0 +1,50 @@
+#pragma once
+// Undoable edits of a SceneModel: every change a dock makes goes through here as a QUndoCommand,
+// so Edit > Undo steps back through parameter changes. A slider drag is one step: its edits
+// carry the same drag id and merge (QUndoCommand::mergeWith) into one command.
+#include "scene/SceneModel.h"
+
+#include <QObject>
+#include <string_view>
+
+class QUndoStack;
+
+namespace aniso
+{
+class SceneEditor : public QObject
+{
+  Q_OBJECT
+
+public:
+  explicit SceneEditor(SceneModel* model, QObject* parent = nullptr);
+  ~SceneEditor() override;
+
+  SceneModel* model() const { return model_; }
+  QUndoStack* undoStack() const { return stack_; }
+
+  // Checks every value, then pushes one command setting them all (a linked n_u, n_v move is one
+  // step). Values equal to the current ones are left out; nothing is pushed when nothing
+  // changes. Consecutive edits with the same non-zero dragId and the same keys merge into one
+  // command. Throws aniso::Error "KEY: reason" and pushes nothing when a value is invalid.
+  void edit(const SceneModel::Values& changes, int dragId = 0);
+  void edit(std::string_view key, const ParameterValue& value, int dragId = 0);
+
+  // A new id for a continuous gesture (a slider drag), never 0.
+  int beginDrag();
+
+  // Replaces every value and the camera in one undoable step named TEXT (opening a session).
+  // Checked first: throws aniso::Error and leaves the scene and the stack as they were.
+  void replaceScene(const SceneModel::Values& values, const CameraState& camera,
+                    const QString& text);
+
+signals:
+  // An undo or redo that could not be applied (an asset that no longer loads); the scene keeps
+  // its values.
+  void errorOccurred(const QString& message);
+
+private:
+  SceneModel* model_;
+  QUndoStack* stack_;
+  int lastDrag_ = 0;
+};
+} // namespace aniso

@@ -1,0 +1,173 @@
+// `aniso render` end to end: runs the built executable.
+//  - Bad command lines and bad inputs end with exactly one line "aniso: SUBJECT: reason" naming
+//    the argument or the file (exit 2 for usage, 1 for run-time failures) and write nothing;
+//    a degenerate mesh is refused, not rendered or crashed on.
+//  - --help lists every option of the issue with its help text.
+//  - An EXR holds linear radiance: for the built-in sphere with F0 = 1, the centre of the image
+//    agrees with the CPU reference integrator for the same lobe, view and pixels; PNGs are 8-bit
+//    RGB, or RGBA with --background none; --time reports the frame time.
+#include "tests/app/cli_runner.h"
+#include "core/env/environment.h"
+#include "core/frame.h"
+#include "core/image/image.h"
+#include "core/reference/reference_integrator.h"
+#include "tests/vtkpasses/render/render_test_helpers.h"
+
+#include <cmath>
+#include <fstream>
+#include <gtest/gtest.h>
+#include <string>
+#include <vector>
+
+namespace
+{
+using aniso_test::Outcome;
+using RenderCli = aniso_test::CliTest;
+
+// Exactly one line on stderr, starting with "aniso: SUBJECT:".
+void expectOneLineError(const Outcome& r, int exitCode, const std::string& subject)
+{
+  EXPECT_EQ(r.exitCode, exitCode) << r.err;
+  EXPECT_EQ(r.err.rfind("aniso: " + subject + ":", 0), 0u) << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+}
+
+TEST_F(RenderCli, HelpListsEveryOption)
+{
+  const Outcome r = run({"render", "--help"});
+  EXPECT_EQ(r.exitCode, 0);
+  for (const char* option :
+       {"--builtin",      "--env",        "--env-rotation",   "--nu",       "--nv",
+        "--f0",           "--albedo",     "--method",         "--filtered", "--samples",
+        "--frames",       "--normal-map", "--quaternion-map", "--tpr",      "--height-map",
+        "--height-scale", "--tangents",   "--size",           "--view",     "--azimuth",
+        "--elevation",    "--ortho",      "--background",     "--exposure", "--output",
+        "--time"})
+  {
+    EXPECT_NE(r.out.find(std::string(option) + " "), std::string::npos) << option;
+  }
+}
+
+TEST_F(RenderCli, UsageErrorsNameTheArgument)
+{
+  expectOneLineError(run({"render", "-o", path("a.png").string()}), 2, "MESH");
+  expectOneLineError(run({"render", "--builtin", "cube", "-o", path("a.png").string()}), 2,
+                     "--builtin");
+  expectOneLineError(run({"render", "--builtin", "sphere", "-o", path("a.jpg").string()}), 2,
+                     path("a.jpg").string());
+  expectOneLineError(
+      run({"render", "--builtin", "sphere", "--size", "0x4", "-o", path("a.png").string()}), 2,
+      "--size");
+  expectOneLineError(
+      run({"render", "--builtin", "sphere", "--nu", "-3", "-o", path("a.png").string()}), 2,
+      "--nu");
+  expectOneLineError(
+      run({"render", "--builtin", "sphere", "--view", "up", "-o", path("a.png").string()}), 2,
+      "--view");
+  expectOneLineError(
+      run({"render", "--builtin", "sphere", "--background", "blue", "-o", path("a.png").string()}),
+      2, "--background");
+  expectOneLineError(
+      run({"render", "--builtin", "sphere", "--ortho=1", "-o", path("a.png").string()}), 2,
+      "--ortho");
+  EXPECT_TRUE(files().empty());
+}
+
+TEST_F(RenderCli, InputErrorsNameTheFile)
+{
+  const std::string missing = path("missing.obj").string();
+  expectOneLineError(run({"render", missing, "-o", path("a.png").string()}), 1, missing);
+
+  // Every triangle has zero area: nothing is left to render.
+  const std::string flat = path("flat.obj").string();
+  std::ofstream(flat) << "v 0 0 0\nv 1 0 0\nv 2 0 0\nf 1 2 3\n";
+  expectOneLineError(run({"render", flat, "-o", path("a.png").string()}), 1, flat);
+
+  const std::string env = path("sky.exr").string();
+  expectOneLineError(
+      run({"render", "--builtin", "sphere", "--env", env, "-o", path("a.png").string()}), 1, env);
+  EXPECT_EQ(files(), (std::set<std::string>{"flat.obj"}));
+}
+
+TEST_F(RenderCli, ExrIsLinearRadianceThatMatchesTheReference)
+{
+  ANISO_REQUIRE_DISPLAY();
+  const std::string out = path("sphere.exr").string();
+  const Outcome r = run({"render", "--builtin",
+                         "sphere", "--nu",
+                         "2000",   "--nv",
+                         "200",    "--f0",
+                         "1",      "--method",
+                         "exact",  "--filtered",
+                         "off",    "--half-vectors",
+                         "shader", "--samples",
+                         "16",     "--frames",
+                         "16",     "--jitter",
+                         "off",    "--background",
+                         "none",   "--size",
+                         "40x40",  "-o",
+                         out});
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const aniso::Image image = aniso::readImage(out);
+  ASSERT_EQ(image.width, 40);
+  ASSERT_EQ(image.height, 40);
+  ASSERT_EQ(image.channels, 4);
+  EXPECT_EQ(aniso::test::nonFiniteValues(image), 0);
+
+  // The 8 x 8 pixels around the centre, averaged (the mean's sampling error is small).
+  const aniso::CameraPlacement camera =
+      aniso::placeCamera(aniso::ViewSettings{}, glm::dvec3(0.0), 1.0);
+  const aniso::StudioEnvironment env;
+  glm::dvec3 rendered(0.0);
+  glm::dvec3 expected(0.0);
+  for (int y = 16; y < 24; ++y)
+  {
+    for (int x = 16; x < 24; ++x)
+    {
+      const aniso::test::Ray ray = aniso::test::pixelRay(camera, x, y, 40, 40);
+      const glm::dvec3 n = *aniso::test::hitUnitSphere(ray);
+      const aniso::Frame frame = aniso::Frame::fromNormalTangent(n, {-n.y, n.x, 0.0});
+      expected +=
+          aniso::integrateSpecular({2000.0, 200.0}, glm::dvec3(1.0), frame, -ray.direction, env)
+              .value;
+      for (int c = 0; c < 3; ++c)
+      {
+        rendered[c] += image.at(x, y, c);
+      }
+      EXPECT_EQ(image.at(x, y, 3), 1.0f);
+    }
+  }
+  for (int c = 0; c < 3; ++c)
+  {
+    EXPECT_NEAR(rendered[c] / expected[c], 1.0, 0.02) << "channel " << c;
+  }
+  EXPECT_EQ(image.at(0, 0, 3), 0.0f); // a corner: background, no coverage
+}
+
+TEST_F(RenderCli, PngAndTimes)
+{
+  ANISO_REQUIRE_DISPLAY();
+  const std::string opaque = path("torus.png").string();
+  const Outcome r =
+      run({"render", "--builtin", "torus", "--size", "32x24", "--frames", "2", "--samples", "2",
+           "--azimuth", "30", "--elevation", "40", "--ortho", "--time", "-o", opaque});
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_NE(r.out.find("median frame"), std::string::npos) << r.out;
+  aniso::ImageInfo info;
+  const aniso::Image rgb = aniso::readImage(opaque, &info);
+  EXPECT_EQ(rgb.width, 32);
+  EXPECT_EQ(rgb.height, 24);
+  EXPECT_EQ(info.fileChannels, 3);
+  EXPECT_TRUE(info.integerFormat);
+
+  const std::string transparent = path("plate.png").string();
+  ASSERT_EQ(
+      run({"render", "--builtin", "plate", "--tpr", "circular", "--view", "+z", "--background",
+           "none", "--size", "24x24", "--frames", "1", "--samples", "2", "-o", transparent})
+          .exitCode,
+      0);
+  const aniso::Image rgba = aniso::readImage(transparent, &info);
+  EXPECT_EQ(info.fileChannels, 4);
+  EXPECT_EQ(rgba.at(12, 12, 3), 1.0f); // the plate fills the centre
+}
+} // namespace

@@ -1,0 +1,213 @@
+// SceneModel and SceneEditor: the model holds exactly the declared parameters with their
+// declared defaults, validates by the declared range and choices, signals each change once, and
+// the editor's undo stack steps back through changes, a drag being one step.
+#include "scene/SceneEditor.h"
+#include "scene/SceneModel.h"
+#include "core/error.h"
+
+#include <QSignalSpy>
+#include <QUndoStack>
+#include <QtTest>
+
+using aniso::colorValue;
+using aniso::numberValue;
+using aniso::SceneModel;
+using aniso::textValue;
+
+class TestSceneModel : public QObject
+{
+  Q_OBJECT
+
+private slots:
+  // Every declared parameter is a key, with the declared default (the declaration in
+  // core/parameters/parameters.cxx is the reference), and the assets default to "none".
+  void defaultsAreTheDeclaredOnes()
+  {
+    SceneModel model;
+    for (const aniso::ParameterSpec& spec : aniso::parameterSpecs())
+    {
+      QVERIFY(aniso::isSceneKey(spec.name));
+      QCOMPARE(model.value(spec.name), aniso::defaultParameterValue(spec));
+    }
+    QCOMPARE(model.real("nu"), 1000.0);
+    QCOMPARE(model.text("method"), std::string("exact"));
+    QCOMPARE(model.text("normal-map"), std::string());
+    QCOMPARE(model.text("mesh"), std::string("builtin:torus"));
+    QVERIFY(!model.camera().set);
+  }
+
+  // Out-of-range numbers, unknown choices, wrong types and unknown keys are refused with a
+  // message naming the key; the model keeps its value and emits nothing.
+  void invalidValuesAreRefusedAndChangeNothing()
+  {
+    SceneModel model;
+    QSignalSpy spy(&model, &SceneModel::valueChanged);
+    const auto refuses = [&](const char* key, const aniso::ParameterValue& v, const char* reason)
+    {
+      const aniso::ParameterValue before = model.value(key);
+      try
+      {
+        model.setValue(key, v);
+        QFAIL(qPrintable(QString("%1 accepted").arg(key)));
+      }
+      catch (const aniso::Error& e)
+      {
+        const std::string message = e.what();
+        QVERIFY2(message.rfind(std::string(key) + ": ", 0) == 0, e.what());
+        QVERIFY2(message.find(reason) != std::string::npos, e.what());
+      }
+      QCOMPARE(model.value(key), before);
+    };
+    refuses("nu", numberValue(-1.0), "out of range [0, 1e6]");
+    refuses("nv", numberValue(1e6 + 1.0), "out of range [0, 1e6]");
+    refuses("samples", numberValue(2.5), "is not an integer");
+    refuses("f0", colorValue(0.5, 1.5, 0.5), "out of range [0, 1]");
+    refuses("method", textValue("fast"), "'fast' is not one of exact, split-sum");
+    refuses("env", textValue(""), "empty value");
+    refuses("nu", textValue("5"), "a number carries text");
+    refuses("nu", colorValue(1.0, 2.0, 3.0), "a single number was expected");
+    refuses("cube-size", numberValue(100.0), "is not a power of two");
+    QCOMPARE(spy.count(), 0);
+    QVERIFY_EXCEPTION_THROWN(model.setValue("nope", numberValue(1.0)), aniso::Error);
+  }
+
+  // One signal per key that really changes; setting the same value again emits nothing.
+  void eachChangeIsSignalledOnce()
+  {
+    SceneModel model;
+    QSignalSpy spy(&model, &SceneModel::valueChanged);
+    model.setValue("nu", numberValue(20000.0));
+    QCOMPARE(spy.count(), 1);
+    QCOMPARE(spy.at(0).at(0).toString(), QString("nu"));
+    model.setValue("nu", numberValue(20000.0));
+    QCOMPARE(spy.count(), 1);
+    model.setValues({{"nu", numberValue(20000.0)},
+                     {"nv", numberValue(70.0)},
+                     {"f0", colorValue(1.0, 0.766, 0.336)}});
+    QCOMPARE(spy.count(), 3);
+    QCOMPARE(model.real("nv"), 70.0);
+    QCOMPARE(model.color("f0"), (std::array<double, 3>{1.0, 0.766, 0.336}));
+    QCOMPARE(model.integer("samples"), 16);
+  }
+
+  // setValues is all or nothing: one bad value leaves every other key as it was.
+  void setValuesIsAllOrNothing()
+  {
+    SceneModel model;
+    QSignalSpy spy(&model, &SceneModel::valueChanged);
+    QVERIFY_EXCEPTION_THROWN(
+        model.setValues({{"nu", numberValue(5.0)}, {"exposure", numberValue(100.0)}}),
+        aniso::Error);
+    QCOMPARE(model.real("nu"), 1000.0);
+    QCOMPARE(spy.count(), 0);
+  }
+
+  // Assets accept empty text (no map) and go through their validator, whose error is passed on.
+  void assetValidatorsDecide()
+  {
+    SceneModel model;
+    model.setValidator("normal-map",
+                       [](const std::string& text, const std::string& subject)
+                       {
+                         if (text != "good.png")
+                         {
+                           throw aniso::errorAbout(subject, "cannot read " + text);
+                         }
+                       });
+    model.setValue("normal-map", textValue("good.png"));
+    QVERIFY_EXCEPTION_THROWN(model.setValue("normal-map", textValue("bad.png")), aniso::Error);
+    QCOMPARE(model.text("normal-map"), std::string("good.png"));
+    model.setValue("normal-map", textValue(""));
+    QCOMPARE(model.text("normal-map"), std::string());
+  }
+
+  // The camera needs a proper frame; reset brings back every default.
+  void cameraIsValidatedAndResetRestoresDefaults()
+  {
+    SceneModel model;
+    aniso::CameraState camera;
+    camera.set = true;
+    camera.position = {0.0, -4.0, 1.0};
+    camera.viewUp = {0.0, 0.0, 1.0};
+    model.setCamera(camera);
+    QCOMPARE(model.camera(), camera);
+    aniso::CameraState bad = camera;
+    bad.viewUp = {0.0, 4.0, -1.0}; // along the view direction
+    QVERIFY_EXCEPTION_THROWN(model.setCamera(bad), aniso::Error);
+    bad = camera;
+    bad.viewAngle = 180.0;
+    QVERIFY_EXCEPTION_THROWN(model.setCamera(bad), aniso::Error);
+    QCOMPARE(model.camera(), camera);
+    model.setValue("nu", numberValue(3.0));
+    model.reset();
+    QCOMPARE(model.real("nu"), 1000.0);
+    QVERIFY(!model.camera().set);
+  }
+
+  // Undo and redo walk back and forth through edits; a linked edit of two keys is one step.
+  void undoRedoWalksThroughEdits()
+  {
+    SceneModel model;
+    aniso::SceneEditor editor(&model);
+    editor.edit("nu", numberValue(2000.0));
+    editor.edit({{"nu", numberValue(4000.0)}, {"nv", numberValue(200.0)}});
+    QCOMPARE(editor.undoStack()->count(), 2);
+    editor.undoStack()->undo();
+    QCOMPARE(model.real("nu"), 2000.0);
+    QCOMPARE(model.real("nv"), 50.0);
+    editor.undoStack()->undo();
+    QCOMPARE(model.real("nu"), 1000.0);
+    editor.undoStack()->redo();
+    editor.undoStack()->redo();
+    QCOMPARE(model.real("nu"), 4000.0);
+    QCOMPARE(model.real("nv"), 200.0);
+    // An invalid edit pushes nothing.
+    QVERIFY_EXCEPTION_THROWN(editor.edit("nu", numberValue(-3.0)), aniso::Error);
+    QCOMPARE(editor.undoStack()->count(), 2);
+  }
+
+  // The edits of one drag merge into a single command; the next drag is a new one; a drag that
+  // returns to its start leaves no command.
+  void aDragIsOneUndoStep()
+  {
+    SceneModel model;
+    aniso::SceneEditor editor(&model);
+    const int drag = editor.beginDrag();
+    for (double nu : {1100.0, 1300.0, 1700.0, 2500.0})
+    {
+      editor.edit("nu", numberValue(nu), drag);
+    }
+    QCOMPARE(editor.undoStack()->count(), 1);
+    const int second = editor.beginDrag();
+    QVERIFY(second != drag && second != 0);
+    editor.edit("nu", numberValue(3000.0), second);
+    editor.edit("nu", numberValue(2500.0), second);
+    QCOMPARE(editor.undoStack()->count(), 1);
+    editor.undoStack()->undo();
+    QCOMPARE(model.real("nu"), 1000.0);
+  }
+
+  // Replacing the whole scene (opening a session) is one step; undo restores values and camera.
+  void replaceSceneIsOneStep()
+  {
+    SceneModel model;
+    aniso::SceneEditor editor(&model);
+    SceneModel::Values values = model.values();
+    values["nu"] = numberValue(20000.0);
+    values["tone-mapping"] = textValue("clamp");
+    aniso::CameraState camera;
+    camera.set = true;
+    camera.position = {3.0, 0.0, 0.0};
+    camera.viewUp = {0.0, 0.0, 1.0};
+    editor.replaceScene(values, camera, "Open session");
+    QCOMPARE(model.real("nu"), 20000.0);
+    QCOMPARE(model.camera(), camera);
+    editor.undoStack()->undo();
+    QCOMPARE(model.real("nu"), 1000.0);
+    QCOMPARE(model.text("tone-mapping"), std::string("aces"));
+    QVERIFY(!model.camera().set);
+  }
+};
+
+QTEST_MAIN(TestSceneModel)
+#include "test_scene_model.moc"

@@ -1,0 +1,311 @@
+#include "vtkpasses/mesh/BrushingModel.h"
+
+#include "vtkpasses/mesh/GeometryAccess.h"
+#include "core/error.h"
+#include "core/frame.h"
+
+#include <cmath>
+#include <cstdlib>
+#include <glm/geometric.hpp>
+#include <sstream>
+#include <vector>
+#include <vtkCellArray.h>
+#include <vtkDataArray.h>
+#include <vtkFloatArray.h>
+#include <vtkNew.h>
+#include <vtkPointData.h>
+#include <vtkPolyData.h>
+
+namespace aniso
+{
+namespace
+{
+std::string trim(const std::string& s)
+{
+  const size_t first = s.find_first_not_of(" \t");
+  const size_t last = s.find_last_not_of(" \t");
+  return first == std::string::npos ? std::string() : s.substr(first, last - first + 1);
+}
+
+// "X,Y,Z" -> vector; `what` names the part in messages ("axis", "centre", "point").
+glm::dvec3 parseTriple(const std::string& text, const std::string& subject,
+                       const std::string& whole, const char* what)
+{
+  std::vector<std::string> parts;
+  std::string part;
+  std::istringstream stream(text);
+  while (std::getline(stream, part, ','))
+  {
+    parts.push_back(trim(part));
+  }
+  if (!text.empty() && text.back() == ',')
+  {
+    parts.push_back("");
+  }
+  if (parts.size() != 3)
+  {
+    throw errorAbout(subject,
+                     "'" + whole + "': the " + what + " needs three comma-separated numbers X,Y,Z");
+  }
+  glm::dvec3 value(0.0);
+  for (int i = 0; i < 3; ++i)
+  {
+    const std::string& token = parts[static_cast<size_t>(i)];
+    char* end = nullptr;
+    const double number = std::strtod(token.c_str(), &end);
+    if (token.empty() || *end != '\0' || !std::isfinite(number))
+    {
+      throw errorAbout(subject, "'" + whole + "': '" + token + "' in the " + what +
+                                    " is not a finite number");
+    }
+    value[i] = number;
+  }
+  return value;
+}
+
+glm::dvec3 unitAxis(const glm::dvec3& axis, const std::string& subject, const std::string& whole)
+{
+  const double length = glm::length(axis);
+  if (!(length > 0.0) || !std::isfinite(length))
+  {
+    throw errorAbout(subject, "'" + whole + "': the axis has zero length");
+  }
+  return axis / length;
+}
+
+std::string formatTriple(const glm::dvec3& v)
+{
+  std::ostringstream out;
+  out.precision(17);
+  out << v.x << ',' << v.y << ',' << v.z;
+  return out.str();
+}
+
+using geometry::tupleAt;
+
+glm::dvec3 pointAt(vtkPolyData* surface, vtkIdType id)
+{
+  return geometry::pointAt(surface->GetPoints(), id);
+}
+
+constexpr double kVanishingProjection = 1e-6; // relative to the direction's length
+constexpr double kOnAxisFraction = 1e-9;      // of the bounding-box diagonal
+
+// The angle of a triangle's corner at `at`, between the edges to `b` and `c`.
+double cornerAngle(const glm::dvec3& at, const glm::dvec3& b, const glm::dvec3& c)
+{
+  const glm::dvec3 u = b - at;
+  const glm::dvec3 v = c - at;
+  return std::atan2(glm::length(glm::cross(u, v)), glm::dot(u, v));
+}
+
+// Per-point dP/du: the unit directions of the triangles around each point, weighted by their
+// corner angle there. Angle weights do not depend on how a grid's quads were split, so on a
+// regular grid the left and right neighbours balance and the average lands on the true dP/du.
+std::vector<glm::dvec3> accumulateUvTangents(vtkPolyData* surface, vtkDataArray* tcoords)
+{
+  std::vector<glm::dvec3> sum(static_cast<size_t>(surface->GetNumberOfPoints()), glm::dvec3(0.0));
+  geometry::forEachCell(
+      surface->GetPolys(),
+      [&](vtkIdType count, const vtkIdType* ids)
+      {
+        if (count != 3)
+        {
+          return;
+        }
+        const glm::dvec3 p[3] = {pointAt(surface, ids[0]), pointAt(surface, ids[1]),
+                                 pointAt(surface, ids[2])};
+        const glm::dvec3 e1 = p[1] - p[0];
+        const glm::dvec3 e2 = p[2] - p[0];
+        // Component-wise: the array may carry a third texture coordinate.
+        auto uv = [tcoords](vtkIdType id, int c) { return tcoords->GetComponent(id, c); };
+        const double du1 = uv(ids[1], 0) - uv(ids[0], 0);
+        const double dv1 = uv(ids[1], 1) - uv(ids[0], 1);
+        const double du2 = uv(ids[2], 0) - uv(ids[0], 0);
+        const double dv2 = uv(ids[2], 1) - uv(ids[0], 1);
+        const double det = du1 * dv2 - du2 * dv1;
+        if (det == 0.0)
+        {
+          return; // the UV map collapses this triangle: it says nothing about dP/du
+        }
+        const glm::dvec3 dPdu = (e1 * dv2 - e2 * dv1) / det;
+        const double length = glm::length(dPdu);
+        if (!(length > 0.0) || !std::isfinite(length))
+        {
+          return;
+        }
+        const glm::dvec3 direction = dPdu / length;
+        for (int k = 0; k < 3; ++k)
+        {
+          sum[static_cast<size_t>(ids[k])] +=
+              direction * cornerAngle(p[k], p[(k + 1) % 3], p[(k + 2) % 3]);
+        }
+      });
+  return sum;
+}
+} // namespace
+
+std::string brushingModelSyntax()
+{
+  return "uv|axis:X,Y,Z|around:X,Y,Z[@CX,CY,CZ]|radial:X,Y,Z";
+}
+
+BrushingModel parseBrushingModel(const std::string& text, const std::string& subject)
+{
+  const std::string whole = trim(text);
+  const std::string expected = " (expected " + brushingModelSyntax() + ")";
+  if (whole.empty())
+  {
+    throw errorAbout(subject, "empty brushing model" + expected);
+  }
+  const size_t colon = whole.find(':');
+  const std::string name = whole.substr(0, colon);
+  const std::string args = colon == std::string::npos ? std::string() : whole.substr(colon + 1);
+  BrushingModel model;
+  if (name == "uv")
+  {
+    if (colon != std::string::npos)
+    {
+      throw errorAbout(subject, "'" + whole + "': uv takes no parameters");
+    }
+    model.kind = BrushingKind::Uv;
+    return model;
+  }
+  if (name != "axis" && name != "around" && name != "radial")
+  {
+    throw errorAbout(subject, "unknown brushing model '" + name + "'" + expected);
+  }
+  if (colon == std::string::npos)
+  {
+    throw errorAbout(subject, "'" + whole + "' needs X,Y,Z, as in " + name + ":0,0,1");
+  }
+  if (name == "axis")
+  {
+    model.kind = BrushingKind::Axis;
+    model.vector = unitAxis(parseTriple(args, subject, whole, "axis"), subject, whole);
+  }
+  else if (name == "around")
+  {
+    model.kind = BrushingKind::Around;
+    const size_t at = args.find('@');
+    model.vector =
+        unitAxis(parseTriple(args.substr(0, at), subject, whole, "axis"), subject, whole);
+    if (at != std::string::npos)
+    {
+      model.centre = parseTriple(args.substr(at + 1), subject, whole, "centre");
+    }
+  }
+  else
+  {
+    model.kind = BrushingKind::Radial;
+    model.vector = parseTriple(args, subject, whole, "point");
+  }
+  return model;
+}
+
+std::string toString(const BrushingModel& model)
+{
+  switch (model.kind)
+  {
+  case BrushingKind::Uv:
+    return "uv";
+  case BrushingKind::Axis:
+    return "axis:" + formatTriple(model.vector);
+  case BrushingKind::Around:
+    return "around:" + formatTriple(model.vector) +
+           (model.centre ? "@" + formatTriple(*model.centre) : std::string());
+  case BrushingKind::Radial:
+    return "radial:" + formatTriple(model.vector);
+  }
+  return "uv";
+}
+
+TangentStats computeBrushingTangents(vtkPolyData* surface, const BrushingModel& model,
+                                     const std::string& subject)
+{
+  vtkPointData* pd = surface->GetPointData();
+  vtkDataArray* normals = pd->GetNormals();
+  if (!normals || normals->GetNumberOfComponents() != 3)
+  {
+    throw errorAbout(subject, "tangents need point normals, and the surface has none");
+  }
+  vtkDataArray* tcoords = pd->GetTCoords();
+  if (model.kind == BrushingKind::Uv && (!tcoords || tcoords->GetNumberOfComponents() < 2))
+  {
+    throw errorAbout(
+        subject, "tangents 'uv' need texture coordinates, and the mesh has none (use axis:X,Y,Z, "
+                 "around:X,Y,Z or radial:X,Y,Z)");
+  }
+
+  const vtkIdType count = surface->GetNumberOfPoints();
+  double bounds[6];
+  surface->GetBounds(bounds);
+  const glm::dvec3 low(bounds[0], bounds[2], bounds[4]);
+  const glm::dvec3 high(bounds[1], bounds[3], bounds[5]);
+  const double onAxis = kOnAxisFraction * glm::length(high - low);
+  const glm::dvec3 centre = model.centre ? *model.centre : 0.5 * (low + high);
+
+  std::vector<glm::dvec3> uvSums;
+  if (model.kind == BrushingKind::Uv)
+  {
+    uvSums = accumulateUvTangents(surface, tcoords);
+  }
+
+  vtkNew<vtkFloatArray> tangents;
+  tangents->SetName("Tangents");
+  tangents->SetNumberOfComponents(3);
+  tangents->SetNumberOfTuples(count);
+  TangentStats stats;
+  stats.points = count;
+  for (vtkIdType i = 0; i < count; ++i)
+  {
+    const glm::dvec3 rawNormal = tupleAt(normals, i);
+    const double normalLength = glm::length(rawNormal);
+    if (!(normalLength > 0.0) || !std::isfinite(normalLength))
+    {
+      throw errorAbout(subject, "point " + std::to_string(i) + " has a zero or non-finite normal");
+    }
+    const glm::dvec3 n = rawNormal / normalLength;
+    const glm::dvec3 p = pointAt(surface, i);
+    glm::dvec3 direction(0.0);
+    bool defined = true;
+    switch (model.kind)
+    {
+    case BrushingKind::Uv:
+      direction = uvSums[static_cast<size_t>(i)];
+      break;
+    case BrushingKind::Axis:
+      direction = model.vector;
+      break;
+    case BrushingKind::Around:
+    {
+      const glm::dvec3 radius = p - centre;
+      direction = glm::cross(model.vector, radius);
+      defined = glm::length(radius - glm::dot(radius, model.vector) * model.vector) > onAxis;
+      break;
+    }
+    case BrushingKind::Radial:
+      direction = p - model.vector;
+      defined = glm::length(direction) > onAxis;
+      break;
+    }
+    const double length = glm::length(direction);
+    const glm::dvec3 projected = direction - glm::dot(direction, n) * n;
+    const double projectedLength = glm::length(projected);
+    defined = defined && length > 0.0 && projectedLength > kVanishingProjection * length;
+    glm::dvec3 t;
+    if (defined)
+    {
+      t = projected / projectedLength;
+    }
+    else
+    {
+      t = Frame::fromNormalTangent(n, glm::dvec3(0.0)).t;
+      ++stats.fallbackPoints;
+    }
+    tangents->SetTuple3(i, t.x, t.y, t.z);
+  }
+  pd->SetTangents(tangents);
+  return stats;
+}
+} // namespace aniso

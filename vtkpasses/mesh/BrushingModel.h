@@ -1,0 +1,59 @@
+#pragma once
+// Tangent fields from a brushing model, for meshes without UVs (most CAD and scientific meshes)
+// and for overriding the UV direction. t is the direction n_u acts along (docs/METHOD.md).
+//
+//   uv                   t = dP/du from the texture coordinates: per triangle
+//                        dP/du = (e1 dv2 - e2 dv1) / (du1 dv2 - du2 dv1), accumulated at its
+//                        corners weighted by the corner angle, then made orthogonal to n.
+//   axis:X,Y,Z           linear brushing: t = the axis projected into the tangent plane.
+//   around:X,Y,Z         turned/lathed parts: t = axis x (p - c) projected into the tangent plane,
+//   around:X,Y,Z@CX,CY,CZ  c = the given point on the axis, else the bounding-box centre.
+//   radial:X,Y,Z         brushing out from a point: t = (p - point) projected into the plane.
+// Where the projection vanishes (the direction is along the normal, or p lies on the axis or at
+// the point), t falls back to the deterministic tangent of Frame::fromNormalTangent (core/frame.h,
+// the X axis projected, or Y when n is near X) and the point is counted. "Vanishes" means the
+// projection is shorter than 1e-6 of the direction, or p is within 1e-9 of the mesh's size from
+// the axis or point.
+#include <cstdint>
+#include <glm/vec3.hpp>
+#include <optional>
+#include <string>
+
+class vtkPolyData;
+
+namespace aniso
+{
+enum class BrushingKind
+{
+  Uv,
+  Axis,
+  Around,
+  Radial
+};
+
+struct BrushingModel
+{
+  BrushingKind kind = BrushingKind::Uv;
+  glm::dvec3 vector{0.0, 0.0, 1.0}; // unit axis (Axis, Around) or the centre point (Radial)
+  std::optional<glm::dvec3> centre; // Around: a point on the axis; unset = bounding-box centre
+};
+
+// The CLI spelling "uv|axis:X,Y,Z|around:X,Y,Z[@CX,CY,CZ]|radial:X,Y,Z". Errors are aniso::Error
+// "SUBJECT: reason" (unknown model, missing or non-numeric components, zero-length axis).
+BrushingModel parseBrushingModel(const std::string& text,
+                                 const std::string& subject = "--tangents");
+std::string toString(const BrushingModel& model); // parses back to the same model
+std::string brushingModelSyntax();                // for help texts
+
+struct TangentStats
+{
+  int64_t points = 0;
+  int64_t fallbackPoints = 0; // where the model gave no direction in the tangent plane
+};
+
+// Writes the float point array "Tangents" (unit, orthogonal to "Normals", set active) of a
+// triangle surface that has unit point normals. Uv needs "TCoords": without them it throws
+// aniso::Error "SUBJECT: reason".
+TangentStats computeBrushingTangents(vtkPolyData* surface, const BrushingModel& model,
+                                     const std::string& subject);
+} // namespace aniso

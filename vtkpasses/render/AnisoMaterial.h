@@ -1,0 +1,67 @@
+#pragma once
+// An anisotropic (Ashikhmin-Shirley) material under image-based lighting, given to any
+// vtkActor whose mapper is a vtkOpenGLPolyDataMapper. It injects its GLSL through shader
+// replacements (VTK's tags are kept, the shaders are never replaced whole), binds its lookup
+// tables, maps and the environment cubemap as named textures, and sets the values sliders move
+// as uniforms when the mapper draws, so moving them never recompiles. Features the material
+// does not use are compiled out. The mesh's point arrays "Normals", "Tangents" and "TCoords"
+// are used when present (see MaterialShaderSource.h).
+#include "vtkpasses/render/MaterialSettings.h"
+#include "vtkpasses/render/MaterialShaderSource.h"
+
+#include <memory>
+
+class vtkActor;
+class vtkRenderer;
+
+namespace aniso
+{
+class EnvironmentLighting;
+struct BrdfLut;
+struct HalfVectorLut;
+
+class AnisoMaterial
+{
+public:
+  // Invalid settings throw aniso::Error "name: reason".
+  explicit AnisoMaterial(std::shared_ptr<EnvironmentLighting> lighting,
+                         const MaterialSettings& settings = {});
+  ~AnisoMaterial();
+  AnisoMaterial(const AnisoMaterial&) = delete;
+  AnisoMaterial& operator=(const AnisoMaterial&) = delete;
+
+  // Gives the material to ACTOR, drawn by RENDERER (whose camera and window the shaders use).
+  // The actor's mapper must be set and be an OpenGL polydata mapper; aniso::Error otherwise.
+  // A material serves one actor: applying it again moves it.
+  void apply(vtkActor* actor, vtkRenderer* renderer);
+  // Takes the material off its actor (the actor draws with VTK's own shading again).
+  void detach();
+
+  // New values: uniforms and lookup tables are updated (LUTs from the shared LutCache), the
+  // shader is rebuilt only if the variant changed. Throws aniso::Error "name: reason" for an
+  // invalid value and keeps the previous settings.
+  void setSettings(const MaterialSettings& settings);
+  // The same with lookup tables already at hand (baked or read on a worker): a table whose
+  // inputs match the settings is used as it is, as is one the material holds already, so the
+  // cache is asked (and may read a file or bake) only for tables neither provides.
+  void setSettings(const MaterialSettings& settings,
+                   std::shared_ptr<const HalfVectorLut> halfVector,
+                   std::shared_ptr<const BrdfLut> brdf);
+  const MaterialSettings& settings() const;
+
+  void setLighting(std::shared_ptr<EnvironmentLighting> lighting);
+  const std::shared_ptr<EnvironmentLighting>& lighting() const;
+
+  // The variant compiled for the actor's mesh (known once the actor has been drawn).
+  MaterialVariant variant() const;
+  // True when maps were asked for but the mesh has no texture coordinates to read them with.
+  bool mapsDropped() const;
+
+  // Throws aniso::Error "name: reason" unless SETTINGS can be rendered.
+  static void validate(const MaterialSettings& settings);
+
+private:
+  class Impl;
+  std::unique_ptr<Impl> impl_;
+};
+} // namespace aniso

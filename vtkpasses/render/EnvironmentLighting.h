@@ -1,0 +1,91 @@
+#pragma once
+// The light of a scene: an environment baked into a float cubemap with its full mip chain
+// (specular lookups, background) and SH9 irradiance (diffuse), rotated about the world Z axis.
+// Shared by every anisotropic material of a renderer and by the accumulation pass.
+#include "core/env/cubemap.h"
+#include "core/env/env_sampling.h"
+#include "core/env/environment.h"
+
+#include <array>
+#include <cstdint>
+#include <glm/mat3x3.hpp>
+#include <glm/vec3.hpp>
+#include <memory>
+#include <string>
+#include <vtkSmartPointer.h>
+#include <vtkWeakPointer.h>
+
+class vtkOpenGLRenderWindow;
+class vtkTextureObject;
+class vtkWindow;
+
+namespace aniso
+{
+// Guide table of a CDF table (the layout of EnvironmentDistribution::cdfTable): entry j of a CDF
+// of `count` intervals holds the interval containing j / count, for j = 0..count, so the interval
+// of any u lies between the entries of floor(u count) and the next: a search starts there and
+// takes no step where the density is high (the sun) instead of log2(count) steps everywhere.
+// Same size and rows as cdf; computed from its float values, the ones the shader compares.
+Image samplingGuideTable(const Image& cdf, int width, int height);
+
+class EnvironmentLighting
+{
+public:
+  // Bakes the cubemap (level 0 of cubeSize, a power of two) and the SH9 projection now.
+  // Throws aniso::Error for an invalid size.
+  EnvironmentLighting(std::shared_ptr<const Environment> environment, int cubeSize);
+  ~EnvironmentLighting();
+  EnvironmentLighting(const EnvironmentLighting&) = delete;
+  EnvironmentLighting& operator=(const EnvironmentLighting&) = delete;
+
+  const Environment& environment() const { return *environment_; }
+  const Cubemap& cubemap() const { return cubemap_; }
+  int cubeSize() const { return cubemap_.size; }
+  int mipLevels() const { return static_cast<int>(cubemap_.mips.size()); }
+
+  // Radiance SH9 coefficients multiplied by the cosine-lobe factors (pi, 2pi/3, pi/4), so that
+  // E(n) = sum c_i Y_i(n) in environment coordinates (what the shaders evaluate).
+  const std::array<glm::vec3, 9>& irradianceCoefficients() const { return irradiance_; }
+
+  // The environment turned by this angle about +Z (counter-clockwise seen from above): the
+  // light arriving from world direction d is radiance(R_z(-angle) d).
+  void setRotationDegrees(double degrees);
+  double rotationDegrees() const { return rotationDegrees_; }
+  glm::dmat3 worldToEnvironment() const;
+
+  // Bumped by every change of what the lighting shows (rotation), so progressive
+  // accumulation knows to start over.
+  uint64_t revision() const { return revision_; }
+
+  // The cube texture in WINDOW's context, uploaded on first use (and again for a new window).
+  vtkTextureObject* cubeTexture(vtkOpenGLRenderWindow* window);
+
+  // Environment importance sampling, baked on first use only (a material with sampling off
+  // never pays for it): the luminance x solid-angle distribution over a 1024 x 512 grid (texels
+  // about the sun's size, so its samples land on it), shared through sharedDistribution.
+  const EnvironmentDistribution& samplingDistribution();
+  // Its shader tables in WINDOW's context (R32F, nearest, read with texelFetch): the CDFs
+  // (EnvironmentDistribution::cdfTable), the density per solid angle (pdfTable) and the guide
+  // table (samplingGuideTable).
+  vtkTextureObject* samplingCdfTexture(vtkOpenGLRenderWindow* window);
+  vtkTextureObject* samplingPdfTexture(vtkOpenGLRenderWindow* window);
+  vtkTextureObject* samplingGuideTexture(vtkOpenGLRenderWindow* window);
+  void releaseGraphicsResources(vtkWindow* window);
+
+private:
+  std::shared_ptr<const Environment> environment_;
+  Cubemap cubemap_;
+  std::array<glm::vec3, 9> irradiance_{};
+  double rotationDegrees_ = 0.0;
+  uint64_t revision_ = 0;
+  vtkSmartPointer<vtkTextureObject> texture_;
+  vtkWeakPointer<vtkOpenGLRenderWindow> textureWindow_;
+  std::shared_ptr<const EnvironmentDistribution> distribution_;
+  vtkSmartPointer<vtkTextureObject> cdfTexture_;
+  vtkSmartPointer<vtkTextureObject> pdfTexture_;
+  vtkSmartPointer<vtkTextureObject> guideTexture_;
+  vtkWeakPointer<vtkOpenGLRenderWindow> samplingWindow_;
+
+  void uploadSamplingTables(vtkOpenGLRenderWindow* window);
+};
+} // namespace aniso

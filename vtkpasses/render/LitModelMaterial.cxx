@@ -1,0 +1,281 @@
+#include "vtkpasses/render/LitModelMaterial.h"
+
+#include "vtkpasses/render/DrawingFrame.h"
+#include "vtkpasses/render/MaterialShaderSource.h"
+#include "vtkpasses/render/RendererMatrices.h"
+#include "vtkpasses/render/ShaderHook.h"
+#include "vtkpasses/render/TextureUpload.h"
+#include "aniso_shaders.h"
+#include "core/error.h"
+
+#include <array>
+#include <cmath>
+#include <glm/mat3x3.hpp>
+#include <glm/matrix.hpp>
+#include <optional>
+#include <vtkActor.h>
+#include <vtkDataArray.h>
+#include <vtkOpenGLRenderWindow.h>
+#include <vtkPointData.h>
+#include <vtkPolyData.h>
+#include <vtkRenderer.h>
+#include <vtkShaderProgram.h>
+#include <vtkSmartPointer.h>
+#include <vtkTextureObject.h>
+#include <vtkWeakPointer.h>
+
+namespace aniso
+{
+namespace
+{
+// The tags the material's code follows (each replacement keeps its tag).
+constexpr const char* kVertexDecTag = "//VTK::Normal::Dec";
+constexpr const char* kVertexImplTag = "//VTK::CustomEnd::Impl";
+constexpr const char* kFragmentDecTag = "//VTK::Light::Dec";
+constexpr const char* kFragmentUniformFlowTag = "//VTK::UniformFlow::Impl";
+constexpr const char* kFragmentImplTag = "//VTK::Light::Impl";
+
+const char* modelDefine(LitModel model)
+{
+  switch (model)
+  {
+  case LitModel::AshikhminShirley:
+    return "LIT_MODEL_ASHIKHMIN_SHIRLEY";
+  case LitModel::Banks:
+    return "LIT_MODEL_BANKS";
+  case LitModel::BlinnPhong:
+    return "LIT_MODEL_BLINN_PHONG";
+  case LitModel::Ward:
+    return "LIT_MODEL_WARD";
+  case LitModel::HeidrichSeidel:
+    return "LIT_MODEL_HEIDRICH_SEIDEL";
+  }
+  return "LIT_MODEL_ASHIKHMIN_SHIRLEY";
+}
+
+bool hasArray(vtkPolyData* poly, const char* name, int components)
+{
+  vtkDataArray* array = poly->GetPointData()->GetArray(name);
+  return array && array->GetNumberOfComponents() == components &&
+         array->GetNumberOfTuples() == poly->GetNumberOfPoints();
+}
+
+std::shared_ptr<const SvMaps> defaultMaps()
+{
+  static const auto maps = std::make_shared<const SvMaps>(uniformSvMaps(SvTexel{}));
+  return maps;
+}
+} // namespace
+
+std::string litVariantDefines(const LitModelVariant& v)
+{
+  std::string d = "#define LIT_MAX_LIGHTS " + std::to_string(LitModelMaterial::kMaxLights) + "\n";
+  d += std::string("#define ") + modelDefine(v.model) + "\n";
+  if (v.normals)
+  {
+    d += "#define LIT_HAVE_NORMALS\n";
+  }
+  if (v.tangents)
+  {
+    d += "#define LIT_HAVE_TANGENTS\n";
+  }
+  if (v.tcoords)
+  {
+    d += "#define LIT_HAVE_TCOORDS\n";
+  }
+  return d;
+}
+
+class LitModelMaterial::Impl
+{
+public:
+  LitModelSettings settings;
+  ShaderHook hook;
+  std::optional<LitModelVariant> installed;
+  bool normals = false;
+  bool tangents = false;
+  bool tcoords = false;
+
+  // The textures and the maps they were made from (held, so new maps at a freed address are
+  // never taken for the old ones).
+  vtkWeakPointer<vtkOpenGLRenderWindow> textureWindow;
+  std::shared_ptr<const SvMaps> uploadedMaps;
+  std::array<vtkSmartPointer<vtkTextureObject>, 3> textures;
+
+  void onMesh(vtkPolyData* poly)
+  {
+    normals = hasArray(poly, kNormalsArray, 3);
+    tangents = hasArray(poly, kTangentsArray, 3);
+    tcoords = hasArray(poly, kTCoordsArray, 2);
+    updateVariant();
+  }
+
+  void updateVariant()
+  {
+    const LitModelVariant v{settings.model, normals, tangents, tcoords};
+    if (installed && *installed == v)
+    {
+      return;
+    }
+    const std::string defines = litVariantDefines(v);
+    ShaderCode code;
+    code.vertex = {{kVertexDecTag, defines + shaders::kLitVsDec},
+                   {kVertexImplTag, shaders::kLitVsImpl}};
+    code.fragment = {{kFragmentDecTag, defines + shaders::kLitFsDec},
+                     {kFragmentUniformFlowTag, shaders::kLitFsUniformFlow},
+                     {kFragmentImplTag, shaders::kLitFsImpl}};
+    const std::pair<bool, std::pair<std::string, std::string>> attributes[] = {
+        {v.normals, {"litNormalMC", kNormalsArray}},
+        {v.tangents, {"litTangentMC", kTangentsArray}},
+        {v.tcoords, {"litTCoordMC", kTCoordsArray}}};
+    for (const auto& [used, attribute] : attributes)
+    {
+      if (used)
+      {
+        code.attributes.push_back(attribute);
+      }
+    }
+    hook.install(code);
+    installed = v;
+  }
+
+  void updateTextures(vtkOpenGLRenderWindow* window)
+  {
+    const std::shared_ptr<const SvMaps> maps = settings.maps ? settings.maps : defaultMaps();
+    // A texture of handle 0 was released with the window's context: upload them again.
+    if (textureWindow == window && uploadedMaps == maps && textures[0] &&
+        textures[0]->GetHandle() != 0)
+    {
+      return;
+    }
+    textures[0] = uploadMapTexture(window, maps->tangentAlpha, 4, "tangent and roughness map");
+    textures[1] = uploadMapTexture(window, maps->albedoSpecular, 4, "albedo and specular map");
+    textures[2] = uploadMapTexture(window, maps->normal, 3, "normal map");
+    textureWindow = window;
+    uploadedMaps = maps;
+  }
+
+  // Uniforms and textures, every time the mapper draws: nothing here changes the shader.
+  void onShader(vtkShaderProgram* program)
+  {
+    vtkRenderer* renderer = hook.renderer();
+    vtkActor* actor = hook.actor();
+    if (!installed || !program->IsUniformUsed("litLightCount"))
+    {
+      return;
+    }
+    auto* window = vtkOpenGLRenderWindow::SafeDownCast(renderer->GetRenderWindow());
+    if (!window)
+    {
+      return;
+    }
+    updateTextures(window);
+    setUniformMatrix(program, "litClipToWorld", clipToWorld(renderer));
+    const glm::dmat3 toWorld(toGlm(actor->GetMatrix()));
+    const double det = glm::determinant(toWorld);
+    const glm::dmat3 normalToWorld =
+        det != 0.0 && std::isfinite(det) ? glm::transpose(glm::inverse(toWorld)) : toWorld;
+    setUniformMatrix(program, "litDirectionToWorld", toWorld);
+    setUniformMatrix(program, "litNormalToWorld", normalToWorld);
+
+    float vectors[kMaxLights][4] = {};
+    float intensities[kMaxLights][3] = {};
+    const int count = static_cast<int>(settings.lights.size());
+    const DrawingFrame drawing = drawingFrame(actor); // point lights move with the surface
+    for (int i = 0; i < count; ++i)
+    {
+      const Light light = drawing.lightToDrawing(settings.lights[std::size_t(i)]);
+      const bool point = light.type == LightType::Point;
+      const glm::dvec3 vector = point ? light.vector : glm::normalize(light.vector);
+      for (int c = 0; c < 3; ++c)
+      {
+        vectors[i][c] = static_cast<float>(vector[c]);
+        intensities[i][c] = static_cast<float>(light.intensity[c]);
+      }
+      vectors[i][3] = point ? 1.0f : 0.0f;
+    }
+    program->SetUniformi("litLightCount", count);
+    program->SetUniform4fv("litLightVector", kMaxLights, vectors);
+    program->SetUniform3fv("litLightIntensity", kMaxLights, intensities);
+
+    const char* samplers[3] = {"litTangentAlpha", "litAlbedoSpecular", "litNormalMap"};
+    for (std::size_t i = 0; i < textures.size(); ++i)
+    {
+      hook.bindTexture(program, samplers[i], textures[i]);
+    }
+  }
+};
+
+LitModelMaterial::LitModelMaterial(const LitModelSettings& settings)
+    : impl_(std::make_unique<Impl>())
+{
+  validate(settings);
+  impl_->settings = settings;
+}
+
+LitModelMaterial::~LitModelMaterial() = default;
+
+void LitModelMaterial::validate(const LitModelSettings& s)
+{
+  if (s.lights.size() > std::size_t(kMaxLights))
+  {
+    throw errorAbout("lights", std::to_string(s.lights.size()) + " given, at most " +
+                                   std::to_string(kMaxLights));
+  }
+  for (const Light& light : s.lights)
+  {
+    validateLight(light);
+  }
+  if (s.maps)
+  {
+    sampleSvMaps(*s.maps, {0.0, 0.0}); // the core's checks: "material maps: reason"
+  }
+}
+
+void LitModelMaterial::apply(vtkActor* actor, vtkRenderer* renderer)
+{
+  Impl* impl = impl_.get();
+  impl->installed.reset();
+  impl->hook.attach(
+      actor, renderer, [impl](vtkPolyData* poly) { impl->onMesh(poly); },
+      [impl](vtkShaderProgram* program) { impl->onShader(program); });
+}
+
+void LitModelMaterial::detach()
+{
+  impl_->hook.detach();
+  impl_->installed.reset();
+}
+
+void LitModelMaterial::setSettings(const LitModelSettings& settings)
+{
+  validate(settings);
+  impl_->settings = settings;
+  if (impl_->installed)
+  {
+    impl_->updateVariant();
+  }
+  if (vtkActor* actor = impl_->hook.actor())
+  {
+    // Lights and maps live outside VTK's objects; this restarts progressive accumulation.
+    actor->Modified();
+  }
+}
+
+const LitModelSettings& LitModelMaterial::settings() const
+{
+  return impl_->settings;
+}
+
+MaterialInstaller litModelInstaller(const LitModelSettings& settings)
+{
+  LitModelMaterial::validate(settings);
+  return [settings](vtkActor* actor, vtkRenderer* renderer,
+                    const std::shared_ptr<EnvironmentLighting>&) -> std::shared_ptr<void>
+  {
+    auto material = std::make_shared<LitModelMaterial>(settings);
+    material->apply(actor, renderer);
+    return material;
+  };
+}
+} // namespace aniso

@@ -1,0 +1,84 @@
+#pragma once
+// What an anisotropic material is made of, as plain values: the ones sliders move (uniforms:
+// moving them never recompiles a shader) and the features it uses (each a shader variant,
+// compiled only when a material uses it).
+#include "core/brdf/ashikhmin_shirley.h"
+#include "core/image/image.h"
+
+#include <glm/vec3.hpp>
+#include <memory>
+
+namespace aniso
+{
+class ParameterSet;
+
+enum class SpecularMethod
+{
+  SplitSum, // the source method: normalised sum of L (n.l) times F0 s + b from the BRDF LUT
+  Exact,    // the same samples weighted by F (n.l) / max(n.l, n.v): no split-sum bias
+};
+
+enum class HalfVectorSource
+{
+  Lut,    // fetched from the half-vector LUT (as published)
+  Shader, // computed per sample in the shader
+};
+
+enum class EnvironmentSampling
+{
+  Off, // lobe samples only (the published method)
+  Mis, // one-sample MIS of lobe and environment samples (exact method only)
+};
+
+struct MaterialSettings
+{
+  // Uniforms.
+  AsLobe lobe;                        // n_u, n_v (a new LUT bake in the LUT variant)
+  glm::dvec3 f0{0.913, 0.922, 0.924}; // linear RGB
+  glm::dvec3 albedo{0.0, 0.0, 0.0};   // linear RGB; 0 = no diffuse
+  int samples = 16;                   // N per fragment and frame
+  double heightScale = 0.02;          // relief depth, texture-coordinate units
+  // Each pixel rotates its sample set by a hash of its position: the error of few samples turns
+  // from bands into noise that progressive frames average out. Off by default: a single
+  // frame's error against the reference is as large or larger (docs/BENCHMARKS.md).
+  bool pixelDecorrelation = false;
+  // Share of the lobe technique in environment MIS: 0 = chosen from the lobe and the
+  // environment (misLobeFraction, core/env/env_sampling.h); a value in (0, 1) is used as it is
+  // (benchmarks compare rules with it).
+  double misLobeShare = 0.0;
+
+  // Variants.
+  SpecularMethod method = SpecularMethod::Exact;
+  bool filtered = true; // filtered importance sampling (mip level per sample)
+  HalfVectorSource halfVectors = HalfVectorSource::Lut; // as fast or faster, as accurate
+  int lutSize = 64;                                     // half-vector and BRDF LUTs
+  int brdfLutSamples = 1024;                            // importance samples per BRDF LUT texel
+  // Environment importance sampling combined with the lobe samples (bright small sources
+  // next to rough lobes); needs the exact method. Off costs nothing.
+  EnvironmentSampling environmentSampling = EnvironmentSampling::Off;
+
+  // Maps, read through the mesh's texture coordinates; null = not used. Images have row 0 at
+  // the top (v = 1), as files store them.
+  // Bump mapping: a normal map perturbs n only (t follows by Gram-Schmidt); a quaternion map
+  // rotates the whole frame (the source's method). At most one of the two.
+  std::shared_ptr<const Image> normalMap;     // RGB = tangent-space normal, signed (decoded)
+  std::shared_ptr<const Image> quaternionMap; // RGB = (a, b, c) as bakeQuaternionMap writes
+  std::shared_ptr<const Image> tprMap;        // RG = rotated tangent (x, y)
+  std::shared_ptr<const Image> heightMap;     // R = height in [0, 1]
+  std::shared_ptr<const Image> albedoMap;     // RGB, linear, multiplies albedo
+  std::shared_ptr<const Image> occlusionMap;  // R = ambient occlusion
+  std::shared_ptr<const Image> metallicMap;   // R = metalness (1: F0, no diffuse; 0: F0 = 0.04)
+
+  bool usesMaps() const
+  {
+    return normalMap || quaternionMap || tprMap || heightMap || albedoMap || occlusionMap ||
+           metallicMap;
+  }
+};
+
+// The declared parameters (core/parameters/parameters.h) that a material takes: n_u, n_v, F0,
+// albedo, samples, LUT size and samples, method, filtered, half-vectors, env-sampling,
+// height scale.
+// Everything else (the maps) keeps its value in BASE.
+MaterialSettings materialFromParameters(const ParameterSet& parameters, MaterialSettings base = {});
+} // namespace aniso

@@ -1,0 +1,218 @@
+#include "vtkpasses/render/OffscreenRenderer.h"
+
+#include "vtkpasses/render/AnisoMaterial.h"
+#include "vtkpasses/render/DrawingFrame.h"
+#include "vtkpasses/render/EnvironmentLighting.h"
+#include "core/error.h"
+#include "vtkpasses/render/vtkAnisoAccumulationPass.h"
+
+#include <X11/Xlib.h>
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdlib>
+#include <glm/geometric.hpp>
+#include <mutex>
+#include <thread>
+#include <vtkActor.h>
+#include <vtkCamera.h>
+#include <vtkNew.h>
+#include <vtkOpenGLPolyDataMapper.h>
+#include <vtkOpenGLRenderWindow.h>
+#include <vtkOpenGLRenderer.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+#include <vtkRenderStepsPass.h>
+#include <vtkUnsignedCharArray.h>
+#include <vtk_glew.h>
+
+namespace aniso
+{
+namespace
+{
+constexpr int kMaxImageSide = 16384;
+constexpr int kMaxFrames = 1 << 20;
+
+void validate(const RenderSettings& s)
+{
+  if (!s.surface || s.surface->GetNumberOfPoints() == 0 || s.surface->GetNumberOfCells() == 0)
+  {
+    throw errorAbout("mesh", "no surface to render");
+  }
+  if (!s.environment)
+  {
+    throw errorAbout("env", "no environment");
+  }
+  if (s.width < 1 || s.height < 1 || s.width > kMaxImageSide || s.height > kMaxImageSide)
+  {
+    throw errorAbout("size",
+                     "width and height must be in [1, " + std::to_string(kMaxImageSide) + "]");
+  }
+  if (s.frames < 1 || s.frames > kMaxFrames)
+  {
+    throw errorAbout("frames", "must be in [1, " + std::to_string(kMaxFrames) + "]");
+  }
+  if (!std::isfinite(s.display.exposureEV))
+  {
+    throw errorAbout("exposure", "not a finite number");
+  }
+  AnisoMaterial::validate(s.material);
+}
+
+} // namespace
+
+// VTK's X window aborts the process when it cannot reach a display: check first. The check's
+// connection stays open for the life of the process: an X server resets when its last client
+// leaves and refuses connections meanwhile, which would fail the next window at random.
+void requireXDisplay()
+{
+  const char* name = std::getenv("DISPLAY");
+  if (!name || !*name)
+  {
+    throw errorAbout("render", "no X display (DISPLAY is not set); run under xvfb-run");
+  }
+  static std::mutex mutex;
+  static Display* connection = nullptr;
+  std::lock_guard<std::mutex> lock(mutex);
+  for (int attempt = 0; !connection && attempt < 40; ++attempt)
+  {
+    connection = XOpenDisplay(nullptr);
+    if (!connection)
+    {
+      std::this_thread::sleep_for(std::chrono::milliseconds(50)); // a server resetting
+    }
+  }
+  if (!connection)
+  {
+    throw errorAbout("render", std::string("cannot open the X display ") + name);
+  }
+}
+
+double medianSeconds(std::vector<double> seconds)
+{
+  if (seconds.empty())
+  {
+    return 0.0;
+  }
+  std::sort(seconds.begin(), seconds.end());
+  const std::size_t n = seconds.size();
+  return n % 2 ? seconds[n / 2] : 0.5 * (seconds[n / 2 - 1] + seconds[n / 2]);
+}
+
+RenderResult renderOffscreen(const RenderSettings& s)
+{
+  validate(s);
+  requireXDisplay();
+
+  auto lighting = std::make_shared<EnvironmentLighting>(s.environment, s.cubeSize);
+  lighting->setRotationDegrees(s.environmentRotationDegrees);
+
+  // Drawn in the frame of the surface's bounding sphere (DrawingFrame.h): any size or distance
+  // from the origin draws like a unit mesh at the origin.
+  const DrawingFrame drawing = drawingFrameOf(s.surface);
+  vtkNew<vtkOpenGLPolyDataMapper> mapper;
+  mapper->SetInputData(inDrawingFrame(s.surface, drawing));
+  mapper->ScalarVisibilityOff();
+  vtkNew<vtkActor> actor;
+  actor->SetMapper(mapper);
+  setDrawingFrame(actor, drawing); // for the point lights of the materials installed on it
+
+  vtkNew<vtkOpenGLRenderer> renderer;
+  renderer->AddActor(actor);
+  vtkNew<vtkRenderWindow> window;
+  window->SetOffScreenRendering(1);
+  window->SetMultiSamples(0); // pixels are sampled at their centres (or jittered) only
+  window->SetAlphaBitPlanes(1);
+  window->SetSize(s.width, s.height);
+  window->AddRenderer(renderer);
+
+  // A given camera is in the mesh's coordinates, like the surface: mapped the same way.
+  const CameraPlacement placement =
+      s.camera ? drawing.cameraToDrawing(*s.camera) : placeCamera(s.view, glm::dvec3(0.0), 1.0);
+  vtkCamera* camera = renderer->GetActiveCamera();
+  camera->SetFocalPoint(placement.focalPoint.x, placement.focalPoint.y, placement.focalPoint.z);
+  camera->SetPosition(placement.position.x, placement.position.y, placement.position.z);
+  camera->SetViewUp(placement.viewUp.x, placement.viewUp.y, placement.viewUp.z);
+  camera->SetViewAngle(placement.viewAngleDegrees);
+  camera->SetParallelScale(placement.parallelScale);
+  camera->SetParallelProjection(placement.parallel);
+  renderer->ResetCameraClippingRange();
+
+  vtkNew<vtkRenderStepsPass> steps;
+  vtkNew<vtkAnisoAccumulationPass> pass;
+  pass->SetDelegatePass(steps);
+  pass->SetLighting(lighting);
+  pass->SetDisplaySettings(s.display);
+  pass->SetJitter(s.jitter);
+  pass->SetTargetFrames(s.frames);
+  renderer->SetPass(pass);
+
+  std::unique_ptr<AnisoMaterial> material;
+  std::shared_ptr<void> otherMaterial;
+  if (s.installMaterial)
+  {
+    otherMaterial = s.installMaterial(actor, renderer, lighting);
+  }
+  else
+  {
+    material = std::make_unique<AnisoMaterial>(lighting, s.material);
+    material->apply(actor, renderer);
+  }
+
+  RenderResult result;
+  result.frameSeconds.reserve(static_cast<std::size_t>(s.frames));
+  for (int frame = 0; frame < s.frames; ++frame)
+  {
+    const auto start = std::chrono::steady_clock::now();
+    window->Render();
+    window->WaitForCompletion();
+    const auto end = std::chrono::steady_clock::now();
+    result.frameSeconds.push_back(std::chrono::duration<double>(end - start).count());
+  }
+  if (pass->GetAccumulatedFrames() != s.frames)
+  {
+    throw errorAbout("render", "the OpenGL context could not render the frames");
+  }
+
+  auto* glWindow = vtkOpenGLRenderWindow::SafeDownCast(window);
+  glWindow->MakeCurrent();
+  if (const GLubyte* name = glGetString(GL_RENDERER))
+  {
+    result.renderer = reinterpret_cast<const char*>(name);
+  }
+  result.linear = pass->ReadAccumulation();
+  if (result.linear.empty())
+  {
+    throw errorAbout("render", "no image was rendered");
+  }
+
+  vtkNew<vtkUnsignedCharArray> pixels;
+  window->GetRGBACharPixelData(0, 0, s.width - 1, s.height - 1, 0, pixels);
+  result.display = Image(s.width, s.height, 4);
+  for (int y = 0; y < s.height; ++y)
+  {
+    const int row = s.height - 1 - y; // GL's first row is the bottom one
+    for (int x = 0; x < s.width; ++x)
+    {
+      for (int c = 0; c < 4; ++c)
+      {
+        result.display.at(x, y, c) =
+            pixels->GetValue((vtkIdType(row) * s.width + x) * 4 + c) / 255.0f;
+      }
+    }
+  }
+  for (int y = 0; y < s.height; ++y)
+  {
+    for (int x = 0; x < s.width; ++x)
+    {
+      result.coveredPixels += result.linear.at(x, y, 3) > 0.0f ? 1 : 0;
+    }
+  }
+  if (material)
+  {
+    result.variant = material->variant();
+    result.mapsDropped = material->mapsDropped();
+  }
+  return result;
+}
+} // namespace aniso

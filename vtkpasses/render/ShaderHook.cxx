@@ -1,0 +1,207 @@
+#include "vtkpasses/render/ShaderHook.h"
+
+#include "core/error.h"
+
+#include <algorithm>
+#include <vtkActor.h>
+#include <vtkCommand.h>
+#include <vtkDataObject.h>
+#include <vtkOpenGLPolyDataMapper.h>
+#include <vtkPolyData.h>
+#include <vtkRenderer.h>
+#include <vtkShaderProgram.h>
+#include <vtkShaderProperty.h>
+#include <vtkTextureObject.h>
+#include <vtkWeakPointer.h>
+
+namespace aniso
+{
+class ShaderHook::Impl
+{
+public:
+  vtkWeakPointer<vtkActor> actor;
+  vtkWeakPointer<vtkRenderer> renderer;
+  vtkWeakPointer<vtkOpenGLPolyDataMapper> mapper;
+  MeshCallback onMesh;
+  ShaderCallback onShader;
+  unsigned long updateShaderTag = 0;
+  unsigned long mapperEndTag = 0;
+  unsigned long rendererEndTag = 0;
+  ShaderCode installed;
+  std::vector<vtkWeakPointer<vtkTextureObject>> active; // activated for the current draw
+
+  void deactivate()
+  {
+    for (vtkTextureObject* texture : active)
+    {
+      if (texture)
+      {
+        texture->Deactivate();
+      }
+    }
+    active.clear();
+  }
+
+  void onRendererEnd(vtkObject*, unsigned long, void*) { deactivate(); }
+
+  void uninstall()
+  {
+    if (actor)
+    {
+      vtkShaderProperty* sp = actor->GetShaderProperty();
+      for (const auto& [tag, code] : installed.vertex)
+      {
+        sp->ClearVertexShaderReplacement(tag, true);
+      }
+      for (const auto& [tag, code] : installed.fragment)
+      {
+        sp->ClearFragmentShaderReplacement(tag, true);
+      }
+      actor->Modified();
+    }
+    if (mapper)
+    {
+      for (const auto& [attribute, array] : installed.attributes)
+      {
+        mapper->RemoveVertexAttributeMapping(attribute.c_str());
+      }
+    }
+    installed = ShaderCode{};
+  }
+
+  void onMapperEnd(vtkObject*, unsigned long, void*)
+  {
+    vtkPolyData* poly = mapper ? mapper->GetInput() : nullptr;
+    if (poly && onMesh)
+    {
+      onMesh(poly);
+    }
+  }
+
+  void onUpdateShader(vtkObject*, unsigned long, void* data)
+  {
+    auto* program = static_cast<vtkShaderProgram*>(data);
+    if (!program || !actor || !renderer || !onShader)
+    {
+      return;
+    }
+    try
+    {
+      onShader(program);
+    }
+    catch (const std::exception& e)
+    {
+      vtkGenericWarningMacro("material: " << e.what());
+    }
+  }
+};
+
+ShaderHook::ShaderHook() : impl_(std::make_unique<Impl>()) {}
+
+ShaderHook::~ShaderHook()
+{
+  detach();
+}
+
+void ShaderHook::attach(vtkActor* actor, vtkRenderer* renderer, MeshCallback onMesh,
+                        ShaderCallback onShader)
+{
+  if (!actor || !renderer)
+  {
+    throw errorAbout("material", "needs an actor and a renderer");
+  }
+  auto* mapper = vtkOpenGLPolyDataMapper::SafeDownCast(actor->GetMapper());
+  if (!mapper)
+  {
+    throw errorAbout("material", "the actor's mapper is not an OpenGL polydata mapper");
+  }
+  detach();
+  Impl& d = *impl_;
+  d.actor = actor;
+  d.renderer = renderer;
+  d.mapper = mapper;
+  d.onMesh = std::move(onMesh);
+  d.onShader = std::move(onShader);
+  d.updateShaderTag = mapper->AddObserver(vtkCommand::UpdateShaderEvent, &d, &Impl::onUpdateShader);
+  d.mapperEndTag = mapper->AddObserver(vtkCommand::EndEvent, &d, &Impl::onMapperEnd);
+  d.rendererEndTag = renderer->AddObserver(vtkCommand::EndEvent, &d, &Impl::onRendererEnd);
+  // If the mesh is already there, the variant is known now; otherwise the first draw tells.
+  if (vtkPolyData* poly = mapper->GetInput())
+  {
+    if (poly->GetNumberOfPoints() > 0)
+    {
+      d.onMapperEnd(nullptr, 0, nullptr);
+    }
+  }
+  actor->Modified();
+}
+
+void ShaderHook::detach()
+{
+  Impl& d = *impl_;
+  d.uninstall();
+  d.deactivate();
+  if (d.renderer)
+  {
+    d.renderer->RemoveObserver(d.rendererEndTag);
+  }
+  if (d.mapper)
+  {
+    d.mapper->RemoveObserver(d.updateShaderTag);
+    d.mapper->RemoveObserver(d.mapperEndTag);
+  }
+  d.mapper = nullptr;
+  d.actor = nullptr;
+  d.renderer = nullptr;
+  d.onMesh = nullptr;
+  d.onShader = nullptr;
+}
+
+void ShaderHook::bindTexture(vtkShaderProgram* program, const char* sampler,
+                             vtkTextureObject* texture)
+{
+  texture->Activate();
+  program->SetUniformi(sampler, texture->GetTextureUnit());
+  std::vector<vtkWeakPointer<vtkTextureObject>>& active = impl_->active;
+  if (std::find(active.begin(), active.end(), texture) == active.end())
+  {
+    active.emplace_back(texture);
+  }
+}
+
+void ShaderHook::install(const ShaderCode& code)
+{
+  Impl& d = *impl_;
+  if (!d.actor || !d.mapper)
+  {
+    return;
+  }
+  d.uninstall();
+  vtkShaderProperty* sp = d.actor->GetShaderProperty();
+  for (const auto& [tag, text] : code.vertex)
+  {
+    sp->AddVertexShaderReplacement(tag, true, tag + "\n" + text, false);
+  }
+  for (const auto& [tag, text] : code.fragment)
+  {
+    sp->AddFragmentShaderReplacement(tag, true, tag + "\n" + text, false);
+  }
+  for (const auto& [attribute, array] : code.attributes)
+  {
+    d.mapper->MapDataArrayToVertexAttribute(attribute.c_str(), array.c_str(),
+                                            vtkDataObject::FIELD_ASSOCIATION_POINTS, -1);
+  }
+  d.installed = code;
+  d.actor->Modified();
+}
+
+vtkActor* ShaderHook::actor() const
+{
+  return impl_->actor;
+}
+
+vtkRenderer* ShaderHook::renderer() const
+{
+  return impl_->renderer;
+}
+} // namespace aniso

@@ -1,0 +1,83 @@
+#include "vtkpasses/render/ViewSettings.h"
+
+#include "core/error.h"
+
+#include <algorithm>
+#include <cmath>
+#include <glm/geometric.hpp>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+
+namespace aniso
+{
+glm::dvec3 viewDirectionFromName(const std::string& name, const std::string& subject)
+{
+  if (name.size() == 2 && (name[0] == '+' || name[0] == '-'))
+  {
+    const double sign = name[0] == '+' ? 1.0 : -1.0;
+    switch (name[1])
+    {
+    case 'x':
+      return {sign, 0.0, 0.0};
+    case 'y':
+      return {0.0, sign, 0.0};
+    case 'z':
+      return {0.0, 0.0, sign};
+    default:
+      break;
+    }
+  }
+  throw errorAbout(subject, "'" + name + "' is not one of +x, -x, +y, -y, +z, -z");
+}
+
+glm::dvec3 viewDirectionFromAngles(double azimuthDegrees, double elevationDegrees)
+{
+  const double a = azimuthDegrees * M_PI / 180.0;
+  const double e = elevationDegrees * M_PI / 180.0;
+  return {std::sin(a) * std::cos(e), -std::cos(a) * std::cos(e), std::sin(e)};
+}
+
+void boundingSphere(vtkPolyData* surface, glm::dvec3& centre, double& radius)
+{
+  double bounds[6];
+  surface->GetBounds(bounds);
+  centre = {0.5 * (bounds[0] + bounds[1]), 0.5 * (bounds[2] + bounds[3]),
+            0.5 * (bounds[4] + bounds[5])};
+  double r2 = 0.0;
+  vtkPoints* points = surface->GetPoints();
+  for (vtkIdType i = 0; points && i < points->GetNumberOfPoints(); ++i)
+  {
+    double p[3];
+    points->GetPoint(i, p);
+    const glm::dvec3 d = glm::dvec3(p[0], p[1], p[2]) - centre;
+    r2 = std::max(r2, glm::dot(d, d));
+  }
+  radius = std::sqrt(r2);
+}
+
+CameraPlacement placeCamera(const ViewSettings& view, const glm::dvec3& centre, double radius)
+{
+  if (!(radius > 0.0) || !std::isfinite(radius))
+  {
+    throw errorAbout("view", "the object has no extent");
+  }
+  const double length = glm::length(view.direction);
+  if (!(length > 0.0) || !std::isfinite(length))
+  {
+    throw errorAbout("view", "no view direction");
+  }
+  const glm::dvec3 d = view.direction / length;
+  CameraPlacement c;
+  c.focalPoint = centre;
+  c.parallel = view.parallel;
+  c.viewAngleDegrees = view.viewAngleDegrees;
+  const double halfHeight = radius * view.margin;
+  c.parallelScale = halfHeight;
+  // Perspective: the sphere's silhouette subtends asin(r / distance); keep it inside the view.
+  const double halfAngle = 0.5 * view.viewAngleDegrees * M_PI / 180.0;
+  const double distance = halfHeight / std::sin(halfAngle);
+  c.position = centre + d * distance;
+  c.viewUp = std::abs(d.z) > 0.999 ? glm::dvec3(0.0, 1.0, 0.0) : glm::dvec3(0.0, 0.0, 1.0);
+  return c;
+}
+} // namespace aniso

@@ -1,0 +1,416 @@
+// Anisotropic material, fragment shader declarations: Ashikhmin-Shirley specular by importance
+// sampling of the environment cubemap (docs/METHOD.md, source 1), Lambert diffuse from SH9
+// irradiance, and the optional frame maps. The #define lines above this text select the variant.
+#ifdef ANISO_HAVE_NORMALS
+in vec3 anisoNormalWC;
+#endif
+#ifdef ANISO_HAVE_TANGENTS
+in vec3 anisoTangentWC;
+#endif
+#ifdef ANISO_HAVE_TCOORDS
+in vec2 anisoTCoord;
+#endif
+in vec4 anisoClipPosition;
+
+uniform mat4 anisoClipToWorld;       // inverse of the camera's world-to-clip transform
+uniform vec3 anisoF0;                // Schlick reflectance at normal incidence, linear RGB
+uniform vec3 anisoAlbedo;            // Lambert albedo, linear RGB
+uniform int anisoSampleCount;        // N, importance samples per fragment and frame
+uniform vec2 anisoFrameShift;        // Cranley-Patterson shift of this progressive frame
+uniform float anisoLog2FrameCount;   // log2(k + 1) for progressive frame k
+uniform mat3 anisoWorldToEnvironment; // undoes the environment rotation about Z
+uniform samplerCube anisoEnvironment;
+uniform float anisoLog2TexelSolidAngle; // log2(4 pi / (6 size^2)) of mip level 0
+uniform float anisoMaxLod;
+uniform float anisoLodAnisotropy; // 0.25 log2((n_max + 1) / (n_min + 1)), see anisoSampleLod
+uniform float anisoLodBias;       // added to every filtered level
+uniform float anisoPixelDecorrelation; // 1: each pixel shifts its sample set by a hash, 0: not
+uniform vec3 anisoIrradianceSH[9]; // SH9 radiance coefficients times the cosine-lobe factors
+
+#ifdef ANISO_HALF_VECTORS_FROM_LUT
+uniform sampler2D anisoHalfVectorLut; // RGBA32F: h in tangent space, log2 p_h
+uniform int anisoHalfVectorLutSize;
+#endif
+#if !defined(ANISO_HALF_VECTORS_FROM_LUT) || defined(ANISO_ENVIRONMENT_MIS)
+uniform vec2 anisoExponents; // (n_u, n_v)
+#endif
+#ifdef ANISO_ENVIRONMENT_MIS
+// Environment importance sampling (core/env/env_sampling.h), in environment coordinates.
+uniform sampler2D anisoEnvCdf; // R32F: row y < H the CDF of grid row y, row H the marginal
+uniform sampler2D anisoEnvPdf; // R32F, W x H: density per solid angle of each grid texel
+uniform sampler2D anisoEnvGuide; // R32F, as anisoEnvCdf: entry j = the interval of u = j / count
+uniform ivec2 anisoEnvGrid;    // (W, H)
+uniform float anisoLobeFraction; // share of the lobe technique in the one-sample MIS
+#endif
+#ifdef ANISO_METHOD_SPLIT_SUM
+uniform sampler2D anisoBrdfLut; // RG32F: s, b with F0 s + b the directional albedo
+#endif
+#ifdef ANISO_NORMAL_MAP
+uniform sampler2D anisoNormalMap; // tangent-space normal, signed
+#endif
+#ifdef ANISO_QUATERNION_MAP
+uniform sampler2D anisoQuaternionMap; // (a, b, c) per docs/METHOD.md
+#endif
+#ifdef ANISO_TPR_MAP
+uniform sampler2D anisoTprMap; // (x, y): rotated tangent in the quaternion frame's plane
+#endif
+#ifdef ANISO_HEIGHT_MAP
+uniform sampler2D anisoHeightMap; // R: height in [0, 1], 1 at the top surface
+uniform float anisoHeightScale;     // depth of the relief in texture-coordinate units
+#endif
+#ifdef ANISO_ALBEDO_MAP
+uniform sampler2D anisoAlbedoMap; // linear RGB, multiplies anisoAlbedo
+#endif
+#ifdef ANISO_OCCLUSION_MAP
+uniform sampler2D anisoOcclusionMap; // R: ambient occlusion of diffuse and specular light
+#endif
+#ifdef ANISO_METALLIC_MAP
+uniform sampler2D anisoMetallicMap; // R: 1 = the metal F0 and no diffuse, 0 = dielectric
+#endif
+
+const float anisoPi = 3.14159265358979;
+
+// Van der Corput radical inverse in base 2 (bit reversal).
+float anisoRadicalInverse2(uint bits)
+{
+  bits = (bits << 16u) | (bits >> 16u);
+  bits = ((bits & 0x55555555u) << 1u) | ((bits & 0xAAAAAAAAu) >> 1u);
+  bits = ((bits & 0x33333333u) << 2u) | ((bits & 0xCCCCCCCCu) >> 2u);
+  bits = ((bits & 0x0F0F0F0Fu) << 4u) | ((bits & 0xF0F0F0F0u) >> 4u);
+  bits = ((bits & 0x00FF00FFu) << 8u) | ((bits & 0xFF00FF00u) >> 8u);
+  return float(bits) * 2.3283064365386963e-10;
+}
+
+// A per-pixel Cranley-Patterson shift (integer hash of the pixel): neighbouring pixels use
+// differently rotated point sets, so the error of a few samples shows as fine noise that
+// progressive frames average out, not as bands that follow the environment.
+vec2 anisoPixelShift()
+{
+  uvec2 p = uvec2(gl_FragCoord.xy);
+  uint h = p.x * 1597334677u ^ p.y * 3812015801u;
+  h = (h ^ (h >> 16u)) * 0x7feb352du;
+  h = (h ^ (h >> 15u)) * 0x846ca68bu;
+  h ^= h >> 16u;
+  return anisoPixelDecorrelation * vec2(float(h & 0xffffu), float(h >> 16u)) * (1.0 / 65536.0);
+}
+
+// Hammersley point i of count, rotated by the frame and pixel shifts and kept strictly below 1.
+vec2 anisoSamplePoint(int i, int count, vec2 shift)
+{
+  vec2 p = vec2(float(i) / float(count), anisoRadicalInverse2(uint(i)));
+  return min(fract(p + shift), vec2(0.99999994));
+}
+
+// 1 - 2^x for x <= 0, without the cancellation of 1 - exp2(x) near 0 (sin^2 of the sharp
+// lobes of large exponents).
+float anisoOneMinusExp2(float x)
+{
+  float y = x * 0.69314718055994531;
+  if (y > -0.01)
+  {
+    return -y * (1.0 + y * (0.5 + y * (1.0 / 6.0)));
+  }
+  return 1.0 - exp2(x);
+}
+
+#ifdef ANISO_HALF_VECTORS_FROM_LUT
+vec4 anisoHalfVector(vec2 xi)
+{
+  ivec2 texel = min(ivec2(xi * float(anisoHalfVectorLutSize)), ivec2(anisoHalfVectorLutSize - 1));
+  return texelFetch(anisoHalfVectorLut, texel, 0);
+}
+#else
+// The AS quadrant construction: phi = atan(sqrt((n_u+1)/(n_v+1)) tan(pi x / 2)) in atan2 form
+// (no tan(pi/2)), mirrored into four quadrants; cos(theta) = (1 - xi2)^(1/(e + 1)) with
+// e = n_u cos^2 phi + n_v sin^2 phi, in log2 so that neither the power nor the density
+// overflows. Returns h in tangent space and log2 p_h(h).
+vec4 anisoHalfVector(vec2 xi)
+{
+  float nu = anisoExponents.x;
+  float nv = anisoExponents.y;
+  float quadrant = min(floor(4.0 * xi.x), 3.0);
+  float x = 4.0 * xi.x - quadrant;
+  bool mirrored = quadrant == 1.0 || quadrant == 3.0;
+  if (mirrored)
+  {
+    x = 1.0 - x;
+  }
+  float a = 0.5 * anisoPi * x;
+  float phi = atan(sqrt(nu + 1.0) * sin(a), sqrt(nv + 1.0) * cos(a));
+  float cosPhi = cos(phi);
+  float sinPhi = sin(phi);
+  if (quadrant == 1.0 || quadrant == 2.0)
+  {
+    cosPhi = -cosPhi;
+  }
+  if (quadrant >= 2.0)
+  {
+    sinPhi = -sinPhi;
+  }
+  float e = nu * cosPhi * cosPhi + nv * sinPhi * sinPhi;
+  float log2CosTheta = log2(max(1.0 - xi.y, 1e-30)) / (e + 1.0);
+  float cosTheta = exp2(log2CosTheta);
+  float sinTheta = sqrt(max(anisoOneMinusExp2(2.0 * log2CosTheta), 0.0));
+  float log2Norm = 0.5 * (log2(nu + 1.0) + log2(nv + 1.0)) - log2(2.0 * anisoPi);
+  return vec4(sinTheta * cosPhi, sinTheta * sinPhi, cosTheta, log2Norm + e * log2CosTheta);
+}
+#endif
+
+vec3 anisoEnvironmentRadiance(vec3 directionWorld, float lod)
+{
+  return textureLod(anisoEnvironment, anisoWorldToEnvironment * directionWorld, lod).rgb;
+}
+
+// Filtered importance sampling: the level whose texels match the solid angle the sample
+// stands for, Omega_s = 1 / (N p_l) (p_l the density of l per solid angle), against Omega_p of
+// level 0. An anisotropic lobe's samples spread along its broad axis only: Omega_s is an
+// ellipse whose short side, sqrt(Omega_s / r) with r = sqrt((n_max + 1) / (n_min + 1)) the
+// ratio of the lobe's widths, is the extent a texel must not exceed, hence the
+// anisoLodAnisotropy = 0.5 log2 r term (an isotropic footprint blurs the sharp axis).
+// Progressive frame k counts the N (k + 1) samples the mean then holds, so the blur (a bias)
+// fades as the view converges instead of staying at the first frame's.
+float anisoSampleLod(float log2PdfLight, int count)
+{
+#ifdef ANISO_FILTERED
+  float log2SampleSolidAngle = -log2PdfLight - log2(float(count)) - anisoLog2FrameCount;
+  float lod = 0.5 * (log2SampleSolidAngle - anisoLog2TexelSolidAngle) - anisoLodAnisotropy;
+  return clamp(lod + anisoLodBias, 0.0, anisoMaxLod);
+#else
+  return 0.0;
+#endif
+}
+
+#if !defined(ANISO_HALF_VECTORS_FROM_LUT) || defined(ANISO_ENVIRONMENT_MIS)
+// log2 of the AS half-vector density sqrt((n_u+1)(n_v+1))/(2 pi) (n.h)^e for h in tangent
+// space, e = (n_u h_t^2 + n_v h_b^2) / (1 - h_n^2); -inf below the surface.
+float anisoLog2HalfVectorPdf(vec3 h)
+{
+  if (h.z <= 0.0)
+  {
+    return -1e30;
+  }
+  float nu = anisoExponents.x;
+  float nv = anisoExponents.y;
+  float tangential = h.x * h.x + h.y * h.y;
+  float e = tangential > 0.0 ? (nu * h.x * h.x + nv * h.y * h.y) / tangential : 0.5 * (nu + nv);
+  float log2Norm = 0.5 * (log2(nu + 1.0) + log2(nv + 1.0)) - log2(2.0 * anisoPi);
+  return log2Norm + e * log2(h.z);
+}
+#endif
+
+#ifdef ANISO_ENVIRONMENT_MIS
+// Index i in [0, count) with cdf(i) <= x < cdf(i + 1) in row `row` of the CDF table, by
+// bisection between the guide table's entries for floor(x count) and the next (few steps or
+// none, instead of log2(count)): never an interval of zero width.
+int anisoFindInterval(int row, int count, float x)
+{
+  int j = min(int(x * float(count)), count - 1);
+  int lo = int(texelFetch(anisoEnvGuide, ivec2(j, row), 0).r);
+  int hi = int(texelFetch(anisoEnvGuide, ivec2(j + 1, row), 0).r) + 1;
+  while (hi - lo > 1)
+  {
+    int mid = (lo + hi) / 2;
+    if (texelFetch(anisoEnvCdf, ivec2(mid, row), 0).r <= x)
+    {
+      lo = mid;
+    }
+    else
+    {
+      hi = mid;
+    }
+  }
+  return lo;
+}
+
+// A direction (environment coordinates) of the environment distribution and its density:
+// a row from the marginal CDF, a column from the row's CDF, then uniform in (phi, cos theta)
+// inside the texel, as EnvironmentDistribution::sample does.
+vec4 anisoSampleEnvironment(vec2 xi)
+{
+  int w = anisoEnvGrid.x;
+  int h = anisoEnvGrid.y;
+  int y = anisoFindInterval(h, h, xi.y);
+  float r0 = texelFetch(anisoEnvCdf, ivec2(y, h), 0).r;
+  float r1 = texelFetch(anisoEnvCdf, ivec2(y + 1, h), 0).r;
+  float t = clamp((xi.y - r0) / max(r1 - r0, 1e-30), 0.0, 1.0);
+  int x = anisoFindInterval(y, w, xi.x);
+  float c0 = texelFetch(anisoEnvCdf, ivec2(x, y), 0).r;
+  float c1 = texelFetch(anisoEnvCdf, ivec2(x + 1, y), 0).r;
+  float s = clamp((xi.x - c0) / max(c1 - c0, 1e-30), 0.0, 1.0);
+  float zTop = cos(anisoPi * float(y) / float(h));
+  float zBottom = cos(anisoPi * float(y + 1) / float(h));
+  float z = clamp(mix(zTop, zBottom, t), -1.0, 1.0);
+  float sinTheta = sqrt(max(1.0 - z * z, 0.0));
+  float phi = anisoPi - 2.0 * anisoPi * (float(x) + s) / float(w);
+  return vec4(sinTheta * cos(phi), sinTheta * sin(phi), z,
+              texelFetch(anisoEnvPdf, ivec2(x, y), 0).r);
+}
+
+// Density of the environment distribution at direction d (environment coordinates).
+float anisoEnvironmentPdf(vec3 d)
+{
+  float u = fract(0.5 - atan(d.y, d.x) * (0.5 / anisoPi));
+  float theta = acos(clamp(d.z / max(length(d), 1e-30), -1.0, 1.0));
+  vec2 grid = vec2(anisoEnvGrid);
+  ivec2 texel = clamp(ivec2(vec2(u, theta / anisoPi) * grid), ivec2(0), anisoEnvGrid - 1);
+  return texelFetch(anisoEnvPdf, texel, 0).r;
+}
+#endif
+
+#ifdef ANISO_METHOD_SPLIT_SUM
+// BRDF LUT coordinates: u = (2/pi) atan(|b.v| / |t.v|), v = sqrt(n.v).
+vec2 anisoBrdfLutCoords(vec3 t, vec3 b, vec3 n, vec3 v)
+{
+  float tv = abs(dot(t, v));
+  float bv = abs(dot(b, v));
+  float u = tv + bv > 0.0 ? atan(bv, tv) * (2.0 / anisoPi) : 0.0;
+  return vec2(u, sqrt(max(dot(n, v), 0.0)));
+}
+#endif
+
+// Outgoing specular radiance towards v from the frame (t, b, n), by N importance samples of
+// the half vector: `exact` weights each by F(v.h)(n.l)/max(n.l, n.v) / N; `split-sum`
+// normalises sum L (n.l) / sum (n.l) and multiplies by F0 s + b from the BRDF LUT.
+// With environment MIS (`exact` only), point i takes the lobe technique when its first
+// coordinate is below c = anisoLobeFraction, the environment's otherwise (so the Hammersley set
+// splits in proportion), and every sample is weighted by f (n.l) / (c p_lobe + (1 - c) p_env)
+// (one-sample MIS, balance heuristic), where f (n.l) = AS weight x p_lobe(l).
+vec3 anisoSpecular(vec3 t, vec3 b, vec3 n, vec3 v, vec3 f0)
+{
+  int count = max(anisoSampleCount, 1);
+  float nDotV = dot(n, v);
+  vec2 shift = fract(anisoFrameShift + anisoPixelShift());
+  vec3 sum = vec3(0.0);
+#ifdef ANISO_METHOD_SPLIT_SUM
+  float weight = 0.0;
+#endif
+#ifdef ANISO_ENVIRONMENT_MIS
+  float c = anisoLobeFraction;
+  mat3 tbn = mat3(t, b, n);
+  mat3 environmentToWorld = transpose(anisoWorldToEnvironment);
+#endif
+  for (int i = 0; i < count; ++i)
+  {
+    vec2 xi = anisoSamplePoint(i, count, shift);
+#ifdef ANISO_ENVIRONMENT_MIS
+    vec3 l;
+    vec3 h;
+    float pdfEnvironment;
+    if (xi.x < c)
+    {
+      vec4 hs = anisoHalfVector(vec2(min(xi.x / c, 0.99999994), xi.y));
+      h = tbn * hs.xyz;
+      l = 2.0 * dot(v, h) * h - v;
+      pdfEnvironment = anisoEnvironmentPdf(anisoWorldToEnvironment * l);
+    }
+    else
+    {
+      vec4 ls = anisoSampleEnvironment(vec2(min((xi.x - c) / (1.0 - c), 0.99999994), xi.y));
+      l = environmentToWorld * ls.xyz;
+      h = normalize(v + l);
+      pdfEnvironment = ls.w;
+    }
+    float vDotH = dot(v, h);
+    float nDotL = dot(n, l);
+    if (vDotH <= 0.0 || nDotL <= 0.0)
+    {
+      continue;
+    }
+    // p_lobe(l) = p_h / (4 v.h); the lobe's own samples use the analytic density as well, so
+    // both techniques weigh every direction alike.
+    float log2PdfLobe =
+      anisoLog2HalfVectorPdf(vec3(dot(h, t), dot(h, b), dot(h, n))) - log2(4.0 * vDotH);
+    float pdfLobe = exp2(log2PdfLobe);
+    float pdfMixture = c * pdfLobe + (1.0 - c) * pdfEnvironment;
+    if (!(pdfMixture > 0.0))
+    {
+      continue;
+    }
+    vec3 radiance = anisoEnvironmentRadiance(l, anisoSampleLod(log2(pdfMixture), count));
+    float m = clamp(1.0 - vDotH, 0.0, 1.0);
+    float chi = m * m * m * m * m;
+    sum += radiance * (f0 + (1.0 - f0) * chi) * (nDotL / max(nDotL, nDotV)) *
+      (pdfLobe / pdfMixture);
+#else
+    vec4 hs = anisoHalfVector(xi);
+    vec3 h = hs.x * t + hs.y * b + hs.z * n;
+    float vDotH = dot(v, h);
+    if (vDotH <= 0.0)
+    {
+      continue;
+    }
+    vec3 l = 2.0 * vDotH * h - v;
+    float nDotL = dot(n, l);
+    if (nDotL <= 0.0)
+    {
+      continue;
+    }
+    vec3 radiance = anisoEnvironmentRadiance(l, anisoSampleLod(hs.w - log2(4.0 * vDotH), count));
+#ifdef ANISO_METHOD_SPLIT_SUM
+    sum += radiance * nDotL;
+    weight += nDotL;
+#else
+    float m = clamp(1.0 - vDotH, 0.0, 1.0);
+    float chi = m * m * m * m * m;
+    sum += radiance * (f0 + (1.0 - f0) * chi) * (nDotL / max(nDotL, nDotV));
+#endif
+#endif
+  }
+#ifdef ANISO_METHOD_SPLIT_SUM
+  vec3 prefiltered = weight > 0.0 ? sum / weight : vec3(0.0);
+  vec2 sizeBias = textureLod(anisoBrdfLut, anisoBrdfLutCoords(t, b, n, v), 0.0).rg;
+  return prefiltered * (f0 * sizeBias.x + sizeBias.y);
+#else
+  return sum / float(count);
+#endif
+}
+
+// E(n) from the SH9 coefficients (real basis, order Y00, Y1-1, Y10, Y11, Y2-2, Y2-1, Y20, Y21,
+// Y22), already multiplied by the cosine-lobe factors pi, 2pi/3, pi/4.
+vec3 anisoIrradiance(vec3 normalWorld)
+{
+  vec3 d = anisoWorldToEnvironment * normalWorld;
+  return anisoIrradianceSH[0] * 0.282094792 +
+    anisoIrradianceSH[1] * (0.488602512 * d.y) + anisoIrradianceSH[2] * (0.488602512 * d.z) +
+    anisoIrradianceSH[3] * (0.488602512 * d.x) + anisoIrradianceSH[4] * (1.092548431 * d.x * d.y) +
+    anisoIrradianceSH[5] * (1.092548431 * d.y * d.z) +
+    anisoIrradianceSH[6] * (0.315391565 * (3.0 * d.z * d.z - 1.0)) +
+    anisoIrradianceSH[7] * (1.092548431 * d.x * d.z) +
+    anisoIrradianceSH[8] * (0.546274215 * (d.x * d.x - d.y * d.y));
+}
+
+// A unit vector orthogonal to n, the same choice as the core's Frame::fromNormalTangent.
+vec3 anisoAnyPerpendicular(vec3 n)
+{
+  vec3 axis = abs(n.x) < 0.9 ? vec3(1.0, 0.0, 0.0) : vec3(0.0, 1.0, 0.0);
+  return normalize(axis - dot(axis, n) * n);
+}
+
+#ifdef ANISO_HEIGHT_MAP
+float anisoDepthAt(vec2 uv, vec2 duvdx, vec2 duvdy)
+{
+  return 1.0 - textureGrad(anisoHeightMap, uv, duvdx, duvdy).r;
+}
+
+// Parallax occlusion mapping: march the view ray (tangent space, towards the eye) down through
+// the height field in layers, then interpolate between the last two layers.
+vec2 anisoParallaxOcclusion(vec2 uv, vec3 viewTangent, vec2 duvdx, vec2 duvdy)
+{
+  float layers = mix(32.0, 8.0, clamp(viewTangent.z, 0.0, 1.0));
+  float layerDepth = 1.0 / layers;
+  vec2 delta = viewTangent.xy / max(viewTangent.z, 0.05) * anisoHeightScale / layers;
+  float depth = 0.0;
+  float mapDepth = anisoDepthAt(uv, duvdx, duvdy);
+  for (int i = 0; i < 64 && depth < mapDepth; ++i)
+  {
+    uv -= delta;
+    depth += layerDepth;
+    mapDepth = anisoDepthAt(uv, duvdx, duvdy);
+  }
+  vec2 previous = uv + delta;
+  float after = mapDepth - depth;
+  float before = anisoDepthAt(previous, duvdx, duvdy) - depth + layerDepth;
+  float w = after - before != 0.0 ? after / (after - before) : 0.0;
+  return mix(uv, previous, clamp(w, 0.0, 1.0));
+}
+#endif

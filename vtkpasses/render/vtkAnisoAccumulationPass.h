@@ -1,0 +1,184 @@
+#pragma once
+// Progressive refinement and display for the anisotropic materials.
+//
+// Each Render() draws the delegate (usually a vtkRenderStepsPass) into a float RGBA frame,
+// puts the background behind the surfaces (environment along the view rays, a colour, or
+// nothing), and folds the frame into a float running mean. Frame k asks the materials for the
+// sample-set shift frameShift(k) (through FRAME_SHIFT() on the renderer's information) and,
+// with jitter on, moves the camera by a sub-pixel offset so edges converge anti-aliased.
+// The mean is then drawn into whatever framebuffer was bound, through the display transform
+// (exposure, tone mapping, sRGB). The bound framebuffer is saved and restored; 0 is never
+// bound. Any change of camera, props, size or lighting starts the mean over; once the target
+// frame count is reached the scene is not drawn again until something changes.
+//
+// The mean is linear radiance: RGB everything seen (surfaces and background), alpha the
+// coverage of the surfaces.
+//
+// A frame may be drawn in horizontal bands (SetFrameBands), one band per Render(): the surfaces
+// and the background are drawn and folded into the mean only within the band's rows (scissor),
+// so a costly frame keeps the caller busy for a fraction of its cost at a time. The frame counts
+// as accumulated once its last band is drawn; every band of it uses the frame's own shift and
+// jitter, so the mean is the same as with whole frames. Bands take equal shares of the rows'
+// cost, not of the rows: each band's render is timed (waiting for the GL to finish it), its time
+// spread over its rows, and the bands of the next frame (of this view or the next at the same
+// height) cut so each costs as much as the others: where the surface is, bands are narrower.
+// While the first frame of a new size is in bands, the rows it has not drawn yet show the mean
+// of the size before, scaled (a view returning from a reduced resolution shows the reduced
+// picture there, not empty rows).
+#include "vtkpasses/render/DisplaySettings.h"
+#include "core/image/image.h"
+
+#include <cstdint>
+#include <glm/mat4x4.hpp>
+#include <memory>
+#include <string>
+#include <vector>
+#include <vtkRenderPass.h>
+#include <vtkWeakPointer.h>
+
+class vtkInformationDoubleVectorKey;
+class vtkInformationIntegerKey;
+class vtkOpenGLFramebufferObject;
+class vtkOpenGLQuadHelper;
+class vtkOpenGLRenderWindow;
+class vtkRenderer;
+class vtkTextureObject;
+
+namespace aniso
+{
+class EnvironmentLighting;
+}
+
+class vtkAnisoAccumulationPass : public vtkRenderPass
+{
+public:
+  static vtkAnisoAccumulationPass* New();
+  vtkTypeMacro(vtkAnisoAccumulationPass, vtkRenderPass) void PrintSelf(ostream& os,
+                                                                       vtkIndent indent) override;
+
+  void Render(const vtkRenderState* s) override;
+  void ReleaseGraphicsResources(vtkWindow* w) override;
+
+  // The pass that draws the scene.
+  vtkGetObjectMacro(DelegatePass, vtkRenderPass);
+  virtual void SetDelegatePass(vtkRenderPass* delegatePass);
+
+  // Shift of the sample set for the frame being drawn (2 doubles), set on the renderer's
+  // information during the delegate's render; absent = (0, 0).
+  static vtkInformationDoubleVectorKey* FRAME_SHIFT();
+  // Index k of that frame (0 for the first after a reset), set alongside FRAME_SHIFT: filtered
+  // importance sampling blurs less as the mean gathers more samples.
+  static vtkInformationIntegerKey* FRAME_INDEX();
+
+  void SetDisplaySettings(const aniso::DisplaySettings& settings);
+  const aniso::DisplaySettings& GetDisplaySettings() const { return this->Display; }
+
+  // Lighting whose environment is the background (BackgroundMode::Environment).
+  void SetLighting(std::shared_ptr<aniso::EnvironmentLighting> lighting);
+
+  // Frames to accumulate before stopping (0: never stop).
+  void SetTargetFrames(int frames);
+  int GetTargetFrames() const { return this->TargetFrames; }
+  // Sub-pixel camera jitter per frame (anti-aliasing, fractional coverage). Off: every frame
+  // samples pixel centres, as a per-pixel reference does.
+  void SetJitter(bool jitter);
+  bool GetJitter() const { return this->Jitter; }
+
+  // Bands per frame (at least 1, at most the rows), top to bottom. A change takes effect when
+  // the next frame starts; the frame in progress keeps its bands.
+  void SetFrameBands(int bands);
+  int GetFrameBands() const { return this->PendingBands; }
+  // The band of the current frame the next Render() draws; 0 when it starts a new frame (the
+  // last frame is complete).
+  int GetNextBand() const { return this->Band; }
+  // Bands of the frame in progress (or of the last one drawn).
+  int GetCurrentFrameBands() const { return this->Bands; }
+  // Their rows: band b spans GL rows [edges[b + 1], edges[b]) (GL counts rows from the bottom).
+  const std::vector<int>& GetBandEdges() const { return this->BandEdges; }
+  // The cost of each GL row (any unit) by which the next frame's bands are cut, as the bands'
+  // times set it; given here, it holds for any view until frames in bands measure it anew (the
+  // pass's tests). Measured costs belong to the view they were measured in: a frame of another
+  // view (the camera moved), or of a height not measured, is cut by the rows' share of the
+  // visible geometry (its points projected) over a floor of a quarter of the mean, as the
+  // surface may have moved to rows that cost nothing before. The first frame of a run replaces
+  // what earlier runs measured; later frames of the run average with it.
+  void SetRowCosts(const std::vector<double>& costs);
+  const std::vector<double>& GetRowCosts() const { return this->RowCosts; }
+
+  int GetAccumulatedFrames() const { return this->AccumulatedFrames; }
+  bool IsConverged() const;
+  // Forget the mean: the next Render() starts over.
+  void Reset();
+
+  // The running mean (RGBA, linear, row 0 at the top), read back from the GPU in the window of
+  // the last Render(). Empty if nothing was rendered yet.
+  aniso::Image ReadAccumulation();
+
+protected:
+  vtkAnisoAccumulationPass();
+  ~vtkAnisoAccumulationPass() override;
+
+private:
+  vtkAnisoAccumulationPass(const vtkAnisoAccumulationPass&) = delete;
+  void operator=(const vtkAnisoAccumulationPass&) = delete;
+
+  // What a frame depends on; a difference from the last frame restarts the mean.
+  struct Signature
+  {
+    std::vector<double> values;
+    bool operator==(const Signature& o) const { return values == o.values; }
+  };
+  Signature ComputeSignature(const vtkRenderState* s, int width, int height) const;
+  void PrepareTargets(vtkOpenGLRenderWindow* window, int width, int height);
+  // BandEdges for this->Bands bands of HEIGHT rows, seen by the camera CLIP (world to clip; its
+  // values as a vector, as RowCostsView holds them).
+  void PlanBandRows(const vtkRenderState* state, int height, const glm::dmat4& clipMatrix,
+                    const std::vector<double>& clip);
+  // RowCosts from the bands' times of the frame just completed, seen by the camera CLIP.
+  void UpdateRowCosts(int height, const std::vector<double>& clip);
+  // Rows [y0, y1) (GL order, 0 at the bottom) of the frame are drawn.
+  void RenderFrame(const vtkRenderState* s, vtkOpenGLRenderWindow* window, int width, int height,
+                   int y0, int y1);
+  void DrawBackground(vtkOpenGLRenderWindow* window, vtkRenderer* renderer);
+  void Accumulate(vtkOpenGLRenderWindow* window, int width, int height, int y0, int y1);
+  // Shows rows [y0, height) of the mean (all of it with y0 = 0).
+  void Present(vtkOpenGLRenderWindow* window, int x, int y, int width, int height, int y0);
+  vtkOpenGLQuadHelper* Quad(vtkOpenGLRenderWindow* window,
+                            std::unique_ptr<vtkOpenGLQuadHelper>& quad, const char* fragmentSource,
+                            const std::string& defines, std::string& builtDefines);
+
+  vtkRenderPass* DelegatePass = nullptr;
+  aniso::DisplaySettings Display;
+  std::shared_ptr<aniso::EnvironmentLighting> Lighting;
+  int TargetFrames = 0;
+  bool Jitter = true;
+  int AccumulatedFrames = 0;
+  int PendingBands = 1;
+  int Bands = 1;                    // of the frame in progress
+  int Band = 0;                     // drawn next
+  std::vector<int> BandEdges;       // GL rows: band b spans [BandEdges[b + 1], BandEdges[b])
+  std::vector<double> RowCosts;     // per GL row, measured at the last height banded
+  std::vector<double> RowCostsView; // the camera they were measured with (empty: any)
+  std::vector<double> BandSeconds;  // of the frame in progress
+  Signature LastSignature;
+  int LastRenderedProps = 0;
+
+  vtkWeakPointer<vtkOpenGLRenderWindow> LastWindow; // where the targets live
+  int Width = 0;
+  int Height = 0;
+  vtkTextureObject* FrameColor = nullptr;
+  vtkTextureObject* FrameDepth = nullptr;
+  vtkTextureObject* AccumulationColor = nullptr;
+  // The mean before the last change of size, shown under the rows the new size's first frame has
+  // not drawn yet (while PreviousShown).
+  vtkTextureObject* PreviousColor = nullptr;
+  bool PreviousShown = false;
+  vtkOpenGLFramebufferObject* FrameBuffer = nullptr;
+  vtkOpenGLFramebufferObject* AccumulationBuffer = nullptr;
+  std::unique_ptr<vtkOpenGLQuadHelper> BackgroundQuad;
+  std::unique_ptr<vtkOpenGLQuadHelper> AccumulateQuad;
+  std::unique_ptr<vtkOpenGLQuadHelper> DisplayQuad;
+  std::string BackgroundDefines;
+  std::string AccumulateDefines;
+  std::string DisplayDefines;
+};
