@@ -1,9 +1,9 @@
 // The aniso executable: dispatches to its subcommands.
 #include "app/bake_command.h"
-#include "bench/bench_command.h"
 #include "app/cli.h"
 #include "app/gui/run_gui.h"
 #include "app/render_command.h"
+#include "bench/bench_command.h"
 
 #include <iostream>
 #include <string>

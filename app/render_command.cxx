@@ -1,10 +1,5 @@
 #include "app/render_command.h"
 
-#include "vtkpasses/mesh/BrushingModel.h"
-#include "vtkpasses/mesh/BuiltinMeshes.h"
-#include "vtkpasses/mesh/MeshLoader.h"
-#include "vtkpasses/render/OffscreenRenderer.h"
-#include "vtkpasses/mesh/SurfacePreparation.h"
 #include "app/cli.h"
 #include "app/render_models.h"
 #include "core/env/environment.h"
@@ -13,6 +8,11 @@
 #include "core/maps/quaternion_map.h"
 #include "core/parameters/parameters.h"
 #include "core/quality/adaptive_quality.h"
+#include "vtkpasses/mesh/BrushingModel.h"
+#include "vtkpasses/mesh/BuiltinMeshes.h"
+#include "vtkpasses/mesh/MeshLoader.h"
+#include "vtkpasses/mesh/SurfacePreparation.h"
+#include "vtkpasses/render/OffscreenRenderer.h"
 
 #include <algorithm>
 #include <cctype>

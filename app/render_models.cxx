@@ -1,8 +1,8 @@
 #include "app/render_models.h"
 
-#include "vtkpasses/render/LitModelMaterial.h"
-#include "core/models/models.h"
 #include "app/render_surface_models.h"
+#include "core/models/models.h"
+#include "vtkpasses/render/LitModelMaterial.h"
 
 #include <memory>
 

@@ -2,9 +2,9 @@
 // The shading-model options of `aniso render`: --model NAME (core/models/models.h), --light
 // (repeatable) and --sample-material, kept apart from the environment material's options. A
 // model other than as-env is drawn through RenderSettings::installMaterial.
-#include "vtkpasses/render/OffscreenRenderer.h"
 #include "app/cli.h"
 #include "core/lights/light.h"
+#include "vtkpasses/render/OffscreenRenderer.h"
 
 #include <string>
 #include <vector>

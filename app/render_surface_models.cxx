@@ -1,13 +1,13 @@
 #include "app/render_surface_models.h"
 
-#include "vtkpasses/render/LeadrMaterial.h"
-#include "vtkpasses/render/MicrostructureMaterial.h"
+#include "app/render_models.h"
 #include "core/error.h"
 #include "core/leadr/leadr.h"
 #include "core/maps/map_files.h"
-#include "core/models/height_field.h"
 #include "core/microstructure/microstructure.h"
-#include "app/render_models.h"
+#include "core/models/height_field.h"
+#include "vtkpasses/render/LeadrMaterial.h"
+#include "vtkpasses/render/MicrostructureMaterial.h"
 
 #include <cmath>
 #include <memory>

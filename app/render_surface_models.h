@@ -2,11 +2,11 @@
 // The options of `aniso render` for the LEADR and microstructure models (--model leadr,
 // --model microstructure): the relief LEADR filters (--height-map, --normal-map or a built-in
 // one) and the structure, grid, masking, shadowing and BRDF of the microstructure sampling.
+#include "app/cli.h"
+#include "core/image/image.h"
 #include "vtkpasses/render/LeadrMaterial.h"
 #include "vtkpasses/render/MicrostructureMaterial.h"
 #include "vtkpasses/render/OffscreenRenderer.h"
-#include "app/cli.h"
-#include "core/image/image.h"
 
 #include <functional>
 #include <string_view>

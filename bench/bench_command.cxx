@@ -1,7 +1,7 @@
 #include "bench/bench_command.h"
 
-#include "bench/bench_run.h"
 #include "app/cli.h"
+#include "bench/bench_run.h"
 
 #include <algorithm>
 #include <filesystem>

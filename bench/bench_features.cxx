@@ -17,18 +17,18 @@
 //    before cost (shader compiles, texture uploads, LUT bakes and cache hits).
 //
 // Needs an X display (xvfb-run). Usage: bench_features [--rounds R] [--frames F] [--size S]
+#include "bench/render_session.h"
+#include "core/env/environment.h"
+#include "core/error.h"
+#include "core/lut/lut_cache.h"
+#include "core/maps/quaternion_map.h"
+#include "core/maps/tpr_map.h"
 #include "vtkpasses/mesh/BuiltinMeshes.h"
 #include "vtkpasses/render/DisplaySettings.h"
 #include "vtkpasses/render/MaterialSettings.h"
 #include "vtkpasses/render/MaterialShaderSource.h"
 #include "vtkpasses/render/OffscreenRenderer.h"
 #include "vtkpasses/render/ViewSettings.h"
-#include "core/env/environment.h"
-#include "core/error.h"
-#include "core/lut/lut_cache.h"
-#include "core/maps/quaternion_map.h"
-#include "core/maps/tpr_map.h"
-#include "bench/render_session.h"
 
 #include <algorithm>
 #include <cctype>

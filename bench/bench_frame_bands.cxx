@@ -6,10 +6,10 @@
 // run: the price of splitting, which a frame plan pays to keep each render within its budget.
 // Every render ends with glFinish, so the times are the rasteriser's work, not only its queue.
 // Run (X server needed): xvfb-run -a -s "-screen 0 1920x1080x24" bench_frame_bands [WxH]
-#include "vtkpasses/render/AnisoMaterial.h"
-#include "vtkpasses/mesh/BuiltinMeshes.h"
-#include "vtkpasses/render/EnvironmentLighting.h"
 #include "core/env/environment.h"
+#include "vtkpasses/mesh/BuiltinMeshes.h"
+#include "vtkpasses/render/AnisoMaterial.h"
+#include "vtkpasses/render/EnvironmentLighting.h"
 #include "vtkpasses/render/vtkAnisoAccumulationPass.h"
 
 #include <chrono>

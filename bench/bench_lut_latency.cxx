@@ -2,11 +2,11 @@
 // are rebaked (LutScheduler: debounced, off the UI thread, stale bakes cancelled). Prints the
 // largest gap between ticks of a 5 ms timer on the UI thread, and the bake and cache-hit
 // times. Run: QT_QPA_PLATFORM=offscreen bench_lut_latency [LUT_SIZE LUT_SAMPLES]
+#include "core/lut/lut_cache.h"
 #include "scene/LutScheduler.h"
+#include "scene/SceneEditor.h"
 #include "widgets/MaterialDock.h"
 #include "widgets/ParameterControls.h"
-#include "scene/SceneEditor.h"
-#include "core/lut/lut_cache.h"
 
 #include <QApplication>
 #include <QElapsedTimer>

@@ -8,17 +8,17 @@
 // luck does not decide a row.
 //
 // Needs an X display (xvfb-run). Usage: bench_mis_render [--size S] [--samples N] [--frames F]
-#include "vtkpasses/mesh/BuiltinMeshes.h"
-#include "vtkpasses/render/MaterialSettings.h"
 #include "bench/bench_scenes.h"
+#include "bench/mis_width_rule.h"
+#include "bench/pixel_geometry.h"
+#include "bench/reference_image.h"
+#include "bench/render_session.h"
 #include "core/env/env_sampling.h"
 #include "core/env/environment.h"
 #include "core/env/sun_sky.h"
-#include "bench/mis_width_rule.h"
-#include "bench/pixel_geometry.h"
 #include "core/reference/reference_integrator.h"
-#include "bench/reference_image.h"
-#include "bench/render_session.h"
+#include "vtkpasses/mesh/BuiltinMeshes.h"
+#include "vtkpasses/render/MaterialSettings.h"
 
 #include <algorithm>
 #include <cstdio>

@@ -1,20 +1,20 @@
 #include "bench/bench_models.h"
 
-#include "vtkpasses/mesh/BuiltinMeshes.h"
-#include "vtkpasses/render/LeadrMaterial.h"
-#include "vtkpasses/render/LitModelMaterial.h"
-#include "vtkpasses/render/MicrostructureMaterial.h"
 #include "bench/bench_scenes.h"
+#include "bench/reference_image.h"
+#include "bench/render_session.h"
 #include "core/env/cubemap.h"
 #include "core/env/parallel.h"
 #include "core/error.h"
 #include "core/leadr/leadr.h"
+#include "core/microstructure/microstructure.h"
 #include "core/models/height_field.h"
 #include "core/models/models.h"
 #include "core/models/samples.h"
-#include "core/microstructure/microstructure.h"
-#include "bench/reference_image.h"
-#include "bench/render_session.h"
+#include "vtkpasses/mesh/BuiltinMeshes.h"
+#include "vtkpasses/render/LeadrMaterial.h"
+#include "vtkpasses/render/LitModelMaterial.h"
+#include "vtkpasses/render/MicrostructureMaterial.h"
 
 #include <algorithm>
 #include <chrono>

@@ -3,11 +3,11 @@
 // N samples, against the CPU reference integrator at every other pixel (relative L2 over RGB,
 // as in tests/vtkpasses/render/test_render_reference.cxx). Prints a Markdown table per lobe with the
 // error and the frame time. Needs an X display (xvfb-run).
-#include "vtkpasses/mesh/BuiltinMeshes.h"
-#include "vtkpasses/render/OffscreenRenderer.h"
 #include "core/env/environment.h"
 #include "core/frame.h"
 #include "core/reference/reference_integrator.h"
+#include "vtkpasses/mesh/BuiltinMeshes.h"
+#include "vtkpasses/render/OffscreenRenderer.h"
 
 #include <chrono>
 #include <cmath>

@@ -1,8 +1,8 @@
 // What `aniso bench` makes of its rows: the goals, the quality model's fit, and the CSV,
 // Markdown and plot files.
 #include "bench/bench_run.h"
-#include "core/error.h"
 #include "bench/plot.h"
+#include "core/error.h"
 
 #include <algorithm>
 #include <cmath>

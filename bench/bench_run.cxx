@@ -2,9 +2,9 @@
 
 #include "bench/bench_models.h"
 #include "bench/bench_scenes.h"
-#include "core/error.h"
 #include "bench/reference_image.h"
 #include "bench/render_session.h"
+#include "core/error.h"
 
 #include <algorithm>
 #include <chrono>

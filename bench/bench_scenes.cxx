@@ -1,13 +1,13 @@
 #include "bench/bench_scenes.h"
 
+#include "bench/flange_mesh.h"
+#include "core/error.h"
+#include "core/frame.h"
 #include "vtkpasses/mesh/BrushingModel.h"
 #include "vtkpasses/mesh/BuiltinMeshes.h"
 #include "vtkpasses/mesh/GeometryAccess.h"
 #include "vtkpasses/mesh/MeshValidation.h"
 #include "vtkpasses/mesh/SurfacePreparation.h"
-#include "core/error.h"
-#include "bench/flange_mesh.h"
-#include "core/frame.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,11 +1,11 @@
 #pragma once
 // The benchmark's fixed scene set: meshes with their views, environments, and the materials
 // (n_u, n_v), plus the VTK physically based material standing for each of them.
-#include "vtkpasses/render/ViewSettings.h"
-#include "core/brdf/ashikhmin_shirley.h"
-#include "core/brdf/ggx.h"
 #include "bench/pixel_geometry.h"
 #include "bench/render_session.h"
+#include "core/brdf/ashikhmin_shirley.h"
+#include "core/brdf/ggx.h"
+#include "vtkpasses/render/ViewSettings.h"
 
 #include <string>
 #include <vector>

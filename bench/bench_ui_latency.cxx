@@ -10,11 +10,11 @@
 //   [--frame-budget MS] (0: one frame per model sample count, the behaviour without the
 //   frame-time budget) [--trace MS] (prints every event whose handling on the UI thread took
 //   longer than MS, with its phase, type and receiver: where a long gap comes from)
-#include "scene/LutScheduler.h"
 #include "app/gui/MainWindow.h"
-#include "widgets/ParameterControls.h"
 #include "app/gui/SceneView.h"
+#include "scene/LutScheduler.h"
 #include "vtkpasses/render/vtkAnisoAccumulationPass.h"
+#include "widgets/ParameterControls.h"
 
 #include <QApplication>
 #include <QElapsedTimer>

@@ -16,12 +16,12 @@
 // sampling alone, for four lobes at equal sample counts.
 //
 // Usage: bench_variance [--rotations K] [--points P] [--split]
+#include "bench/mis_width_rule.h"
 #include "core/brdf/ashikhmin_shirley.h"
 #include "core/env/env_sampling.h"
 #include "core/env/environment.h"
 #include "core/env/sun_sky.h"
 #include "core/frame.h"
-#include "bench/mis_width_rule.h"
 #include "core/reference/mc_estimator.h"
 #include "core/reference/reference_integrator.h"
 

@@ -4,11 +4,11 @@
 // shader shades there (pixel_geometry.h). References are expensive (milliseconds to a tenth of
 // a second per pixel), so they are cached on disk, keyed by everything they depend on.
 // GL-free.
+#include "bench/pixel_geometry.h"
 #include "core/brdf/ashikhmin_shirley.h"
 #include "core/brdf/ggx.h"
 #include "core/env/environment.h"
 #include "core/image/image.h"
-#include "bench/pixel_geometry.h"
 #include "core/reference/reference_integrator.h"
 
 #include <cstdint>

@@ -1,11 +1,11 @@
 #include "bench/render_session.h"
 
+#include "core/error.h"
+#include "core/lut/lut_cache.h"
 #include "vtkpasses/render/AnisoMaterial.h"
 #include "vtkpasses/render/OffscreenRenderer.h"
 #include "vtkpasses/render/RendererMatrices.h"
 #include "vtkpasses/render/TextureUpload.h"
-#include "core/error.h"
-#include "core/lut/lut_cache.h"
 #include "vtkpasses/render/vtkAnisoAccumulationPass.h"
 
 #include <algorithm>

@@ -5,12 +5,12 @@
 // per environment, one compile per shader variant. The same window draws the actor with the
 // anisotropic material or with VTK's own physically based shading (image-based lighting and
 // anisotropy), both through the accumulation pass, so both read back as linear float radiance.
+#include "core/env/environment.h"
+#include "core/image/image.h"
 #include "vtkpasses/render/EnvironmentLighting.h"
 #include "vtkpasses/render/MaterialSettings.h"
 #include "vtkpasses/render/OffscreenRenderer.h"
 #include "vtkpasses/render/ViewSettings.h"
-#include "core/env/environment.h"
-#include "core/image/image.h"
 
 #include <cstdint>
 #include <glm/mat4x4.hpp>

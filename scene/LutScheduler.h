@@ -8,9 +8,9 @@
 // The latest request wins: a newer one sets the cancel flag of the one in flight (the bakers
 // stop within a few rows), and results of stale requests are dropped. Returning to earlier values
 // is a memory hit of the cache.
-#include "scene/SceneModel.h"
 #include "core/brdf/ashikhmin_shirley.h"
 #include "core/lut/lut.h"
+#include "scene/SceneModel.h"
 
 #include <QImage>
 #include <QObject>

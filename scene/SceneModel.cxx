@@ -1,7 +1,7 @@
 #include "scene/SceneModel.h"
 
-#include "scene/SceneShading.h"
 #include "core/error.h"
+#include "scene/SceneShading.h"
 
 #include <cmath>
 #include <utility>

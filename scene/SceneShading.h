@@ -2,8 +2,8 @@
 // The scene keys of the shading model (core/models/models.h): which model draws the surface, the
 // built-in sample material the lit models use, and the lights. They live in the SceneModel like
 // every other key, so sessions, undo and the view handle them with no extra plumbing. Qt-free.
-#include "scene/SceneModel.h"
 #include "core/lights/light.h"
+#include "scene/SceneModel.h"
 
 #include <string>
 #include <string_view>

@@ -1,8 +1,8 @@
 #include "widgets/EnvironmentDock.h"
 
+#include "core/error.h"
 #include "widgets/EnvironmentThumbnails.h"
 #include "widgets/ParameterPanel.h"
-#include "core/error.h"
 
 #include <QDir>
 #include <QFileDialog>

@@ -1,8 +1,8 @@
 #include "widgets/EnvironmentThumbnails.h"
 
-#include "widgets/ParameterControls.h"
 #include "core/env/environment.h"
 #include "core/error.h"
+#include "widgets/ParameterControls.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,9 +1,9 @@
 #include "widgets/LightsDock.h"
 
-#include "widgets/ParameterPanel.h"
-#include "scene/SceneShading.h"
 #include "core/error.h"
 #include "core/models/models.h"
+#include "scene/SceneShading.h"
+#include "widgets/ParameterPanel.h"
 
 #include <QColorDialog>
 #include <QComboBox>

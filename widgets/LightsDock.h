@@ -3,8 +3,8 @@
 // sample material of the lit models, and the list of point and directional lights with their
 // direction or position and RGB intensity (spin boxes and a colour button). Every change is one
 // undoable edit of the scene's "model", "sample-material" or "lights" key (SceneShading.h).
-#include "scene/SceneEditor.h"
 #include "core/lights/light.h"
+#include "scene/SceneEditor.h"
 
 #include <QDockWidget>
 #include <array>

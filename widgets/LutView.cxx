@@ -1,7 +1,7 @@
 #include "widgets/LutView.h"
 
-#include "scene/LutScheduler.h"
 #include "core/parameters/parameters.h"
+#include "scene/LutScheduler.h"
 
 #include <QGridLayout>
 #include <QLabel>

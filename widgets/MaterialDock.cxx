@@ -1,10 +1,10 @@
 #include "widgets/MaterialDock.h"
 
+#include "core/brdf/ashikhmin_shirley.h"
+#include "core/error.h"
 #include "widgets/ParameterControls.h"
 #include "widgets/ParameterPanel.h"
 #include "widgets/SliderMapping.h"
-#include "core/brdf/ashikhmin_shirley.h"
-#include "core/error.h"
 
 #include <QCheckBox>
 #include <QComboBox>

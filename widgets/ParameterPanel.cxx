@@ -1,7 +1,7 @@
 #include "widgets/ParameterPanel.h"
 
-#include "widgets/ParameterControls.h"
 #include "core/error.h"
+#include "widgets/ParameterControls.h"
 
 #include <QFormLayout>
 #include <QLabel>

@@ -1,11 +1,11 @@
 #include "app/gui/CompareWindow.h"
 
-#include "vtkpasses/render/DrawingFrame.h"
-#include "vtkpasses/render/LitModelMaterial.h"
 #include "app/gui/LitModelView.h"
 #include "app/gui/SceneView.h"
 #include "core/error.h"
 #include "core/models/models.h"
+#include "vtkpasses/render/DrawingFrame.h"
+#include "vtkpasses/render/LitModelMaterial.h"
 
 #include <QVBoxLayout>
 #include <QVTKOpenGLNativeWidget.h>

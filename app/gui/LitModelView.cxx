@@ -1,10 +1,10 @@
 #include "app/gui/LitModelView.h"
 
-#include "vtkpasses/render/DrawingFrame.h"
-#include "vtkpasses/render/LitModelMaterial.h"
-#include "scene/SceneShading.h"
 #include "app/gui/SceneView.h"
 #include "core/error.h"
+#include "scene/SceneShading.h"
+#include "vtkpasses/render/DrawingFrame.h"
+#include "vtkpasses/render/LitModelMaterial.h"
 
 #include <vtkActor.h>
 #include <vtkActorCollection.h>

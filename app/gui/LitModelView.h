@@ -4,9 +4,9 @@
 // LitModelMaterial under the scene's lights and sample material, shown in place of the view's
 // own actor while the model is a lit one (as `aniso render --model` does offscreen). The view's
 // actor keeps its environment material, so going back to as-env costs nothing.
-#include "scene/SceneModel.h"
 #include "core/lights/light.h"
 #include "core/models/models.h"
+#include "scene/SceneModel.h"
 
 #include <QObject>
 #include <memory>

@@ -1,13 +1,13 @@
 #include "app/gui/SceneAssets.h"
 
-#include "vtkpasses/mesh/BrushingModel.h"
-#include "vtkpasses/mesh/BuiltinMeshes.h"
-#include "vtkpasses/mesh/LevelOfDetail.h"
-#include "vtkpasses/mesh/MeshLoader.h"
 #include "core/error.h"
 #include "core/maps/map_files.h"
 #include "core/maps/quaternion_map.h"
 #include "core/maps/tpr_map.h"
+#include "vtkpasses/mesh/BrushingModel.h"
+#include "vtkpasses/mesh/BuiltinMeshes.h"
+#include "vtkpasses/mesh/LevelOfDetail.h"
+#include "vtkpasses/mesh/MeshLoader.h"
 
 #include <algorithm>
 #include <filesystem>

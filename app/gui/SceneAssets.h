@@ -2,12 +2,12 @@
 // Loads what the scene's texts name (meshes, environments, maps), keeps the last few of each,
 // and checks them for the model: installed as the model's validators, so a mesh, image or
 // environment that does not load is refused before the scene changes, with its file's name.
-#include "vtkpasses/render/MaterialSettings.h"
-#include "vtkpasses/mesh/MeshLoader.h"
-#include "scene/SceneModel.h"
-#include "vtkpasses/mesh/SurfacePreparation.h"
 #include "core/env/environment.h"
 #include "core/image/image.h"
+#include "scene/SceneModel.h"
+#include "vtkpasses/mesh/MeshLoader.h"
+#include "vtkpasses/mesh/SurfacePreparation.h"
+#include "vtkpasses/render/MaterialSettings.h"
 
 #include <list>
 #include <memory>

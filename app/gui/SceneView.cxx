@@ -1,11 +1,11 @@
 #include "app/gui/SceneView.h"
 
+#include "app/gui/SceneAssets.h"
+#include "core/error.h"
+#include "scene/LutScheduler.h"
 #include "vtkpasses/render/AnisoMaterial.h"
 #include "vtkpasses/render/EnvironmentLighting.h"
-#include "scene/LutScheduler.h"
-#include "app/gui/SceneAssets.h"
 #include "vtkpasses/render/ViewSettings.h"
-#include "core/error.h"
 #include "vtkpasses/render/vtkAnisoAccumulationPass.h"
 
 #include <QThreadPool>

@@ -18,13 +18,13 @@
 // up in one stall: its textures are uploaded in one, the view switches to it in a later one with
 // a cheap frame (as while moving: the new shader variant compiles then), and refinement under the
 // frame budget follows once settled.
+#include "core/quality/adaptive_quality.h"
+#include "core/quality/frame_budget.h"
+#include "scene/SceneModel.h"
 #include "vtkpasses/render/DisplaySettings.h"
 #include "vtkpasses/render/DrawingFrame.h"
 #include "vtkpasses/render/MaterialSettings.h"
 #include "vtkpasses/render/OffscreenRenderer.h"
-#include "scene/SceneModel.h"
-#include "core/quality/adaptive_quality.h"
-#include "core/quality/frame_budget.h"
 
 #include <QElapsedTimer>
 #include <QObject>

@@ -1,16 +1,16 @@
 #include "app/gui/SurfaceModelView.h"
 
-#include "vtkpasses/render/DrawingFrame.h"
-#include "vtkpasses/render/LeadrMaterial.h"
 #include "app/gui/LitModelView.h"
-#include "vtkpasses/render/MicrostructureMaterial.h"
 #include "app/gui/SceneAssets.h"
-#include "scene/SceneShading.h"
 #include "app/gui/SceneView.h"
+#include "app/render_surface_models.h"
 #include "core/error.h"
 #include "core/leadr/leadr.h"
 #include "core/microstructure/microstructure.h"
-#include "app/render_surface_models.h"
+#include "scene/SceneShading.h"
+#include "vtkpasses/render/DrawingFrame.h"
+#include "vtkpasses/render/LeadrMaterial.h"
+#include "vtkpasses/render/MicrostructureMaterial.h"
 
 #include <algorithm>
 #include <vtkActor.h>

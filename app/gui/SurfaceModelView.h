@@ -7,8 +7,8 @@
 // (surfaceModelKeys), lights, F0, albedo and TPR map, as `aniso render --model NAME` takes them
 // from its options. Each change builds a new actor and material; one that fails leaves the
 // previous picture on screen and is reported once.
-#include "vtkpasses/render/OffscreenRenderer.h"
 #include "scene/SceneModel.h"
+#include "vtkpasses/render/OffscreenRenderer.h"
 
 #include <QObject>
 #include <memory>

@@ -1,10 +1,10 @@
 #include "app/gui/run_gui.h"
 
-#include "scene/LutScheduler.h"
+#include "app/cli.h"
 #include "app/gui/MainWindow.h"
 #include "app/gui/SceneView.h"
-#include "app/cli.h"
 #include "core/error.h"
+#include "scene/LutScheduler.h"
 
 #include <QApplication>
 #include <QSurfaceFormat>

@@ -2,12 +2,12 @@
 // with the core functions called directly here (so the file must round-trip the bake), and with
 // analytic forms where the header states one.
 #include "core/brdf/ashikhmin_shirley.h"
-#include "tests/app/cli_runner.h"
 #include "core/env/cubemap.h"
 #include "core/env/environment.h"
 #include "core/image/image.h"
 #include "core/lut/lut.h"
 #include "core/maps/quaternion_map.h"
+#include "tests/app/cli_runner.h"
 
 #include <array>
 #include <cmath>

@@ -5,9 +5,9 @@
 // executable itself is run for the top-level command line and one case of each exit code.
 #include "app/bake_command.h"
 #include "app/cli.h"
-#include "tests/app/cli_runner.h"
 #include "core/image/image.h"
 #include "core/parameters/parameters.h"
+#include "tests/app/cli_runner.h"
 
 #include <fstream>
 #include <gtest/gtest.h>

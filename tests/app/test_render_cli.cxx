@@ -6,11 +6,11 @@
 //  - An EXR holds linear radiance: for the built-in sphere with F0 = 1, the centre of the image
 //    agrees with the CPU reference integrator for the same lobe, view and pixels; PNGs are 8-bit
 //    RGB, or RGBA with --background none; --time reports the frame time.
-#include "tests/app/cli_runner.h"
 #include "core/env/environment.h"
 #include "core/frame.h"
 #include "core/image/image.h"
 #include "core/reference/reference_integrator.h"
+#include "tests/app/cli_runner.h"
 #include "tests/vtkpasses/render/render_test_helpers.h"
 
 #include <cmath>

@@ -9,9 +9,9 @@
 //    (relative L2 below 5e-3, measured 7.6e-4: float shading on the default, coarser sphere mesh).
 //  - --compare M1,M2 writes the models' images side by side, each tile the same agreement with
 //    its own model; --compare with --model, or with a model it cannot show, is a usage error.
-#include "tests/app/cli_runner.h"
 #include "core/image/image.h"
 #include "core/models/models.h"
+#include "tests/app/cli_runner.h"
 #include "tests/vtkpasses/render/render_test_helpers.h"
 
 #include <algorithm>

@@ -7,8 +7,8 @@
 //  - the microstructure options reach the shader: the silk weave (crimson and gold threads)
 //    renders redder than the grey pyramids (R/G of the image mean), under every option set.
 // Every output is finite and covers pixels.
-#include "tests/app/cli_runner.h"
 #include "core/image/image.h"
+#include "tests/app/cli_runner.h"
 #include "tests/vtkpasses/render/render_test_helpers.h"
 
 #include <cmath>

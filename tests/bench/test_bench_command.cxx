@@ -15,15 +15,15 @@
 //   - The CPU pixel rays (the reference's geometry) against the analytic unit sphere.
 //   - The flange part against its analytic volume (closed, outward-facing surface).
 //   - The plot's raster and SVG outputs against each other and the series' colour.
-#include "vtkpasses/mesh/MeshValidation.h"
 #include "bench/bench_run.h"
 #include "bench/bench_scenes.h"
-#include "tests/app/cli_runner.h"
-#include "core/error.h"
 #include "bench/flange_mesh.h"
-#include "core/image/image.h"
 #include "bench/pixel_geometry.h"
 #include "bench/plot.h"
+#include "core/error.h"
+#include "core/image/image.h"
+#include "tests/app/cli_runner.h"
+#include "vtkpasses/mesh/MeshValidation.h"
 
 #include <cmath>
 #include <cstdlib>

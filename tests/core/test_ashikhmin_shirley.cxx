@@ -2,8 +2,8 @@
 // robustness. References are deterministic quadrature of the densities (never the sampler),
 // the closed forms of docs/METHOD.md, and analytic albedos.
 #include "core/brdf/ashikhmin_shirley.h"
-#include "tests/core/chi_square.h"
 #include "core/error.h"
+#include "tests/core/chi_square.h"
 
 #include <algorithm>
 #include <array>

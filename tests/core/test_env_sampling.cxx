@@ -4,13 +4,13 @@
 // rendered to an equirect image here), samples land as the density says (chi-square on
 // sub-texel bins), a sun of 1e5 gets its share of the samples, the shader tables reproduce the
 // sampling by bisection as a shader would, and bad inputs are refused naming the argument.
-#include "tests/core/chi_square.h"
 #include "core/env/env_sampling.h"
 #include "core/env/environment.h"
 #include "core/env/sun_sky.h"
 #include "core/error.h"
 #include "core/frame.h"
 #include "core/sampling/hammersley.h"
+#include "tests/core/chi_square.h"
 
 #include <algorithm>
 #include <cmath>

@@ -7,12 +7,12 @@
 // finite values over the whole stress range.
 #include "core/brdf/ashikhmin_shirley.h"
 #include "core/brdf/ggx.h"
-#include "tests/core/chi_square.h"
 #include "core/env/environment.h"
 #include "core/env/quadrature.h"
 #include "core/error.h"
 #include "core/frame.h"
 #include "core/reference/reference_integrator.h"
+#include "tests/core/chi_square.h"
 
 #include <algorithm>
 #include <cmath>

@@ -2,13 +2,13 @@
 // once it settles, returning to earlier values is a memory hit of the LutCache (its stats are
 // the reference), the latest of two quick requests wins, and the previews show the LUT texels
 // where the stated layout puts them (checked against core's sampler directly).
+#include "core/lut/lut_cache.h"
 #include "scene/LutScheduler.h"
+#include "scene/SceneEditor.h"
 #include "widgets/LutView.h"
 #include "widgets/MaterialDock.h"
 #include "widgets/ParameterControls.h"
-#include "scene/SceneEditor.h"
 #include "widgets/SliderMapping.h"
-#include "core/lut/lut_cache.h"
 
 #include <QSignalSpy>
 #include <QSlider>

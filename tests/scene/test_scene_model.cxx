@@ -1,9 +1,9 @@
 // SceneModel and SceneEditor: the model holds exactly the declared parameters with their
 // declared defaults, validates by the declared range and choices, signals each change once, and
 // the editor's undo stack steps back through changes, a drag being one step.
+#include "core/error.h"
 #include "scene/SceneEditor.h"
 #include "scene/SceneModel.h"
-#include "core/error.h"
 
 #include <QSignalSpy>
 #include <QUndoStack>

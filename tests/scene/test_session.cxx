@@ -2,9 +2,9 @@
 // under the session's folder are stored relative to it, keys from a newer version are kept and
 // written back, and a bad or missing session is reported naming the file while the scene and
 // its undo history stay as they were.
+#include "core/error.h"
 #include "scene/SceneEditor.h"
 #include "scene/Session.h"
-#include "core/error.h"
 
 #include <QDir>
 #include <QFile>

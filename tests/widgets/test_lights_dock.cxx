@@ -3,12 +3,12 @@
 // change, to the lights stated here; the lights text reads back to the same lights (and bad
 // texts are refused naming the key); a session brings back the model, sample material and
 // lights written into it.
-#include "widgets/LightsDock.h"
+#include "core/error.h"
+#include "core/models/models.h"
 #include "scene/SceneEditor.h"
 #include "scene/SceneShading.h"
 #include "scene/Session.h"
-#include "core/error.h"
-#include "core/models/models.h"
+#include "widgets/LightsDock.h"
 
 #include <QComboBox>
 #include <QDoubleSpinBox>

@@ -3,13 +3,13 @@
 // each surface model's panel holds a control for every key surfaceModelKeys lists, each key is
 // declared with the range `aniso render` accepts for its option, the panel shows only while its
 // model is chosen, and a control's edit is one undoable change of the scene key.
+#include "core/leadr/leadr.h"
+#include "core/microstructure/microstructure.h"
+#include "scene/SceneEditor.h"
+#include "scene/SceneShading.h"
 #include "widgets/LightsDock.h"
 #include "widgets/ParameterControls.h"
 #include "widgets/ParameterPanel.h"
-#include "scene/SceneEditor.h"
-#include "scene/SceneShading.h"
-#include "core/leadr/leadr.h"
-#include "core/microstructure/microstructure.h"
 
 #include <QComboBox>
 #include <QUndoStack>

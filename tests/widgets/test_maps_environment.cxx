@@ -3,15 +3,15 @@
 // the scene as it was, the environment list offers the built-ins and the files of its
 // directory with thumbnails (tone-mapped as stated in EnvironmentThumbnails.h, recomputed here),
 // and choosing one sets the environment.
-#include "widgets/AssetControls.h"
-#include "widgets/EnvironmentDock.h"
-#include "widgets/EnvironmentThumbnails.h"
-#include "widgets/MapsDock.h"
-#include "scene/SceneEditor.h"
 #include "core/env/environment.h"
 #include "core/error.h"
 #include "core/image/image.h"
 #include "core/maps/tpr_map.h"
+#include "scene/SceneEditor.h"
+#include "widgets/AssetControls.h"
+#include "widgets/EnvironmentDock.h"
+#include "widgets/EnvironmentThumbnails.h"
+#include "widgets/MapsDock.h"
 
 #include <QComboBox>
 #include <QDoubleSpinBox>

@@ -2,9 +2,9 @@
 // formulas (computed here independently), a slider drag sets the model and is one undo step,
 // spin boxes set exact values, the link keeps n_v / n_u, and the metal presets set and
 // recognise their F0.
+#include "scene/SceneEditor.h"
 #include "widgets/MaterialDock.h"
 #include "widgets/ParameterControls.h"
-#include "scene/SceneEditor.h"
 #include "widgets/SliderMapping.h"
 
 #include <QCheckBox>

@@ -2,9 +2,9 @@
 // quality-mode (one undoable edit), enables the error-target control and disables
 // target-samples, and back; the error-target control edits the model's error-target; a mode
 // changed elsewhere (a session, an undo) switches the controls the same way.
+#include "scene/SceneEditor.h"
 #include "widgets/MaterialDock.h"
 #include "widgets/ParameterControls.h"
-#include "scene/SceneEditor.h"
 
 #include <QComboBox>
 #include <QDoubleSpinBox>

@@ -1,8 +1,8 @@
 #include "vtkpasses/mesh/BrushingModel.h"
 
-#include "vtkpasses/mesh/GeometryAccess.h"
 #include "core/error.h"
 #include "core/frame.h"
+#include "vtkpasses/mesh/GeometryAccess.h"
 
 #include <cmath>
 #include <cstdlib>

@@ -1,9 +1,9 @@
 #include "vtkpasses/mesh/MeshLoader.h"
 
+#include "core/error.h"
 #include "vtkpasses/mesh/OffReader.h"
 #include "vtkpasses/mesh/PlyReader.h"
 #include "vtkpasses/mesh/StlReader.h"
-#include "core/error.h"
 
 #include <algorithm>
 #include <cctype>

@@ -1,7 +1,7 @@
 #include "vtkpasses/mesh/MeshValidation.h"
 
-#include "vtkpasses/mesh/GeometryAccess.h"
 #include "core/error.h"
+#include "vtkpasses/mesh/GeometryAccess.h"
 
 #include <algorithm>
 #include <array>

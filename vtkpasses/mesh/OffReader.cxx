@@ -1,7 +1,7 @@
 #include "vtkpasses/mesh/OffReader.h"
 
-#include "vtkpasses/mesh/GeometryAccess.h"
 #include "core/error.h"
+#include "vtkpasses/mesh/GeometryAccess.h"
 
 #include <cerrno>
 #include <cstdlib>

@@ -1,7 +1,7 @@
 #include "vtkpasses/mesh/PlyReader.h"
 
-#include "vtkpasses/mesh/GeometryAccess.h"
 #include "core/error.h"
+#include "vtkpasses/mesh/GeometryAccess.h"
 
 #include <cctype>
 #include <cerrno>

@@ -1,7 +1,7 @@
 #include "vtkpasses/mesh/StlReader.h"
 
-#include "vtkpasses/mesh/GeometryAccess.h"
 #include "core/error.h"
+#include "vtkpasses/mesh/GeometryAccess.h"
 
 #include <array>
 #include <cctype>

@@ -1,8 +1,8 @@
 #include "vtkpasses/mesh/SurfacePreparation.h"
 
+#include "core/error.h"
 #include "vtkpasses/mesh/GeometryAccess.h"
 #include "vtkpasses/mesh/MeshValidation.h"
-#include "core/error.h"
 
 #include <cmath>
 #include <glm/geometric.hpp>

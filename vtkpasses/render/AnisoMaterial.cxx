@@ -1,11 +1,11 @@
 #include "vtkpasses/render/AnisoMaterial.h"
 
-#include "vtkpasses/render/EnvironmentLighting.h"
-#include "vtkpasses/render/RendererMatrices.h"
-#include "vtkpasses/render/TextureUpload.h"
 #include "core/error.h"
 #include "core/lut/lut.h"
 #include "core/lut/lut_cache.h"
+#include "vtkpasses/render/EnvironmentLighting.h"
+#include "vtkpasses/render/RendererMatrices.h"
+#include "vtkpasses/render/TextureUpload.h"
 #include "vtkpasses/render/vtkAnisoAccumulationPass.h"
 
 #include <algorithm>

@@ -7,8 +7,8 @@
 // origin, and maps whatever else lives in the mesh's coordinates (the camera, point lights) the
 // same way. What the user sees is unchanged: the view and the lighting are invariant under the
 // map. The user's camera and lights stay in the mesh's own coordinates.
-#include "vtkpasses/render/ViewSettings.h"
 #include "core/lights/light.h"
+#include "vtkpasses/render/ViewSettings.h"
 
 #include <glm/vec3.hpp>
 #include <vtkSmartPointer.h>

@@ -1,7 +1,7 @@
 #include "vtkpasses/render/EnvironmentLighting.h"
 
-#include "vtkpasses/render/TextureUpload.h"
 #include "core/error.h"
+#include "vtkpasses/render/TextureUpload.h"
 
 #include <cmath>
 #include <vtkOpenGLRenderWindow.h>

@@ -1,11 +1,11 @@
 #include "vtkpasses/render/LeadrMaterial.h"
 
+#include "aniso_shaders.h"
+#include "core/error.h"
 #include "vtkpasses/render/DrawingFrame.h"
 #include "vtkpasses/render/EnvironmentLighting.h"
 #include "vtkpasses/render/RendererMatrices.h"
 #include "vtkpasses/render/ShaderHook.h"
-#include "aniso_shaders.h"
-#include "core/error.h"
 
 #include <algorithm>
 #include <cmath>

@@ -5,9 +5,9 @@
 // values as uniforms each time the mapper draws. Both need the mesh's "Normals", "Tangents" and
 // "TCoords" point arrays (the built-in meshes have them): apply() refuses a mesh without them,
 // and a mesh that loses them later is drawn with VTK's own shading and a warning.
-#include "vtkpasses/render/OffscreenRenderer.h"
 #include "core/leadr/leadr.h"
 #include "core/lights/light.h"
+#include "vtkpasses/render/OffscreenRenderer.h"
 
 #include <memory>
 #include <string>

@@ -1,12 +1,12 @@
 #include "vtkpasses/render/LitModelMaterial.h"
 
+#include "aniso_shaders.h"
+#include "core/error.h"
 #include "vtkpasses/render/DrawingFrame.h"
 #include "vtkpasses/render/MaterialShaderSource.h"
 #include "vtkpasses/render/RendererMatrices.h"
 #include "vtkpasses/render/ShaderHook.h"
 #include "vtkpasses/render/TextureUpload.h"
-#include "aniso_shaders.h"
-#include "core/error.h"
 
 #include <array>
 #include <cmath>

@@ -7,10 +7,10 @@
 // mesh's arrays ("Normals", "Tangents", "TCoords") choose the compiled variant. Each pixel
 // renormalises the interpolated vectors and builds its frame as core/brdf/shading_frame.h does,
 // then shades as core/models/models.h's shadeLitModel does on the CPU.
-#include "vtkpasses/render/OffscreenRenderer.h"
 #include "core/lights/light.h"
 #include "core/models/models.h"
 #include "core/models/sv_material.h"
+#include "vtkpasses/render/OffscreenRenderer.h"
 
 #include <memory>
 #include <string>

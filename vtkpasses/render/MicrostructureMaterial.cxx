@@ -1,8 +1,8 @@
 #include "vtkpasses/render/MicrostructureMaterial.h"
 
-#include "vtkpasses/render/TextureUpload.h"
 #include "aniso_shaders.h"
 #include "core/error.h"
+#include "vtkpasses/render/TextureUpload.h"
 #include "vtkpasses/render/vtkAnisoAccumulationPass.h"
 
 #include <cmath>

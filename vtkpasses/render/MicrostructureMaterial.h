@@ -5,8 +5,8 @@
 // point and directional lights. The structure's height, normal and albedo are uploaded as
 // bilinear, repeating float textures (the core's lookups). Needs "Normals", "Tangents" and
 // "TCoords" on the mesh (LeadrMaterial.h).
-#include "vtkpasses/render/LeadrMaterial.h"
 #include "core/microstructure/microstructure.h"
+#include "vtkpasses/render/LeadrMaterial.h"
 
 #include <cstdint>
 #include <glm/vec2.hpp>

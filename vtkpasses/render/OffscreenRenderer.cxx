@@ -1,9 +1,9 @@
 #include "vtkpasses/render/OffscreenRenderer.h"
 
+#include "core/error.h"
 #include "vtkpasses/render/AnisoMaterial.h"
 #include "vtkpasses/render/DrawingFrame.h"
 #include "vtkpasses/render/EnvironmentLighting.h"
-#include "core/error.h"
 #include "vtkpasses/render/vtkAnisoAccumulationPass.h"
 
 #include <X11/Xlib.h>

@@ -3,12 +3,12 @@
 // vtkRenderWindow (an X display is needed, e.g. under xvfb-run), progressive accumulation for
 // the requested number of frames, and the results read back: the linear float image (EXR) and
 // the display-transformed 8-bit one (PNG).
+#include "core/env/environment.h"
+#include "core/image/image.h"
 #include "vtkpasses/render/DisplaySettings.h"
 #include "vtkpasses/render/MaterialSettings.h"
 #include "vtkpasses/render/MaterialShaderSource.h"
 #include "vtkpasses/render/ViewSettings.h"
-#include "core/env/environment.h"
-#include "core/image/image.h"
 
 #include <cstdint>
 #include <functional>

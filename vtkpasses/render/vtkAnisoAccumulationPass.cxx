@@ -1,9 +1,9 @@
 #include "vtkpasses/render/vtkAnisoAccumulationPass.h"
 
-#include "vtkpasses/render/EnvironmentLighting.h"
-#include "vtkpasses/render/RendererMatrices.h"
 #include "aniso_shaders.h"
 #include "core/sampling/hammersley.h"
+#include "vtkpasses/render/EnvironmentLighting.h"
+#include "vtkpasses/render/RendererMatrices.h"
 
 #include <algorithm>
 #include <chrono>

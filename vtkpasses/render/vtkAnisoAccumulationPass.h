@@ -25,8 +25,8 @@
 // While the first frame of a new size is in bands, the rows it has not drawn yet show the mean
 // of the size before, scaled (a view returning from a reduced resolution shows the reduced
 // picture there, not empty rows).
-#include "vtkpasses/render/DisplaySettings.h"
 #include "core/image/image.h"
+#include "vtkpasses/render/DisplaySettings.h"
 
 #include <cstdint>
 #include <glm/mat4x4.hpp>

@@ -6,11 +6,11 @@
 // the lit mesh at its centre. The surface models (LEADR, microstructure) replace the scene actor
 // as well.
 #include "app/gui/CompareWindow.h"
-#include "widgets/LightsDock.h"
 #include "app/gui/LitModelView.h"
 #include "app/gui/MainWindow.h"
 #include "app/gui/SceneView.h"
 #include "core/models/models.h"
+#include "widgets/LightsDock.h"
 
 #include <QComboBox>
 #include <QSignalSpy>

@@ -8,15 +8,15 @@
 // kind; meshes, environments, maps and sessions opened in the background (menus, drops, the
 // docks) change the scene only when loaded, the latest request winning, a corrupt one reported;
 // screenshot file names follow the mesh.
-#include "widgets/AssetControls.h"
-#include "widgets/EnvironmentDock.h"
-#include "scene/LutScheduler.h"
 #include "app/gui/MainWindow.h"
-#include "widgets/MapsDock.h"
 #include "app/gui/SceneAssets.h"
 #include "app/gui/SceneView.h"
 #include "core/error.h"
 #include "core/image/image.h"
+#include "scene/LutScheduler.h"
+#include "widgets/AssetControls.h"
+#include "widgets/EnvironmentDock.h"
+#include "widgets/MapsDock.h"
 
 #include <QApplication>
 #include <QEventLoop>

@@ -9,11 +9,11 @@
 // window's context goes) from the window's creation to its destruction.
 #include "app/gui/LitModelView.h"
 #include "app/gui/MainWindow.h"
-#include "vtkpasses/render/OffscreenRenderer.h"
 #include "app/gui/SceneView.h"
 #include "app/gui/SurfaceModelView.h"
-#include "core/image/image.h"
 #include "app/render_models.h"
+#include "core/image/image.h"
+#include "vtkpasses/render/OffscreenRenderer.h"
 
 #include <QSignalSpy>
 #include <QStandardPaths>

@@ -18,17 +18,17 @@
 //   - a surface of more than kInteractiveTriangleLimit triangles is drawn as its stand-in while
 //     things move, as itself when still, and the still image after a move is the one before;
 //     the lit and LEADR models' views follow the same swap.
-#include "vtkpasses/mesh/BuiltinMeshes.h"
-#include "vtkpasses/render/EnvironmentLighting.h"
-#include "vtkpasses/mesh/LevelOfDetail.h"
 #include "app/gui/LitModelView.h"
-#include "scene/LutScheduler.h"
 #include "app/gui/MainWindow.h"
 #include "app/gui/SceneView.h"
 #include "app/gui/SurfaceModelView.h"
 #include "core/image/image.h"
 #include "core/lut/lut_cache.h"
 #include "core/quality/adaptive_quality.h"
+#include "scene/LutScheduler.h"
+#include "vtkpasses/mesh/BuiltinMeshes.h"
+#include "vtkpasses/mesh/LevelOfDetail.h"
+#include "vtkpasses/render/EnvironmentLighting.h"
 #include "vtkpasses/render/vtkAnisoAccumulationPass.h"
 
 #include <QApplication>

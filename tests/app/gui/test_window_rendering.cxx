@@ -5,13 +5,13 @@
 // things move are at half resolution and show the same picture; a camera drag across the
 // switch to half resolution turns at the trackball's rate; a map larger than the GL's texture
 // limit is refused with its file's name.
-#include "vtkpasses/render/EnvironmentLighting.h"
-#include "scene/LutScheduler.h"
 #include "app/gui/MainWindow.h"
 #include "app/gui/SceneView.h"
 #include "core/env/environment.h"
 #include "core/image/image.h"
 #include "core/lut/lut_cache.h"
+#include "scene/LutScheduler.h"
+#include "vtkpasses/render/EnvironmentLighting.h"
 
 #include <QApplication>
 #include <QDateTime>

@@ -3,10 +3,10 @@
 // (orthogonal to the axis-radius plane), radial -> the projected radius, uv -> dP/du of a known
 // linear UV map; every tangent unit and orthogonal to n; fallbacks exactly where the model has
 // no direction; and the CLI spelling with its error messages.
-#include "vtkpasses/mesh/BrushingModel.h"
-#include "vtkpasses/mesh/BuiltinMeshes.h"
 #include "core/error.h"
 #include "tests/vtkpasses/mesh/mesh_test_helpers.h"
+#include "vtkpasses/mesh/BrushingModel.h"
+#include "vtkpasses/mesh/BuiltinMeshes.h"
 
 #include <cmath>
 #include <gtest/gtest.h>

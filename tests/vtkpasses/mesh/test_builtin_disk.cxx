@@ -4,9 +4,9 @@
 // every triangle counter-clockwise seen from +Z in space and in UV, the area that of the regular
 // polygon it approximates, (n / 2) sin(2 pi / n), and the loader's validation finds nothing
 // to drop or merge. "disk" names it.
+#include "tests/vtkpasses/mesh/mesh_test_helpers.h"
 #include "vtkpasses/mesh/BuiltinMeshes.h"
 #include "vtkpasses/mesh/MeshValidation.h"
-#include "tests/vtkpasses/mesh/mesh_test_helpers.h"
 
 #include <cmath>
 #include <gtest/gtest.h>

@@ -2,10 +2,10 @@
 // implicit surface, normals and tangents from the closed-form parametrisation, the UV
 // convention recovered from positions with atan2/acos, outward winding (signed volume and face
 // normals), and area/volume against the closed-form values of the smooth shapes.
-#include "vtkpasses/mesh/BuiltinMeshes.h"
-#include "vtkpasses/mesh/MeshValidation.h"
 #include "core/error.h"
 #include "tests/vtkpasses/mesh/mesh_test_helpers.h"
+#include "vtkpasses/mesh/BuiltinMeshes.h"
+#include "vtkpasses/mesh/MeshValidation.h"
 
 #include <cmath>
 #include <gtest/gtest.h>

@@ -2,10 +2,10 @@
 // or under the limit; at most the asked triangles otherwise; every point one of the surface's
 // own with its normal, tangent and texture coordinates exactly; the same shape (area against
 // the torus's analytic area, bounds) and the same facing (winding against the normals).
+#include "tests/vtkpasses/mesh/mesh_test_helpers.h"
 #include "vtkpasses/mesh/BuiltinMeshes.h"
 #include "vtkpasses/mesh/LevelOfDetail.h"
 #include "vtkpasses/mesh/SurfacePreparation.h"
-#include "tests/vtkpasses/mesh/mesh_test_helpers.h"
 
 #include <array>
 #include <cmath>

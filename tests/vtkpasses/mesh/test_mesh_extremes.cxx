@@ -8,15 +8,15 @@
 // them (the variant holds none of their code) rather than failing, every pixel finite. And the
 // tiny, huge and far tetrahedra render the image of the unit one (the view is invariant under
 // scaling and moving mesh, camera and lights together).
-#include "vtkpasses/render/LitModelMaterial.h"
-#include "vtkpasses/mesh/MeshLoader.h"
-#include "vtkpasses/render/OffscreenRenderer.h"
-#include "vtkpasses/mesh/SurfacePreparation.h"
 #include "core/env/environment.h"
 #include "core/error.h"
 #include "core/lights/light.h"
 #include "tests/vtkpasses/mesh/mesh_test_helpers.h"
 #include "tests/vtkpasses/render/render_test_helpers.h"
+#include "vtkpasses/mesh/MeshLoader.h"
+#include "vtkpasses/mesh/SurfacePreparation.h"
+#include "vtkpasses/render/LitModelMaterial.h"
+#include "vtkpasses/render/OffscreenRenderer.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,9 +1,9 @@
 // loadMesh: every format round-trips a box written here by hand (or by VTK's writers) with the
 // triangle count, vertex count and bounds of its definition; degenerate and hostile files give
 // an error naming the file, or a mesh with the stated counts, and never a crash or stderr noise.
-#include "vtkpasses/mesh/MeshLoader.h"
 #include "core/error.h"
 #include "tests/vtkpasses/mesh/mesh_test_helpers.h"
+#include "vtkpasses/mesh/MeshLoader.h"
 
 #include <array>
 #include <cstdint>

@@ -3,11 +3,11 @@
 // sphere stays smooth (normals = positions), the feature angle is honoured, and the returned
 // surface always meets the shading contract (float unit "Normals", "Tangents" orthogonal to them,
 // active attributes).
+#include "core/error.h"
+#include "tests/vtkpasses/mesh/mesh_test_helpers.h"
 #include "vtkpasses/mesh/BuiltinMeshes.h"
 #include "vtkpasses/mesh/MeshValidation.h"
 #include "vtkpasses/mesh/SurfacePreparation.h"
-#include "core/error.h"
-#include "tests/vtkpasses/mesh/mesh_test_helpers.h"
 
 #include <cmath>
 #include <gtest/gtest.h>

@@ -2,11 +2,11 @@
 // Shared by the render tests: the analytic view rays of a rendered image (from the camera
 // placement, not from VTK's matrices or the shaders), error metrics over covered pixels, checks
 // for non-finite values, and diff images kept when a comparison fails.
-#include "vtkpasses/render/OffscreenRenderer.h"
-#include "vtkpasses/render/ViewSettings.h"
 #include "core/frame.h"
 #include "core/image/image.h"
 #include "core/reference/reference_integrator.h"
+#include "vtkpasses/render/OffscreenRenderer.h"
+#include "vtkpasses/render/ViewSettings.h"
 
 #include <cmath>
 #include <cstdlib>

@@ -5,12 +5,12 @@
 //  - slider values (n_u, n_v, F0, albedo, samples, height scale) leave the shader source as it
 //    is, features (method, filtering, half-vector source, maps) change it;
 //  - invalid settings are refused with the parameter's name and the previous ones kept.
-#include "vtkpasses/render/AnisoMaterial.h"
-#include "vtkpasses/mesh/BuiltinMeshes.h"
-#include "vtkpasses/render/EnvironmentLighting.h"
-#include "vtkpasses/render/MaterialShaderSource.h"
 #include "core/env/environment.h"
 #include "core/error.h"
+#include "vtkpasses/mesh/BuiltinMeshes.h"
+#include "vtkpasses/render/AnisoMaterial.h"
+#include "vtkpasses/render/EnvironmentLighting.h"
+#include "vtkpasses/render/MaterialShaderSource.h"
 
 #include <gtest/gtest.h>
 #include <memory>

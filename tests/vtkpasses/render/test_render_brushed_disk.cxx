@@ -6,13 +6,13 @@
 // same structure, map, options and lights. Compared by the relative L1 error over the pixels
 // well inside the disk, within a stated bound; the same comparison against the unturned
 // structure must fail, so the test sees the turn. No output may hold NaN or Inf.
-#include "vtkpasses/mesh/BuiltinMeshes.h"
-#include "vtkpasses/render/MicrostructureMaterial.h"
-#include "vtkpasses/render/OffscreenRenderer.h"
 #include "core/env/environment.h"
 #include "core/frame.h"
 #include "core/maps/tpr_map.h"
 #include "tests/vtkpasses/render/render_test_helpers.h"
+#include "vtkpasses/mesh/BuiltinMeshes.h"
+#include "vtkpasses/render/MicrostructureMaterial.h"
+#include "vtkpasses/render/OffscreenRenderer.h"
 
 #include <cmath>
 #include <cstdio>

@@ -15,10 +15,10 @@
 //    row costs (worked out by hand), equal rows without them.
 //  - Moving slider values (n_u, F0, albedo, samples, exposure) keeps the compiled shader
 //    program; changing the specular method builds another one.
-#include "vtkpasses/render/AnisoMaterial.h"
-#include "vtkpasses/mesh/BuiltinMeshes.h"
-#include "vtkpasses/render/EnvironmentLighting.h"
 #include "tests/vtkpasses/render/render_test_helpers.h"
+#include "vtkpasses/mesh/BuiltinMeshes.h"
+#include "vtkpasses/render/AnisoMaterial.h"
+#include "vtkpasses/render/EnvironmentLighting.h"
 #include "vtkpasses/render/vtkAnisoAccumulationPass.h"
 
 #include <algorithm>

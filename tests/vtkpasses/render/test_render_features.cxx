@@ -17,8 +17,6 @@
 // cube's interpolation dominate; a frame built the wrong way round (b for t, a mirrored map, a
 // rotation in the wrong sense) gives tens of percent. On failure the rendered, expected and
 // difference images are kept.
-#include "vtkpasses/mesh/BuiltinMeshes.h"
-#include "vtkpasses/mesh/SurfacePreparation.h"
 #include "core/env/cubemap.h"
 #include "core/env/environment.h"
 #include "core/frame.h"
@@ -26,6 +24,8 @@
 #include "core/maps/tpr_map.h"
 #include "core/reference/reference_integrator.h"
 #include "tests/vtkpasses/render/render_test_helpers.h"
+#include "vtkpasses/mesh/BuiltinMeshes.h"
+#include "vtkpasses/mesh/SurfacePreparation.h"
 
 #include <cmath>
 #include <cstdio>

@@ -13,16 +13,16 @@
 //     over the distribution no covered pixel turns black: towards the silhouette the artificial
 //     micronormal keeps every pixel lit.
 // No output may hold NaN or Inf.
-#include "vtkpasses/mesh/BuiltinMeshes.h"
-#include "vtkpasses/render/EnvironmentLighting.h"
-#include "vtkpasses/render/LeadrMaterial.h"
-#include "vtkpasses/render/OffscreenRenderer.h"
 #include "core/env/cubemap.h"
 #include "core/env/environment.h"
 #include "core/frame.h"
 #include "core/leadr/leadr.h"
 #include "core/models/height_field.h"
 #include "tests/vtkpasses/render/render_test_helpers.h"
+#include "vtkpasses/mesh/BuiltinMeshes.h"
+#include "vtkpasses/render/EnvironmentLighting.h"
+#include "vtkpasses/render/LeadrMaterial.h"
+#include "vtkpasses/render/OffscreenRenderer.h"
 
 #include <cmath>
 #include <cstdio>

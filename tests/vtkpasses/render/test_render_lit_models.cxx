@@ -13,14 +13,14 @@
 // highlight: its bound is 2e-2 (measured: 1.1e-2 on the textured material).
 // Finiteness: each model over a map holding the extremes of its parameter ranges, under
 // grazing, overhead and very close point lights, must give no NaN or Inf.
-#include "vtkpasses/mesh/BuiltinMeshes.h"
-#include "vtkpasses/render/EnvironmentLighting.h"
-#include "vtkpasses/render/LitModelMaterial.h"
-#include "vtkpasses/render/OffscreenRenderer.h"
 #include "core/env/environment.h"
 #include "core/error.h"
 #include "core/models/models.h"
 #include "tests/vtkpasses/render/render_test_helpers.h"
+#include "vtkpasses/mesh/BuiltinMeshes.h"
+#include "vtkpasses/render/EnvironmentLighting.h"
+#include "vtkpasses/render/LitModelMaterial.h"
+#include "vtkpasses/render/OffscreenRenderer.h"
 
 #include <algorithm>
 #include <cmath>

@@ -8,13 +8,13 @@
 // images with K = 1, 2, 4, 8 approach the pixel average (the CPU evaluation with K = 24), the
 // error falling with K.
 // No output may hold NaN or Inf.
+#include "core/env/environment.h"
+#include "core/frame.h"
+#include "core/sampling/hammersley.h"
+#include "tests/vtkpasses/render/render_test_helpers.h"
 #include "vtkpasses/mesh/BuiltinMeshes.h"
 #include "vtkpasses/render/MicrostructureMaterial.h"
 #include "vtkpasses/render/OffscreenRenderer.h"
-#include "core/env/environment.h"
-#include "core/frame.h"
-#include "tests/vtkpasses/render/render_test_helpers.h"
-#include "core/sampling/hammersley.h"
 
 #include <cmath>
 #include <cstdio>

@@ -8,12 +8,12 @@
 // `split-sum` is rendered the same way and its bias against the reference is measured and
 // printed (it is an approximation: no bound). Filtered importance sampling must converge too:
 // its blur narrows as progressive frames accumulate samples. No output may hold NaN or Inf.
-#include "vtkpasses/mesh/BuiltinMeshes.h"
-#include "vtkpasses/render/OffscreenRenderer.h"
 #include "core/env/environment.h"
 #include "core/frame.h"
 #include "core/reference/reference_integrator.h"
 #include "tests/vtkpasses/render/render_test_helpers.h"
+#include "vtkpasses/mesh/BuiltinMeshes.h"
+#include "vtkpasses/render/OffscreenRenderer.h"
 
 #include <cmath>
 #include <cstdio>

@@ -4,15 +4,15 @@
 // radiance of the analytic sphere hit by each compared pixel's centre ray, with the analytic frame
 // n = p, t = (-y, x, 0)/|.| (the parallels, as the built-in sphere's UV tangents). Metric: relative
 // L2 over the compared pixels, sqrt(sum |gpu - ref|^2 / sum |ref|^2) over RGB.
-#include "vtkpasses/mesh/BuiltinMeshes.h"
-#include "vtkpasses/render/EnvironmentLighting.h"
-#include "vtkpasses/render/MaterialShaderSource.h"
-#include "vtkpasses/render/OffscreenRenderer.h"
 #include "core/env/environment.h"
 #include "core/env/sun_sky.h"
 #include "core/frame.h"
 #include "core/reference/reference_integrator.h"
 #include "tests/vtkpasses/render/render_test_helpers.h"
+#include "vtkpasses/mesh/BuiltinMeshes.h"
+#include "vtkpasses/render/EnvironmentLighting.h"
+#include "vtkpasses/render/MaterialShaderSource.h"
+#include "vtkpasses/render/OffscreenRenderer.h"
 
 #include <algorithm>
 #include <cmath>

@@ -8,9 +8,9 @@
 //
 // The test starts its own Xvfb (with resets, display number chosen by the server) so that the
 // suite's own server, started with -noreset, does not hide the failure.
+#include "core/env/environment.h"
 #include "vtkpasses/mesh/BuiltinMeshes.h"
 #include "vtkpasses/render/OffscreenRenderer.h"
-#include "core/env/environment.h"
 
 #include <cerrno>
 #include <csignal>
