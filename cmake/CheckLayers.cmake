@@ -16,13 +16,14 @@ set(_rules
   "app/ core/,vtkpasses/,app/ ^<Q"
   "bench/ core/,vtkpasses/,scene/,widgets/,app/,bench/ ^<$"
   "tests/ core/,vtkpasses/,scene/,widgets/,app/,bench/,tests/ ^<$"
+  "fuzz/ core/,vtkpasses/,scene/,widgets/,app/,fuzz/ ^<$"
 )
 
 file(GLOB_RECURSE _files RELATIVE "${ROOT}"
   "${ROOT}/core/*.h" "${ROOT}/core/*.cxx" "${ROOT}/vtkpasses/*.h" "${ROOT}/vtkpasses/*.cxx"
   "${ROOT}/scene/*.h" "${ROOT}/scene/*.cxx" "${ROOT}/widgets/*.h" "${ROOT}/widgets/*.cxx"
   "${ROOT}/app/*.h" "${ROOT}/app/*.cxx" "${ROOT}/bench/*.h" "${ROOT}/bench/*.cxx"
-  "${ROOT}/tests/*.h" "${ROOT}/tests/*.cxx")
+  "${ROOT}/tests/*.h" "${ROOT}/tests/*.cxx" "${ROOT}/fuzz/*.h" "${ROOT}/fuzz/*.cxx")
 list(LENGTH _files _count)
 if(_count LESS 100)
   message(FATAL_ERROR "CheckLayers: found only ${_count} sources under ${ROOT}")

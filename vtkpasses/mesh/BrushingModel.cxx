@@ -4,7 +4,9 @@
 #include "core/frame.h"
 #include "vtkpasses/mesh/GeometryAccess.h"
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <cstdlib>
 #include <glm/geometric.hpp>
 #include <sstream>
@@ -65,12 +67,23 @@ glm::dvec3 parseTriple(const std::string& text, const std::string& subject,
 
 glm::dvec3 unitAxis(const glm::dvec3& axis, const std::string& subject, const std::string& whole)
 {
-  const double length = glm::length(axis);
-  if (!(length > 0.0) || !std::isfinite(length))
+  // Scaled by its largest component first, so that tiny and huge axes neither underflow to a
+  // zero length nor overflow to an infinite one.
+  const double largest = std::max({std::abs(axis.x), std::abs(axis.y), std::abs(axis.z)});
+  if (!(largest > 0.0) || !std::isfinite(largest))
   {
     throw errorAbout(subject, "'" + whole + "': the axis has zero length");
   }
-  return axis / length;
+  const glm::dvec3 scaled = axis / largest;
+  const double scaledLength = glm::length(scaled);
+  const double length = largest * scaledLength;
+  // An axis that is unit to rounding is kept as it is: dividing by a length one ulp off 1
+  // would move it again, and toString's spelling would not parse back to the same model.
+  if (std::abs(length - 1.0) <= 4.0 * std::numeric_limits<double>::epsilon())
+  {
+    return axis;
+  }
+  return scaled / scaledLength;
 }
 
 std::string formatTriple(const glm::dvec3& v)

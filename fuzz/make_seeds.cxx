@@ -1,0 +1,121 @@
+// Writes the seed corpora of the fuzz harnesses into DIR/<harness>/: small meshes through VTK's
+// own PLY and STL writers (ASCII and binary, with and without normals and texture coordinates),
+// OFF files, a default session through the session writer, and every declared parameter's
+// default spelled as the CLI reads it. Usage: fuzz_make_seeds DIR
+#include "core/parameters/parameters.h"
+#include "scene/SceneModel.h"
+#include "scene/Session.h"
+#include "vtkpasses/mesh/BuiltinMeshes.h"
+
+#include <QJsonDocument>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vtkCellArray.h>
+#include <vtkPLYWriter.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+#include <vtkSTLWriter.h>
+#include <vtkNew.h>
+#include <vtkSmartPointer.h>
+
+namespace fs = std::filesystem;
+
+namespace
+{
+// OFF has no VTK writer; the format is a header line, counts, points and faces.
+void writeOff(vtkPolyData* mesh, const fs::path& path, bool normals)
+{
+  std::ofstream out(path);
+  out << (normals ? "NOFF\n" : "OFF\n") << mesh->GetNumberOfPoints() << ' '
+      << mesh->GetNumberOfPolys() << " 0\n";
+  vtkDataArray* n = mesh->GetPointData()->GetNormals();
+  for (vtkIdType i = 0; i < mesh->GetNumberOfPoints(); ++i)
+  {
+    double p[3];
+    mesh->GetPoint(i, p);
+    out << p[0] << ' ' << p[1] << ' ' << p[2];
+    if (normals && n)
+    {
+      double v[3];
+      n->GetTuple(i, v);
+      out << ' ' << v[0] << ' ' << v[1] << ' ' << v[2];
+    }
+    out << '\n';
+  }
+  vtkIdType count = 0;
+  const vtkIdType* ids = nullptr;
+  mesh->GetPolys()->InitTraversal();
+  while (mesh->GetPolys()->GetNextCell(count, ids))
+  {
+    out << count;
+    for (vtkIdType k = 0; k < count; ++k)
+    {
+      out << ' ' << ids[k];
+    }
+    out << '\n';
+  }
+}
+} // namespace
+
+int main(int argc, char** argv)
+{
+  if (argc != 2)
+  {
+    std::fprintf(stderr, "usage: fuzz_make_seeds DIR\n");
+    return 2;
+  }
+  const fs::path dir = argv[1];
+  for (const char* sub : {"ply", "stl", "off", "session", "text_values"})
+  {
+    fs::create_directories(dir / sub);
+  }
+  // Small meshes: seeds should be quick to mutate.
+  vtkSmartPointer<vtkPolyData> sphere = aniso::makeSphere(8, 4);
+  vtkSmartPointer<vtkPolyData> plate = aniso::makePlate(2);
+  int index = 0;
+  for (vtkPolyData* mesh : {sphere.Get(), plate.Get()})
+  {
+    for (bool binary : {false, true})
+    {
+      const std::string stem = std::to_string(index++);
+      vtkNew<vtkPLYWriter> ply;
+      ply->SetInputData(mesh);
+      binary ? ply->SetFileTypeToBinary() : ply->SetFileTypeToASCII();
+      ply->SetFileName((dir / "ply" / (stem + ".ply")).string().c_str());
+      ply->Write();
+      vtkNew<vtkSTLWriter> stl;
+      stl->SetInputData(mesh);
+      binary ? stl->SetFileTypeToBinary() : stl->SetFileTypeToASCII();
+      stl->SetFileName((dir / "stl" / (stem + ".stl")).string().c_str());
+      stl->Write();
+      writeOff(mesh, dir / "off" / (stem + ".off"), binary);
+    }
+  }
+  {
+    aniso::SceneModel model;
+    const QByteArray json =
+        QJsonDocument(aniso::sessionToJson(model, {}, QString())).toJson(QJsonDocument::Indented);
+    std::ofstream(dir / "session" / "default.aniso", std::ios::binary)
+        .write(json.constData(), json.size());
+  }
+  const auto& specs = aniso::parameterSpecs();
+  for (size_t i = 0; i < specs.size(); ++i)
+  {
+    const std::string text = aniso::formatParameterValue(specs[i], aniso::defaultParameterValue(specs[i]));
+    std::ofstream out(dir / "text_values" / (std::string(specs[i].name) + ".txt"), std::ios::binary);
+    out.put(static_cast<char>(i));
+    out << text;
+  }
+  for (const char* brushing : {"uv", "axis:0,0,1", "around:1,0,0@0.5,0,0", "radial:0,1,0"})
+  {
+    std::ofstream out(dir / "text_values" / (std::string("brushing-") + brushing[0] + ".txt"),
+                      std::ios::binary);
+    out.put(static_cast<char>(specs.size()));
+    out << brushing;
+  }
+  std::printf("fuzz seeds written to %s\n", dir.string().c_str());
+  return 0;
+}

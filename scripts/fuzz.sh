@@ -1,0 +1,61 @@
+#!/usr/bin/env bash
+# Builds the libFuzzer harnesses (fuzz/) with clang, AddressSanitizer and UndefinedBehavior-
+# Sanitizer, writes their seed corpora (fuzz_make_seeds) and runs each harness for SECONDS
+# (default 20, CI's smoke). A crash, a sanitizer report, a leak or a hang fails the run; the
+# input that caused it is kept in $ANISO_FUZZ_OUT (default ./out/fuzz) as crash-*/timeout-*.
+# Keep what a finding teaches as a regression file under tests/data/fuzz/<harness>/.
+#   scripts/fuzz.sh [SECONDS] [HARNESS...]
+set -euo pipefail
+root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+. "$root/scripts/packages.sh"
+aniso_install_packages cmake make pkg-config clang libclang-rt-14-dev libvtk9-dev libvtk9-qt-dev \
+  qtbase5-dev libopenimageio-dev libglm-dev libgtest-dev libbenchmark-dev
+
+seconds="${1:-20}"
+shift || true
+harnesses=("$@")
+if [ ${#harnesses[@]} -eq 0 ]; then
+  harnesses=(fuzz_ply fuzz_stl fuzz_off fuzz_text_values fuzz_session)
+fi
+build="${ANISO_FUZZ_BUILD_DIR:-$root/build-fuzz}"
+out="${ANISO_FUZZ_OUT:-$root/out/fuzz}"
+jobs="$(nproc 2>/dev/null || echo 2)"
+sanitize="-fsanitize=fuzzer-no-link,address,undefined -fno-sanitize-recover=undefined"
+cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DANISO_FUZZ=ON \
+  -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ \
+  -DCMAKE_CXX_FLAGS="$sanitize -fno-omit-frame-pointer" -DCMAKE_C_FLAGS="$sanitize" \
+  -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=address,undefined" >/dev/null
+cmake --build "$build" -j "$jobs" --target fuzz_make_seeds "${harnesses[@]}"
+
+seeds="$out/seeds"
+rm -rf "$seeds"
+"$build/fuzz/fuzz_make_seeds" "$seeds" >/dev/null
+export ASAN_OPTIONS="detect_leaks=1:abort_on_error=1"
+export LSAN_OPTIONS="suppressions=$root/fuzz/lsan.supp"
+export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
+passed=0
+failed=0
+for h in "${harnesses[@]}"; do
+  corpus="$out/corpus/$h"
+  mkdir -p "$corpus" "$out/findings/$h"
+  seed_dir="$seeds/${h#fuzz_}"
+  regressions="$root/tests/data/fuzz/${h#fuzz_}"
+  extra=()
+  [ -d "$regressions" ] && extra+=("$regressions")
+  log="$out/$h.log"
+  # -seed=1: the same mutations from run to run (how far a run gets depends on the time).
+  if "$build/fuzz/$h" -seed=1 -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 \
+      -artifact_prefix="$out/findings/$h/" -print_final_stats=1 \
+      "$corpus" "$seed_dir" "${extra[@]}" >"$log" 2>&1; then
+    runs=$(grep -o 'stat::number_of_executed_units: *[0-9]*' "$log" | grep -o '[0-9]*$' || echo "?")
+    cov=$(grep -o 'cov: [0-9]*' "$log" | tail -1 | grep -o '[0-9]*' || echo "?")
+    echo "fuzz: $h: ${runs} inputs in ${seconds} s, coverage ${cov} edges, no finding"
+    passed=$((passed + 1))
+  else
+    echo "fuzz: $h: FINDING (log $log, input in $out/findings/$h/)" >&2
+    tail -40 "$log" >&2
+    failed=$((failed + 1))
+  fi
+done
+echo "fuzz: $passed passed, $failed failed"
+[ "$failed" -eq 0 ]
