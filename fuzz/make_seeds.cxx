@@ -2,6 +2,7 @@
 // own PLY and STL writers (ASCII and binary, with and without normals and texture coordinates),
 // OFF files, a default session through the session writer, and every declared parameter's
 // default spelled as the CLI reads it. Usage: fuzz_make_seeds DIR
+#include "core/image/image.h"
 #include "core/parameters/parameters.h"
 #include "scene/SceneModel.h"
 #include "scene/Session.h"
@@ -11,6 +12,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <string>
 #include <vtkCellArray.h>
 #include <vtkPLYWriter.h>
@@ -68,7 +70,7 @@ int main(int argc, char** argv)
     return 2;
   }
   const fs::path dir = argv[1];
-  for (const char* sub : {"ply", "stl", "off", "session", "text_values"})
+  for (const char* sub : {"ply", "stl", "off", "session", "text_values", "image"})
   {
     fs::create_directories(dir / sub);
   }
@@ -115,6 +117,39 @@ int main(int argc, char** argv)
                       std::ios::binary);
     out.put(static_cast<char>(specs.size()));
     out << brushing;
+  }
+  // Images through OpenImageIO's writers (writeImage), the first byte naming the extension as
+  // fuzz_image reads it; small, with a gradient so that compressed formats have content.
+  {
+    aniso::Image image;
+    image.width = 6;
+    image.height = 4;
+    image.channels = 4;
+    image.data.resize(std::size_t(6) * 4 * 4);
+    for (std::size_t i = 0; i < image.data.size(); ++i)
+    {
+      image.data[i] = static_cast<float>(i % 7) / 6.0f;
+    }
+    const char* const suffixes[] = {".exr", ".hdr", ".png", ".tif", ".jpg"};
+    for (int k = 0; k < 5; ++k)
+    {
+      const fs::path written = dir / "image" / (std::string("written") + suffixes[k]);
+      try
+      {
+        aniso::writeImage(written.string(), image);
+      }
+      catch (const std::exception&)
+      {
+        continue; // a format writeImage does not write (JPEG): no seed of it
+      }
+      std::ifstream in(written, std::ios::binary);
+      const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+      std::ofstream out(dir / "image" / (std::string("seed") + std::to_string(k)), std::ios::binary);
+      out.put(static_cast<char>(k));
+      out << bytes;
+      in.close();
+      fs::remove(written);
+    }
   }
   std::printf("fuzz seeds written to %s\n", dir.string().c_str());
   return 0;

@@ -15,7 +15,7 @@ seconds="${1:-20}"
 shift || true
 harnesses=("$@")
 if [ ${#harnesses[@]} -eq 0 ]; then
-  harnesses=(fuzz_ply fuzz_stl fuzz_off fuzz_text_values fuzz_session)
+  harnesses=(fuzz_ply fuzz_stl fuzz_off fuzz_text_values fuzz_session fuzz_image)
 fi
 build="${ANISO_FUZZ_BUILD_DIR:-$root/build-fuzz}"
 out="${ANISO_FUZZ_OUT:-$root/out/fuzz}"
@@ -30,7 +30,7 @@ cmake --build "$build" -j "$jobs" --target fuzz_make_seeds "${harnesses[@]}"
 seeds="$out/seeds"
 rm -rf "$seeds"
 "$build/fuzz/fuzz_make_seeds" "$seeds" >/dev/null
-export ASAN_OPTIONS="detect_leaks=1:abort_on_error=1"
+export ASAN_OPTIONS="detect_leaks=1:abort_on_error=1:fast_unwind_on_malloc=0"
 export LSAN_OPTIONS="suppressions=$root/fuzz/lsan.supp"
 export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
 passed=0
