@@ -37,7 +37,7 @@ enum class Affects : unsigned
   Variant = 1u << 1,       // the material's shader variant (MaterialVariant)
   Luts = 1u << 2,          // the inputs of the half-vector and BRDF lookup-table bakes
   Display = 1u << 3,       // only the display transform of the accumulated image
-  FrameCost = 1u << 4,     // what a frame costs to draw: the costs learnt so far are forgotten
+  FrameCost = 1u << 4,     // what a frame costs per pixel and sample: learnt costs are forgotten
   LitModels = 1u << 5,     // what the lit models draw (their uniform material, lights, surface)
   SurfaceModels = 1u << 6, // what the surface models draw besides their own parameters
 };
