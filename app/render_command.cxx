@@ -6,6 +6,7 @@
 #include "core/image/image.h"
 #include "core/maps/map_files.h"
 #include "core/maps/quaternion_map.h"
+#include "core/parameters/choices.h"
 #include "core/parameters/parameters.h"
 #include "core/quality/adaptive_quality.h"
 #include "vtkpasses/mesh/BrushingModel.h"
@@ -309,8 +310,12 @@ int runRender(const std::vector<std::string>& args, std::ostream& out)
   {
     parameters.setValue(name, a.value(std::string("--") + name));
   }
+  // A choice of the declared background other than its colour (env, none) as it is; anything
+  // else is the colour, background-color.
   const std::string background = a.text("--background");
-  if (background == "none" || background == "env")
+  const std::vector<std::string_view>& modes = parameterSpec("background").choices;
+  if (std::find(modes.begin(), modes.end(), background) != modes.end() &&
+      parseBackgroundMode(background) != BackgroundMode::Color)
   {
     parameters.setText("background", background);
   }
@@ -318,7 +323,7 @@ int runRender(const std::vector<std::string>& args, std::ostream& out)
   {
     try
     {
-      parameters.setValue("background", ParameterValue{{}, "color"});
+      parameters.setText("background", spelling(BackgroundMode::Color));
       parameters.setValue("background-color", parseParameterValue(parameterSpec("background-color"),
                                                                   background, "--background"));
     }

@@ -6,6 +6,7 @@
 #include "core/maps/map_files.h"
 #include "core/microstructure/microstructure.h"
 #include "core/models/height_field.h"
+#include "core/parameters/choices.h"
 #include "vtkpasses/render/LeadrMaterial.h"
 #include "vtkpasses/render/MicrostructureMaterial.h"
 
@@ -60,19 +61,6 @@ void refuse(const Arguments& a, const char* const* begin, const char* const* end
   }
 }
 
-MicroPattern patternFromName(const std::string& name)
-{
-  if (name == "pyramids")
-    return MicroPattern::Pyramids;
-  if (name == "inverted-pyramids")
-    return MicroPattern::InvertedPyramids;
-  if (name == "grooves")
-    return MicroPattern::Grooves;
-  if (name == "silk")
-    return MicroPattern::Silk;
-  throw errorAbout("structure", "unknown structure '" + name + "'");
-}
-
 // The option of declared parameter KEY: "--" + KEY but for the grid, --grid on the command line.
 std::string optionOf(std::string_view key)
 {
@@ -115,7 +103,7 @@ LeadrSettings leadrSettingsOf(const DeclaredValues& values)
   leadr.surface.baseAlphaX = leadr.surface.baseAlphaY = real("leadr-roughness");
   leadr.tiles = real("leadr-tiles");
   leadr.gridN = int(real("leadr-grid"));
-  leadr.plainNormals = values("leadr-filter").text == "normal-mapping";
+  leadr.plainNormals = parseLeadrFilter(values("leadr-filter").text) == LeadrFilter::NormalMapping;
   leadr.environment = true;
   return leadr;
 }
@@ -127,16 +115,13 @@ MicrostructureSettings microstructureSettingsOf(const DeclaredValues& values)
   { return values(key).text; };
   MicrostructureSettings micro;
   micro.structure = std::make_shared<const Microstructure>(
-      makeMicrostructure(patternFromName(text("structure")), 64, real("structure-depth")));
+      makeMicrostructure(parseMicroPattern(text("structure")), 64, real("structure-depth")));
   MicroShadingOptions& o = micro.options;
   o.samplesPerAxis = int(real("micro-grid"));
-  o.jittered = text("jitter-grid") == "on";
-  const std::string& masking = text("masking");
-  o.masking = masking == "normal"     ? MicroMasking::Normal
-              : masking == "parallax" ? MicroMasking::Parallax
-                                      : MicroMasking::ParallaxOcclusion;
-  o.selfShadowing = text("self-shadow") == "on";
-  o.brdf = text("micro-brdf") == "blinn-phong" ? MicroBrdf::BlinnPhong : MicroBrdf::GgxSmithSchlick;
+  o.jittered = parseOnOff("jitter-grid", text("jitter-grid")) == OnOff::On;
+  o.masking = parseMicroMasking(text("masking"));
+  o.selfShadowing = parseOnOff("self-shadow", text("self-shadow")) == OnOff::On;
+  o.brdf = parseMicroBrdf(text("micro-brdf"));
   o.roughness = real("micro-roughness");
   o.blinnExponent = real("blinn-exponent");
   micro.tiles = real("structure-tiles");

@@ -15,11 +15,6 @@ namespace aniso
 {
 namespace
 {
-bool isInput(const QString& key)
-{
-  return key == "nu" || key == "nv" || key == "lut-size" || key == "lut-samples";
-}
-
 struct Outcome
 {
   LutResult result;
@@ -159,7 +154,7 @@ void LutScheduler::waitForIdle()
 
 void LutScheduler::modelChanged(const QString& key)
 {
-  if (isInput(key))
+  if (sceneKeyAffects(key.toStdString(), Affects::Luts))
   {
     setBusy(true);
     debounce_->start();

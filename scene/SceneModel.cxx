@@ -11,7 +11,7 @@ namespace aniso
 namespace
 {
 SceneKey asset(std::string_view name, std::string_view label, std::string_view defaultText,
-               std::string_view help)
+               std::string_view help, Affects roles)
 {
   SceneKey key;
   key.spec.name = name;
@@ -19,6 +19,7 @@ SceneKey asset(std::string_view name, std::string_view label, std::string_view d
   key.spec.type = ParameterType::Text;
   key.spec.defaultText = defaultText;
   key.spec.help = help;
+  key.spec.roles = roles;
   key.asset = true;
   return key;
 }
@@ -37,32 +38,44 @@ std::vector<SceneKey> makeKeys()
     keys.push_back(key);
   }
   // Assets are paths (or the names of built-in ones), not tunable values, so the declaration of
-  // tunable parameters does not hold them.
+  // tunable parameters does not hold them. Maps are features of the material's shader variant.
+  using A = Affects;
+  const Affects map = A::Variant | A::FrameCost;
   keys.push_back(
       asset("mesh", "Mesh", "builtin:torus",
-            "the mesh: a file path or builtin:sphere, builtin:torus, builtin:plate, builtin:disk"));
-  keys.push_back(asset("normal-map", "Normal map", {}, "tangent-space normal map"));
+            "the mesh: a file path or builtin:sphere, builtin:torus, builtin:plate, builtin:disk",
+            A::FrameCost | A::LitModels | A::SurfaceModels));
+  keys.push_back(asset("normal-map", "Normal map", {}, "tangent-space normal map", map));
   keys.push_back(asset("quaternion-map", "Quaternion map", {},
-                       "quaternion map (a, b, c); baked from the normal map when absent"));
+                       "quaternion map (a, b, c); baked from the normal map when absent", map));
   keys.push_back(asset("tpr", "TPR map", {},
                        "tangent-plane rotation: a pattern (linear:ANGLE, circular:U,V, "
-                       "radial:U,V, spiral:U,V:PITCH, wave) or an image file"));
-  keys.push_back(asset("height-map", "Height map", {}, "height map for parallax occlusion"));
-  keys.push_back(asset("albedo-map", "Albedo map", {}, "diffuse albedo map, linear RGB"));
-  keys.push_back(asset("ao-map", "AO map", {}, "ambient occlusion map"));
-  keys.push_back(asset("metallic-map", "Metallic map", {}, "metalness map"));
+                       "radial:U,V, spiral:U,V:PITCH, wave) or an image file",
+                       map | A::SurfaceModels));
+  keys.push_back(asset("height-map", "Height map", {}, "height map for parallax occlusion", map));
+  keys.push_back(asset("albedo-map", "Albedo map", {}, "diffuse albedo map, linear RGB", map));
+  keys.push_back(asset("ao-map", "AO map", {}, "ambient occlusion map", map));
+  keys.push_back(asset("metallic-map", "Metallic map", {}, "metalness map", map));
   return keys;
+}
+
+const SceneKey* findSceneKey(std::string_view key)
+{
+  for (const SceneKey& k : sceneKeys())
+  {
+    if (k.spec.name == key)
+    {
+      return &k;
+    }
+  }
+  return nullptr;
 }
 
 std::size_t indexOf(std::string_view key)
 {
-  const auto& keys = sceneKeys();
-  for (std::size_t i = 0; i < keys.size(); ++i)
+  if (const SceneKey* k = findSceneKey(key))
   {
-    if (keys[i].spec.name == key)
-    {
-      return i;
-    }
+    return static_cast<std::size_t>(k - sceneKeys().data());
   }
   throw errorAbout(std::string(key), "unknown parameter");
 }
@@ -91,14 +104,13 @@ const SceneKey& sceneKey(std::string_view key)
 
 bool isSceneKey(std::string_view key)
 {
-  for (const SceneKey& k : sceneKeys())
-  {
-    if (k.spec.name == key)
-    {
-      return true;
-    }
-  }
-  return false;
+  return findSceneKey(key) != nullptr;
+}
+
+bool sceneKeyAffects(std::string_view key, Affects what)
+{
+  const SceneKey* k = findSceneKey(key);
+  return k && k->spec.affects(what);
 }
 
 ParameterValue numberValue(double value)

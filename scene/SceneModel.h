@@ -31,6 +31,9 @@ const std::vector<SceneKey>& sceneKeys();
 // Throws aniso::Error "KEY: unknown parameter".
 const SceneKey& sceneKey(std::string_view key);
 bool isSceneKey(std::string_view key);
+// Whether a change of KEY affects any of WHAT (ParameterSpec::affects); false for a key that is
+// no scene key.
+bool sceneKeyAffects(std::string_view key, Affects what);
 
 ParameterValue numberValue(double value);
 ParameterValue colorValue(double r, double g, double b);

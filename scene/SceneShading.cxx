@@ -13,7 +13,7 @@ namespace
 constexpr std::string_view kDefaultLights = "dir:-1,-1.5,2:3;dir:2,-0.5,0.6:1";
 
 SceneKey textKey(std::string_view name, std::string_view label, std::string_view defaultText,
-                 std::string_view help, std::vector<std::string_view> choices)
+                 std::string_view help, std::vector<std::string_view> choices, Affects roles)
 {
   SceneKey key;
   key.spec.name = name;
@@ -22,6 +22,7 @@ SceneKey textKey(std::string_view name, std::string_view label, std::string_view
   key.spec.defaultText = defaultText;
   key.spec.help = help;
   key.spec.choices = std::move(choices);
+  key.spec.roles = roles;
   return key;
 }
 
@@ -53,17 +54,19 @@ std::vector<SceneKey> shadingSceneKeys()
   {
     samples.push_back(info.name);
   }
+  using A = Affects;
   std::vector<SceneKey> keys;
   keys.push_back(textKey("model", "Shading model", kEnvironmentModel,
                          "how the surface is shaded: Ashikhmin-Shirley under the environment "
                          "(as-env) or one of the other models",
-                         std::move(models)));
+                         std::move(models), A::FrameCost | A::LitModels | A::SurfaceModels));
   keys.push_back(textKey("sample-material", "Sample material", kUniformSampleMaterial,
                          "the shift-variant material of the lit models: uniform (from n_u, n_v, "
                          "F0 and albedo) or a built-in sample",
-                         std::move(samples)));
+                         std::move(samples), A::FrameCost | A::LitModels));
   keys.push_back(textKey("lights", "Lights", kDefaultLights,
-                         "point and directional lights of the lit models, separated by ';'", {}));
+                         "point and directional lights of the lit models, separated by ';'", {},
+                         A::FrameCost | A::LitModels | A::SurfaceModels));
   return keys;
 }
 

@@ -2,6 +2,7 @@
 
 #include "core/brdf/ashikhmin_shirley.h"
 #include "core/error.h"
+#include "core/parameters/choices.h"
 #include "widgets/ParameterControls.h"
 #include "widgets/ParameterPanel.h"
 #include "widgets/SliderMapping.h"
@@ -196,7 +197,7 @@ void MaterialDock::editRoughness(const std::string& key, double alpha)
 void MaterialDock::syncFromModel()
 {
   const SceneModel* model = editor_->model();
-  const bool byError = model->text("quality-mode") == "error";
+  const bool byError = parseQualityMode(model->text("quality-mode")) == QualityMode::Error;
   targetSamples_->setEnabled(!byError);
   errorTarget_->setEnabled(byError);
   {

@@ -17,13 +17,6 @@ namespace aniso
 {
 namespace
 {
-// The keys the lit actor depends on; any other change leaves it as it is.
-bool isLitKey(const QString& key)
-{
-  return key == "model" || key == "sample-material" || key == "lights" || key == "nu" ||
-         key == "nv" || key == "f0" || key == "albedo" || key == "mesh" || key == "tangents";
-}
-
 // Sample materials are baked once per name: switching models or moving lights reuses them.
 std::shared_ptr<const SvMaps> sampleMaps(const std::string& name)
 {
@@ -98,7 +91,8 @@ LitModelView::LitModelView(SceneModel* model, SceneView* view, QObject* parent)
   connect(model_, &SceneModel::valueChanged, this,
           [this](const QString& key)
           {
-            if (isLitKey(key))
+            // Only the keys the lit actor depends on: any other change leaves it as it is.
+            if (sceneKeyAffects(key.toStdString(), Affects::LitModels))
             {
               update();
             }

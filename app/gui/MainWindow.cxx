@@ -561,9 +561,9 @@ bool MainWindow::openNormalMap(const QString& path)
       [&]
       {
         editor_.edit("normal-map", textValue(path.toStdString()));
-        if (model_.text("bump") == "none")
+        if (parseBumpMapping(model_.text("bump")) == BumpMapping::None)
         {
-          editor_.edit("bump", textValue("quaternion"));
+          editor_.edit("bump", textValue(std::string(spelling(BumpMapping::Quaternion))));
         }
       });
 }

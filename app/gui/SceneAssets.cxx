@@ -168,20 +168,20 @@ std::shared_ptr<const Image> SceneAssets::map(const std::string& key, const std:
 
 void SceneAssets::addMaps(const SceneModel& model, MaterialSettings& settings)
 {
-  const std::string& bump = model.text("bump");
+  const BumpMapping bump = parseBumpMapping(model.text("bump"));
   const std::string& normals = model.text("normal-map");
   const std::string& quaternions = model.text("quaternion-map");
   settings.normalMap = nullptr;
   settings.quaternionMap = nullptr;
-  if (bump == "normal")
+  if (bump == BumpMapping::Normal)
   {
     settings.normalMap = map("normal-map", normals);
   }
-  else if (bump == "quaternion" && !quaternions.empty())
+  else if (bump == BumpMapping::Quaternion && !quaternions.empty())
   {
     settings.quaternionMap = map("quaternion-map", quaternions);
   }
-  else if (bump == "quaternion" && !normals.empty())
+  else if (bump == BumpMapping::Quaternion && !normals.empty())
   {
     settings.quaternionMap = maps_.get("baked-quaternion\n" + normals,
                                        [&]

@@ -79,28 +79,18 @@ namespace
 {
 bool isMaterialKey(const std::string& key)
 {
-  static const char* const keys[] = {
-      "nu",         "nv",           "f0",         "albedo",         "samples",
-      "lut-size",   "lut-samples",  "method",     "filtered",       "half-vectors",
-      "bump",       "height-scale", "normal-map", "quaternion-map", "tpr",
-      "height-map", "albedo-map",   "ao-map",     "metallic-map"};
-  return std::find(std::begin(keys), std::end(keys), key) != std::end(keys);
+  return sceneKeyAffects(key, Affects::Uniforms | Affects::Variant | Affects::Luts);
 }
 
 bool isDisplayKey(const std::string& key)
 {
-  return key == "exposure" || key == "tone-mapping" || key == "background" ||
-         key == "background-color";
+  return sceneKeyAffects(key, Affects::Display);
 }
 
 // Keys that leave the cost of a frame as it was: the measured frame costs stay valid.
 bool keepsFrameCost(const std::string& key)
 {
-  static const char* const keys[] = {
-      "nu",           "nv",           "f0",           "albedo",
-      "samples",      "lut-size",     "lut-samples",  "target-samples",
-      "env-rotation", "height-scale", "quality-mode", "error-target"};
-  return isDisplayKey(key) || std::find(std::begin(keys), std::end(keys), key) != std::end(keys);
+  return isSceneKey(key) && !sceneKeyAffects(key, Affects::FrameCost);
 }
 
 bool needsLuts(const MaterialSettings& s)
@@ -465,7 +455,9 @@ void SceneView::modelChanged(const QString& qkey)
     {
       requestLighting();
     }
-    else if (key == "env-sampling" && model_->text("env-sampling") != "off" && !lightingSampled_)
+    else if (key == "env-sampling" &&
+             parseEnvironmentSampling(model_->text("env-sampling")) != EnvironmentSampling::Off &&
+             !lightingSampled_)
     {
       // The distribution is baked with a new lighting on the worker; until it is on screen the
       // material keeps sampling only its lobe.
@@ -587,7 +579,8 @@ void SceneView::startLightingBake()
   lightingPending_ = false;
   const int id = lightingRequest_;
   const int cubeSize = model_->integer("cube-size");
-  const bool sampling = model_->text("env-sampling") != "off";
+  const bool sampling =
+      parseEnvironmentSampling(model_->text("env-sampling")) != EnvironmentSampling::Off;
   std::shared_ptr<const Environment> environment;
   try
   {
@@ -923,7 +916,7 @@ int SceneView::accumulatedSamples() const
 
 QualityChoice SceneView::quality() const
 {
-  if (model_->text("quality-mode") == "error")
+  if (parseQualityMode(model_->text("quality-mode")) == QualityMode::Error)
   {
     // The largest total the samples mode allows bounds this one too.
     const int most = static_cast<int>(parameterSpec("target-samples").maximum);

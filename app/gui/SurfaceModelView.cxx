@@ -22,13 +22,6 @@ namespace aniso
 {
 namespace
 {
-// Keys that change the picture of a surface model besides its declared ones.
-bool changesTheSurface(const QString& key)
-{
-  return key == "model" || key == "lights" || key == "f0" || key == "albedo" || key == "mesh" ||
-         key == "tangents" || key == "tpr";
-}
-
 glm::dvec3 colourOf(const SceneModel& model, std::string_view key)
 {
   const std::array<double, 3> c = model.color(key);
@@ -134,7 +127,9 @@ void SurfaceModelView::keyChanged(const QString& key)
 {
   const std::string name = key.toStdString();
   const std::vector<std::string_view> keys = surfaceModelKeys(model_->text("model"));
-  if (changesTheSurface(key) || std::find(keys.begin(), keys.end(), name) != keys.end())
+  // The keys that change the picture of a surface model: the shared ones and its declared ones.
+  if (sceneKeyAffects(name, Affects::SurfaceModels) ||
+      std::find(keys.begin(), keys.end(), name) != keys.end())
   {
     update();
   }

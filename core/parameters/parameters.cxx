@@ -4,12 +4,15 @@
 #include "core/leadr/leadr.h"
 #include "core/lut/lut.h"
 #include "core/microstructure/microstructure.h"
+#include "core/parameters/choices.h"
 
 #include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <initializer_list>
+#include <stdexcept>
 #include <utility>
 
 namespace aniso
@@ -55,12 +58,16 @@ ParameterSpec text(std::string_view name, std::string_view label, std::string_vi
   return s;
 }
 
-ParameterSpec choice(std::string_view name, std::string_view label,
-                     std::vector<std::string_view> choices, std::string_view value,
-                     std::string_view help)
+// The choices of an enum-backed parameter, in ORDER, and its default VALUE, spelt by spelling().
+template <typename E>
+ParameterSpec choice(std::string_view name, std::string_view label, std::initializer_list<E> order,
+                     E value, std::string_view help)
 {
-  ParameterSpec s = text(name, label, value, help);
-  s.choices = std::move(choices);
+  ParameterSpec s = text(name, label, spelling(value), help);
+  for (E e : order)
+  {
+    s.choices.push_back(spelling(e));
+  }
   return s;
 }
 
@@ -70,107 +77,233 @@ ParameterSpec powerOfTwo(ParameterSpec s)
   return s;
 }
 
+ParameterSpec affecting(Affects roles, ParameterSpec s)
+{
+  s.roles = roles;
+  return s;
+}
+
+// The spelling of each value of an enum-backed choice: the only place these words are written.
+template <typename E>
+struct Spelling
+{
+  E value;
+  std::string_view text;
+};
+
+constexpr Spelling<SpecularMethod> kSpecularMethods[] = {{SpecularMethod::Exact, "exact"},
+                                                         {SpecularMethod::SplitSum, "split-sum"}};
+constexpr Spelling<HalfVectorSource> kHalfVectorSources[] = {{HalfVectorSource::Shader, "shader"},
+                                                             {HalfVectorSource::Lut, "lut"}};
+constexpr Spelling<EnvironmentSampling> kEnvironmentSamplings[] = {
+    {EnvironmentSampling::Off, "off"}, {EnvironmentSampling::Mis, "mis"}};
+constexpr Spelling<QualityMode> kQualityModes[] = {{QualityMode::Samples, "samples"},
+                                                   {QualityMode::Error, "error"}};
+constexpr Spelling<BumpMapping> kBumpMappings[] = {{BumpMapping::None, "none"},
+                                                   {BumpMapping::Normal, "normal"},
+                                                   {BumpMapping::Quaternion, "quaternion"}};
+constexpr Spelling<BackgroundMode> kBackgroundModes[] = {{BackgroundMode::Environment, "env"},
+                                                         {BackgroundMode::Color, "color"},
+                                                         {BackgroundMode::Transparent, "none"}};
+constexpr Spelling<ToneMapping> kToneMappings[] = {{ToneMapping::Aces, "aces"},
+                                                   {ToneMapping::Reinhard, "reinhard"},
+                                                   {ToneMapping::Clamp, "clamp"}};
+constexpr Spelling<LeadrFilter> kLeadrFilters[] = {{LeadrFilter::Leadr, "leadr"},
+                                                   {LeadrFilter::NormalMapping, "normal-mapping"}};
+constexpr Spelling<MicroPattern> kMicroPatterns[] = {
+    {MicroPattern::Pyramids, "pyramids"},
+    {MicroPattern::InvertedPyramids, "inverted-pyramids"},
+    {MicroPattern::Grooves, "grooves"},
+    {MicroPattern::Silk, "silk"}};
+constexpr Spelling<MicroMasking> kMicroMaskings[] = {{MicroMasking::ParallaxOcclusion, "pom"},
+                                                     {MicroMasking::Parallax, "parallax"},
+                                                     {MicroMasking::Normal, "normal"}};
+constexpr Spelling<MicroBrdf> kMicroBrdfs[] = {{MicroBrdf::GgxSmithSchlick, "ggx"},
+                                               {MicroBrdf::BlinnPhong, "blinn-phong"}};
+constexpr Spelling<OnOff> kOnOff[] = {{OnOff::Off, "off"}, {OnOff::On, "on"}};
+
+template <typename E, std::size_t N>
+std::string_view spellingIn(const Spelling<E> (&table)[N], E value)
+{
+  const auto* s = std::find_if(std::begin(table), std::end(table),
+                               [&](const Spelling<E>& e) { return e.value == value; });
+  if (s == std::end(table))
+  {
+    throw std::logic_error("a choice without a spelling");
+  }
+  return s->text;
+}
+
+// The value TEXT spells among the choices of parameter KEY, checked as every value is (so the
+// message is checkParameterValue's).
+template <typename E, std::size_t N>
+E parseIn(const Spelling<E> (&table)[N], std::string_view key, std::string_view text)
+{
+  ParameterValue value;
+  value.text = std::string(text);
+  checkParameterValue(parameterSpec(key), value, std::string(key));
+  const auto* s = std::find_if(std::begin(table), std::end(table),
+                               [&](const Spelling<E>& e) { return e.text == text; });
+  if (s == std::end(table))
+  {
+    throw std::logic_error(std::string(key) + ": its choices are not of this enum");
+  }
+  return s->value;
+}
+
 std::vector<ParameterSpec> declare()
 {
   using T = ParameterType;
   using S = ParameterScale;
+  using A = Affects;
   // The default material is brushed aluminium: sharp across the brushing (n_u, along t) and
   // broad along it (n_v), so highlights stretch along b as on a brushed plate.
   return {
-      number("nu", "n_u", T::Real, 1000.0, 0.0, kMaxExponent, 1.0, S::Logarithmic, {},
-             "Ashikhmin-Shirley exponent along the tangent t; higher is sharper"),
-      number("nv", "n_v", T::Real, 50.0, 0.0, kMaxExponent, 1.0, S::Logarithmic, {},
-             "Ashikhmin-Shirley exponent along the bitangent b; higher is sharper"),
-      color("f0", "F0", {0.913, 0.922, 0.924}, 0.001,
-            "Fresnel reflectance at normal incidence, linear RGB; the default is aluminium"),
-      color("albedo", "Albedo", {0.0, 0.0, 0.0}, 0.01,
-            "diffuse Lambert albedo, linear RGB; metals have none"),
-      number("samples", "Samples", T::Integer, 16.0, 1.0, 1024.0, 1.0, S::Logarithmic, {},
-             "importance samples per pixel and frame"),
-      number("lut-size", "LUT size", T::Integer, 64.0, kMinLutSize, kMaxLutSize, 1.0,
-             S::Logarithmic, "texels",
-             "width and height of the half-vector and BRDF lookup tables"),
-      number("lut-samples", "LUT samples", T::Integer, 1024.0, 1.0, kMaxLutSamples, 1.0,
-             S::Logarithmic, {}, "importance samples per texel of the BRDF lookup table"),
-      text("env", "Environment", "builtin:studio",
-           "environment: an equirectangular HDR/EXR file, builtin:studio, builtin:white or "
-           "builtin:sunsky"),
+      affecting(A::Uniforms | A::Luts | A::LitModels,
+                number("nu", "n_u", T::Real, 1000.0, 0.0, kMaxExponent, 1.0, S::Logarithmic, {},
+                       "Ashikhmin-Shirley exponent along the tangent t; higher is sharper")),
+      affecting(A::Uniforms | A::Luts | A::LitModels,
+                number("nv", "n_v", T::Real, 50.0, 0.0, kMaxExponent, 1.0, S::Logarithmic, {},
+                       "Ashikhmin-Shirley exponent along the bitangent b; higher is sharper")),
+      affecting(A::Uniforms | A::LitModels | A::SurfaceModels,
+                color("f0", "F0", {0.913, 0.922, 0.924}, 0.001,
+                      "Fresnel reflectance at normal incidence, linear RGB; the default is "
+                      "aluminium")),
+      affecting(A::Uniforms | A::LitModels | A::SurfaceModels,
+                color("albedo", "Albedo", {0.0, 0.0, 0.0}, 0.01,
+                      "diffuse Lambert albedo, linear RGB; metals have none")),
+      affecting(A::Uniforms, number("samples", "Samples", T::Integer, 16.0, 1.0, 1024.0, 1.0,
+                                    S::Logarithmic, {}, "importance samples per pixel and frame")),
+      affecting(A::Luts, number("lut-size", "LUT size", T::Integer, 64.0, kMinLutSize, kMaxLutSize,
+                                1.0, S::Logarithmic, "texels",
+                                "width and height of the half-vector and BRDF lookup tables")),
+      affecting(A::Luts, number("lut-samples", "LUT samples", T::Integer, 1024.0, 1.0,
+                                kMaxLutSamples, 1.0, S::Logarithmic, {},
+                                "importance samples per texel of the BRDF lookup table")),
+      affecting(A::FrameCost,
+                text("env", "Environment", "builtin:studio",
+                     "environment: an equirectangular HDR/EXR file, builtin:studio, builtin:white "
+                     "or builtin:sunsky")),
       number("env-rotation", "Rotation", T::Real, 0.0, -180.0, 180.0, 1.0, S::Linear, "deg",
              "rotation of the environment about the world Z axis"),
-      number("exposure", "Exposure", T::Real, 0.0, -16.0, 16.0, 0.1, S::Linear, "EV",
-             "exposure applied before tone mapping"),
-      powerOfTwo(number("cube-size", "Cube size", T::Integer, 256.0, 1.0, 2048.0, 1.0,
-                        S::Logarithmic, "texels", "edge of a level-0 environment cubemap face")),
+      affecting(A::Display, number("exposure", "Exposure", T::Real, 0.0, -16.0, 16.0, 0.1,
+                                   S::Linear, "EV", "exposure applied before tone mapping")),
+      affecting(A::FrameCost, powerOfTwo(number("cube-size", "Cube size", T::Integer, 256.0, 1.0,
+                                                2048.0, 1.0, S::Logarithmic, "texels",
+                                                "edge of a level-0 environment cubemap face"))),
       // How a material is shaded and a scene shown (the application's docks and sessions).
-      choice("method", "Specular method", {"exact", "split-sum"}, "exact",
-             "specular integration: exact per-sample AS weights, or the split sum with the BRDF "
-             "lookup table"),
-      choice("filtered", "Filtered sampling", {"on", "off"}, "on",
-             "read each sample at the environment mip level its pdf and the sample count call for"),
-      choice("env-sampling", "Environment sampling", {"off", "mis"}, "off",
-             "exact method: also sample the environment by its luminance and combine with the "
-             "lobe samples by multiple importance sampling (small bright sources, rough lobes)"),
+      affecting(A::Variant | A::FrameCost,
+                choice("method", "Specular method",
+                       {SpecularMethod::Exact, SpecularMethod::SplitSum}, SpecularMethod::Exact,
+                       "specular integration: exact per-sample AS weights, or the split sum with "
+                       "the BRDF lookup table")),
+      affecting(A::Variant | A::FrameCost,
+                choice("filtered", "Filtered sampling", {OnOff::On, OnOff::Off}, OnOff::On,
+                       "read each sample at the environment mip level its pdf and the sample "
+                       "count call for")),
+      affecting(A::Variant | A::FrameCost,
+                choice("env-sampling", "Environment sampling",
+                       {EnvironmentSampling::Off, EnvironmentSampling::Mis},
+                       EnvironmentSampling::Off,
+                       "exact method: also sample the environment by its luminance and combine "
+                       "with the lobe samples by multiple importance sampling (small bright "
+                       "sources, rough lobes)")),
       // The LUT is the default: equally accurate, and 1.7x faster than computing the half
       // vectors at 64 samples on llvmpipe (docs/BENCHMARKS.md, "Frame time").
-      choice("half-vectors", "Half vectors", {"shader", "lut"}, "lut",
-             "where the importance-sampled half vectors come from: computed in the shader or "
-             "fetched from the half-vector lookup table"),
+      affecting(A::Variant | A::FrameCost,
+                choice("half-vectors", "Half vectors",
+                       {HalfVectorSource::Shader, HalfVectorSource::Lut}, HalfVectorSource::Lut,
+                       "where the importance-sampled half vectors come from: computed in the "
+                       "shader or fetched from the half-vector lookup table")),
       number("target-samples", "Quality", T::Integer, 256.0, 1.0, 65536.0, 1.0, S::Logarithmic, {},
              "samples per pixel a still view accumulates by progressive refinement"),
       // The quality as an error target instead (core/quality/adaptive_quality.h): the samples
       // follow from the lobe and filtering by the error model that `aniso bench` fitted.
-      choice("quality-mode", "Quality by", {"samples", "error"}, "samples",
+      choice("quality-mode", "Quality by", {QualityMode::Samples, QualityMode::Error},
+             QualityMode::Samples,
              "what sets a still view's quality: target-samples, or error-target by the error "
              "model of the material's lobe and filtering"),
       number("error-target", "Error target", T::Real, 0.01, 1e-4, 1.0, 1e-4, S::Logarithmic, {},
              "relative L2 error a still view refines to with quality-mode error (0.01 = 1%); "
              "also 'aniso render --quality'"),
-      choice("bump", "Bump mapping", {"none", "normal", "quaternion"}, "none",
-             "how the maps perturb the shading frame: not at all, by the normal map, or by the "
-             "quaternion map (baked from the normal map when none is given)"),
-      number("height-scale", "Height scale", T::Real, 0.02, 0.0, 0.5, 0.001, S::Linear, "uv",
-             "relief depth of parallax occlusion mapping, in texture-coordinate units"),
-      text("tangents", "Tangents", "auto",
-           "tangent field: auto (the mesh's, else from UVs, else axis:1,0,0), uv, axis:X,Y,Z, "
-           "around:X,Y,Z or radial:X,Y,Z"),
-      choice("background", "Background", {"env", "color", "none"}, "env",
-             "what lies behind the surfaces: the environment, background-color, or nothing "
-             "(transparent)"),
-      color("background-color", "Background colour", {0.18, 0.18, 0.18}, 0.01,
-            "linear radiance of a plain background"),
-      choice("tone-mapping", "Tone mapping", {"aces", "reinhard", "clamp"}, "aces",
-             "display transform from linear radiance for the screen and PNG files"),
+      affecting(A::Variant | A::FrameCost,
+                choice("bump", "Bump mapping",
+                       {BumpMapping::None, BumpMapping::Normal, BumpMapping::Quaternion},
+                       BumpMapping::None,
+                       "how the maps perturb the shading frame: not at all, by the normal map, or "
+                       "by the quaternion map (baked from the normal map when none is given)")),
+      affecting(A::Uniforms,
+                number("height-scale", "Height scale", T::Real, 0.02, 0.0, 0.5, 0.001, S::Linear,
+                       "uv",
+                       "relief depth of parallax occlusion mapping, in texture-coordinate "
+                       "units")),
+      affecting(A::FrameCost | A::LitModels | A::SurfaceModels,
+                text("tangents", "Tangents", "auto",
+                     "tangent field: auto (the mesh's, else from UVs, else axis:1,0,0), uv, "
+                     "axis:X,Y,Z, around:X,Y,Z or radial:X,Y,Z")),
+      affecting(
+          A::Display,
+          choice("background", "Background",
+                 {BackgroundMode::Environment, BackgroundMode::Color, BackgroundMode::Transparent},
+                 BackgroundMode::Environment,
+                 "what lies behind the surfaces: the environment, background-color, or "
+                 "nothing (transparent)")),
+      affecting(A::Display, color("background-color", "Background colour", {0.18, 0.18, 0.18}, 0.01,
+                                  "linear radiance of a plain background")),
+      affecting(A::Display,
+                choice("tone-mapping", "Tone mapping",
+                       {ToneMapping::Aces, ToneMapping::Reinhard, ToneMapping::Clamp},
+                       ToneMapping::Aces,
+                       "display transform from linear radiance for the screen and PNG files")),
       // The LEADR and microstructure models (core/leadr, core/microstructure; model key).
-      number("leadr-scale", "Relief scale", T::Real, 1.0, 0.0, 1e6, 0.01, S::Linear, {},
-             "leadr: heights of the relief times this"),
-      number("leadr-tiles", "Relief tiles", T::Real, 8.0, 1e-3, 1e6, 1.0, S::Logarithmic, {},
-             "leadr: repeats of the relief per unit of texture coordinate"),
-      number("leadr-roughness", "Base roughness", T::Real, 0.15, kLeadrMinAlpha, kLeadrMaxAlpha,
-             0.01, S::Linear, {}, "leadr: base Beckmann roughness added to every texel"),
-      number("leadr-grid", "Slope grid", T::Integer, 4.0, 1.0, 16.0, 1.0, S::Linear, {},
-             "leadr: slope-space grid N x N for the environment and diffuse"),
-      choice("leadr-filter", "Filtering", {"leadr", "normal-mapping"}, "leadr",
-             "leadr: the slope moments, or only their mean (plain normal mapping)"),
-      choice("structure", "Structure", {"pyramids", "inverted-pyramids", "grooves", "silk"},
-             "pyramids", "microstructure: the repeating structure (it turns with the TPR map)"),
-      number("micro-grid", "Grid", T::Integer, 4.0, 1.0, 64.0, 1.0, S::Linear, {},
-             "microstructure: K x K samples per pixel"),
-      choice("jitter-grid", "Jittered grid", {"off", "on"}, "off",
-             "microstructure: one random point per grid cell"),
-      choice("masking", "Masking", {"pom", "parallax", "normal"}, "pom",
-             "microstructure: parallax occlusion, parallax or normal mapping"),
-      choice("self-shadow", "Self-shadowing", {"off", "on"}, "off",
-             "microstructure: shadows of the structure per light"),
-      choice("micro-brdf", "BRDF", {"ggx", "blinn-phong"}, "ggx",
-             "microstructure: GGX with Smith-Schlick or normalised Blinn-Phong"),
-      number("micro-roughness", "Roughness", T::Real, 0.3, 1e-3, 1.0, 0.01, S::Linear, {},
-             "microstructure: GGX alpha"),
-      number("blinn-exponent", "Exponent", T::Real, 100.0, 0.0, 1e6, 1.0, S::Logarithmic, {},
-             "microstructure: Blinn-Phong exponent"),
-      number("structure-depth", "Depth", T::Real, 0.1, 1e-3, kMicroMaxDepth, 0.01, S::Linear,
-             "tiles", "microstructure: relief depth in tile widths"),
-      number("structure-tiles", "Tiles", T::Real, 64.0, 1e-3, 1e6, 1.0, S::Logarithmic, {},
-             "microstructure: tiles per unit of texture coordinate"),
+      affecting(A::FrameCost, number("leadr-scale", "Relief scale", T::Real, 1.0, 0.0, 1e6, 0.01,
+                                     S::Linear, {}, "leadr: heights of the relief times this")),
+      affecting(A::FrameCost,
+                number("leadr-tiles", "Relief tiles", T::Real, 8.0, 1e-3, 1e6, 1.0, S::Logarithmic,
+                       {}, "leadr: repeats of the relief per unit of texture coordinate")),
+      affecting(A::FrameCost, number("leadr-roughness", "Base roughness", T::Real, 0.15,
+                                     kLeadrMinAlpha, kLeadrMaxAlpha, 0.01, S::Linear, {},
+                                     "leadr: base Beckmann roughness added to every texel")),
+      affecting(A::FrameCost,
+                number("leadr-grid", "Slope grid", T::Integer, 4.0, 1.0, 16.0, 1.0, S::Linear, {},
+                       "leadr: slope-space grid N x N for the environment and diffuse")),
+      affecting(A::FrameCost,
+                choice("leadr-filter", "Filtering",
+                       {LeadrFilter::Leadr, LeadrFilter::NormalMapping}, LeadrFilter::Leadr,
+                       "leadr: the slope moments, or only their mean (plain normal mapping)")),
+      affecting(A::FrameCost,
+                choice("structure", "Structure",
+                       {MicroPattern::Pyramids, MicroPattern::InvertedPyramids,
+                        MicroPattern::Grooves, MicroPattern::Silk},
+                       MicroPattern::Pyramids,
+                       "microstructure: the repeating structure (it turns with the TPR map)")),
+      affecting(A::FrameCost, number("micro-grid", "Grid", T::Integer, 4.0, 1.0, 64.0, 1.0,
+                                     S::Linear, {}, "microstructure: K x K samples per pixel")),
+      affecting(A::FrameCost, choice("jitter-grid", "Jittered grid", {OnOff::Off, OnOff::On},
+                                     OnOff::Off, "microstructure: one random point per grid cell")),
+      affecting(
+          A::FrameCost,
+          choice("masking", "Masking",
+                 {MicroMasking::ParallaxOcclusion, MicroMasking::Parallax, MicroMasking::Normal},
+                 MicroMasking::ParallaxOcclusion,
+                 "microstructure: parallax occlusion, parallax or normal mapping")),
+      affecting(A::FrameCost,
+                choice("self-shadow", "Self-shadowing", {OnOff::Off, OnOff::On}, OnOff::Off,
+                       "microstructure: shadows of the structure per light")),
+      affecting(A::FrameCost,
+                choice("micro-brdf", "BRDF", {MicroBrdf::GgxSmithSchlick, MicroBrdf::BlinnPhong},
+                       MicroBrdf::GgxSmithSchlick,
+                       "microstructure: GGX with Smith-Schlick or normalised Blinn-Phong")),
+      affecting(A::FrameCost, number("micro-roughness", "Roughness", T::Real, 0.3, 1e-3, 1.0, 0.01,
+                                     S::Linear, {}, "microstructure: GGX alpha")),
+      affecting(A::FrameCost, number("blinn-exponent", "Exponent", T::Real, 100.0, 0.0, 1e6, 1.0,
+                                     S::Logarithmic, {}, "microstructure: Blinn-Phong exponent")),
+      affecting(A::FrameCost,
+                number("structure-depth", "Depth", T::Real, 0.1, 1e-3, kMicroMaxDepth, 0.01,
+                       S::Linear, "tiles", "microstructure: relief depth in tile widths")),
+      affecting(A::FrameCost,
+                number("structure-tiles", "Tiles", T::Real, 64.0, 1e-3, 1e6, 1.0, S::Logarithmic,
+                       {}, "microstructure: tiles per unit of texture coordinate")),
   };
 }
 
@@ -443,5 +576,125 @@ AsLobe ParameterSet::lobe() const
   lobe.nu = real("nu");
   lobe.nv = real("nv");
   return lobe;
+}
+
+SpecularMethod parseSpecularMethod(std::string_view text)
+{
+  return parseIn(kSpecularMethods, "method", text);
+}
+
+std::string_view spelling(SpecularMethod value)
+{
+  return spellingIn(kSpecularMethods, value);
+}
+
+HalfVectorSource parseHalfVectorSource(std::string_view text)
+{
+  return parseIn(kHalfVectorSources, "half-vectors", text);
+}
+
+std::string_view spelling(HalfVectorSource value)
+{
+  return spellingIn(kHalfVectorSources, value);
+}
+
+EnvironmentSampling parseEnvironmentSampling(std::string_view text)
+{
+  return parseIn(kEnvironmentSamplings, "env-sampling", text);
+}
+
+std::string_view spelling(EnvironmentSampling value)
+{
+  return spellingIn(kEnvironmentSamplings, value);
+}
+
+QualityMode parseQualityMode(std::string_view text)
+{
+  return parseIn(kQualityModes, "quality-mode", text);
+}
+
+std::string_view spelling(QualityMode value)
+{
+  return spellingIn(kQualityModes, value);
+}
+
+BumpMapping parseBumpMapping(std::string_view text)
+{
+  return parseIn(kBumpMappings, "bump", text);
+}
+
+std::string_view spelling(BumpMapping value)
+{
+  return spellingIn(kBumpMappings, value);
+}
+
+BackgroundMode parseBackgroundMode(std::string_view text)
+{
+  return parseIn(kBackgroundModes, "background", text);
+}
+
+std::string_view spelling(BackgroundMode value)
+{
+  return spellingIn(kBackgroundModes, value);
+}
+
+ToneMapping parseToneMapping(std::string_view text)
+{
+  return parseIn(kToneMappings, "tone-mapping", text);
+}
+
+std::string_view spelling(ToneMapping value)
+{
+  return spellingIn(kToneMappings, value);
+}
+
+LeadrFilter parseLeadrFilter(std::string_view text)
+{
+  return parseIn(kLeadrFilters, "leadr-filter", text);
+}
+
+std::string_view spelling(LeadrFilter value)
+{
+  return spellingIn(kLeadrFilters, value);
+}
+
+MicroPattern parseMicroPattern(std::string_view text)
+{
+  return parseIn(kMicroPatterns, "structure", text);
+}
+
+std::string_view spelling(MicroPattern value)
+{
+  return spellingIn(kMicroPatterns, value);
+}
+
+MicroMasking parseMicroMasking(std::string_view text)
+{
+  return parseIn(kMicroMaskings, "masking", text);
+}
+
+std::string_view spelling(MicroMasking value)
+{
+  return spellingIn(kMicroMaskings, value);
+}
+
+MicroBrdf parseMicroBrdf(std::string_view text)
+{
+  return parseIn(kMicroBrdfs, "micro-brdf", text);
+}
+
+std::string_view spelling(MicroBrdf value)
+{
+  return spellingIn(kMicroBrdfs, value);
+}
+
+OnOff parseOnOff(std::string_view key, std::string_view text)
+{
+  return parseIn(kOnOff, key, text);
+}
+
+std::string_view spelling(OnOff value)
+{
+  return spellingIn(kOnOff, value);
 }
 } // namespace aniso

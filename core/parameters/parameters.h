@@ -28,6 +28,25 @@ enum class ParameterScale
   Logarithmic
 };
 
+// What a change of a parameter affects, as flags (combined with |): what has to follow when it
+// changes. The view, the LUT scheduler and the lit and surface models' views read them.
+enum class Affects : unsigned
+{
+  None = 0,
+  Uniforms = 1u << 0,      // the material's uniforms: moving a slider never recompiles a shader
+  Variant = 1u << 1,       // the material's shader variant (MaterialVariant)
+  Luts = 1u << 2,          // the inputs of the half-vector and BRDF lookup-table bakes
+  Display = 1u << 3,       // only the display transform of the accumulated image
+  FrameCost = 1u << 4,     // what a frame costs per pixel and sample: learnt costs are forgotten
+  LitModels = 1u << 5,     // what the lit models draw (their uniform material, lights, surface)
+  SurfaceModels = 1u << 6, // what the surface models draw besides their own parameters
+};
+
+constexpr Affects operator|(Affects a, Affects b)
+{
+  return static_cast<Affects>(static_cast<unsigned>(a) | static_cast<unsigned>(b));
+}
+
 struct ParameterSpec
 {
   std::string_view name;  // option "--NAME", session key, identifier in code
@@ -45,8 +64,14 @@ struct ParameterSpec
   // Text only: the accepted values when restricted to a few words (a combo box in the docks),
   // the first being the usual choice; empty = free text.
   std::vector<std::string_view> choices;
+  Affects roles = Affects::None; // what a change of the value affects
 
   int components() const { return type == ParameterType::Color ? 3 : 1; }
+  // Whether a change affects any of WHAT.
+  bool affects(Affects what) const
+  {
+    return (static_cast<unsigned>(roles) & static_cast<unsigned>(what)) != 0;
+  }
 };
 
 // Every declared parameter, in the order docks and help texts list them.

@@ -3,6 +3,7 @@
 #include "core/brdf/ashikhmin_shirley.h"
 #include "core/error.h"
 #include "core/lut/lut.h"
+#include "core/parameters/choices.h"
 #include "core/parameters/parameters.h"
 
 #include <cctype>
@@ -10,9 +11,11 @@
 #include <gtest/gtest.h>
 #include <set>
 #include <string>
+#include <vector>
 
 namespace
 {
+using aniso::Affects;
 using aniso::ParameterSpec;
 using aniso::ParameterType;
 using aniso::ParameterValue;
@@ -218,5 +221,127 @@ TEST(Parameters, SetRejectsAndKeepsPreviousValue)
   EXPECT_FALSE(errorOf([&] { set.setValue("lut-size", tooMany); }).empty());
   EXPECT_EQ(set.integer("lut-size"), 64);
   EXPECT_EQ(errorOf([&] { aniso::parameterSpec("nope"); }), "nope: unknown parameter");
+}
+
+// What each parameter affects, against the lists the flags replaced: the view's material,
+// display and frame-cost keys (app/gui/SceneView.cxx), the LUT scheduler's inputs, and the keys
+// the lit and surface models' views redraw for. A parameter in none of them affects nothing.
+TEST(Parameters, RolesAreTheListedOnes)
+{
+  using Names = std::set<std::string>;
+  const Names uniforms = {"nu", "nv", "f0", "albedo", "samples", "height-scale"};
+  // env-sampling is a variant too; the view applied the material for it beside its list.
+  const Names variant = {"method", "filtered", "env-sampling", "half-vectors", "bump"};
+  const Names luts = {"nu", "nv", "lut-size", "lut-samples"};
+  // The view's material keys: uniforms, variant and the LUT inputs.
+  const Names material = {"nu",       "nv",           "f0",          "albedo",   "samples",
+                          "lut-size", "lut-samples",  "method",      "filtered", "half-vectors",
+                          "bump",     "height-scale", "env-sampling"};
+  const Names display = {"exposure", "tone-mapping", "background", "background-color"};
+  const Names keepsFrameCost = {"nu",           "nv",           "f0",           "albedo",
+                                "samples",      "lut-size",     "lut-samples",  "target-samples",
+                                "env-rotation", "height-scale", "quality-mode", "error-target",
+                                "exposure",     "tone-mapping", "background",   "background-color"};
+  const Names litModels = {"nu", "nv", "f0", "albedo", "tangents"};
+  const Names surfaceModels = {"f0", "albedo", "tangents"};
+  const Names none = {"env-rotation", "target-samples", "quality-mode", "error-target"};
+
+  for (const ParameterSpec& spec : aniso::parameterSpecs())
+  {
+    const std::string name(spec.name);
+    EXPECT_EQ(spec.affects(Affects::Uniforms), uniforms.count(name) == 1) << name;
+    EXPECT_EQ(spec.affects(Affects::Variant), variant.count(name) == 1) << name;
+    EXPECT_EQ(spec.affects(Affects::Luts), luts.count(name) == 1) << name;
+    EXPECT_EQ(spec.affects(Affects::Uniforms | Affects::Variant | Affects::Luts),
+              material.count(name) == 1)
+        << name;
+    EXPECT_EQ(spec.affects(Affects::Display), display.count(name) == 1) << name;
+    EXPECT_EQ(spec.affects(Affects::FrameCost), keepsFrameCost.count(name) == 0) << name;
+    EXPECT_EQ(spec.affects(Affects::LitModels), litModels.count(name) == 1) << name;
+    EXPECT_EQ(spec.affects(Affects::SurfaceModels), surfaceModels.count(name) == 1) << name;
+    EXPECT_EQ(spec.roles == Affects::None, none.count(name) == 1) << name;
+  }
+  // Every name above is declared.
+  for (const Names* names : {&uniforms, &variant, &luts, &material, &display, &keepsFrameCost,
+                             &litModels, &surfaceModels, &none})
+  {
+    for (const std::string& name : *names)
+    {
+      EXPECT_NO_THROW(aniso::parameterSpec(name)) << name;
+    }
+  }
+}
+
+// The choices of KEY are SPELLINGS, in that order, and its default DEFAULTTEXT (the spellings of
+// options and sessions); each parses to a value of its own that spells back to it, and any other
+// text is refused with the message checkParameterValue gives ("KEY: 'TEXT' is not one of A, B").
+template <typename E, typename Parse>
+void expectEnumChoices(std::set<std::string>& covered, const std::string& key, Parse parse,
+                       const std::vector<std::string>& spellings, const std::string& defaultText)
+{
+  covered.insert(key);
+  const ParameterSpec& spec = aniso::parameterSpec(key);
+  ASSERT_EQ(spec.choices.size(), spellings.size()) << key;
+  EXPECT_EQ(spec.defaultText, defaultText) << key;
+  std::set<E> values;
+  std::string allowed;
+  for (std::size_t i = 0; i < spellings.size(); ++i)
+  {
+    EXPECT_EQ(spec.choices[i], spellings[i]) << key;
+    const E value = parse(spellings[i]);
+    EXPECT_TRUE(values.insert(value).second) << key << " " << spellings[i];
+    EXPECT_EQ(aniso::spelling(value), spellings[i]) << key;
+    allowed += (i ? ", " : "") + spellings[i];
+  }
+  const std::string refused = key + ": 'bogus' is not one of " + allowed;
+  EXPECT_EQ(errorOf([&] { parse("bogus"); }), refused);
+  ParameterValue bogus;
+  bogus.text = "bogus";
+  EXPECT_EQ(errorOf([&] { aniso::checkParameterValue(spec, bogus, key); }), refused);
+}
+
+// Every parameter with choices is backed by an enum whose values are exactly those choices.
+TEST(Parameters, ChoicesParseToDistinctEnumsAndBack)
+{
+  using namespace aniso;
+  std::set<std::string> covered;
+  const auto onOff = [](const std::string& key)
+  { return [key](std::string_view text) { return parseOnOff(key, text); }; };
+  expectEnumChoices<SpecularMethod>(covered, "method", parseSpecularMethod, {"exact", "split-sum"},
+                                    "exact");
+  expectEnumChoices<OnOff>(covered, "filtered", onOff("filtered"), {"on", "off"}, "on");
+  expectEnumChoices<EnvironmentSampling>(covered, "env-sampling", parseEnvironmentSampling,
+                                         {"off", "mis"}, "off");
+  expectEnumChoices<HalfVectorSource>(covered, "half-vectors", parseHalfVectorSource,
+                                      {"shader", "lut"}, "lut");
+  expectEnumChoices<QualityMode>(covered, "quality-mode", parseQualityMode, {"samples", "error"},
+                                 "samples");
+  expectEnumChoices<BumpMapping>(covered, "bump", parseBumpMapping,
+                                 {"none", "normal", "quaternion"}, "none");
+  expectEnumChoices<BackgroundMode>(covered, "background", parseBackgroundMode,
+                                    {"env", "color", "none"}, "env");
+  expectEnumChoices<ToneMapping>(covered, "tone-mapping", parseToneMapping,
+                                 {"aces", "reinhard", "clamp"}, "aces");
+  expectEnumChoices<LeadrFilter>(covered, "leadr-filter", parseLeadrFilter,
+                                 {"leadr", "normal-mapping"}, "leadr");
+  expectEnumChoices<MicroPattern>(covered, "structure", parseMicroPattern,
+                                  {"pyramids", "inverted-pyramids", "grooves", "silk"}, "pyramids");
+  expectEnumChoices<OnOff>(covered, "jitter-grid", onOff("jitter-grid"), {"off", "on"}, "off");
+  expectEnumChoices<MicroMasking>(covered, "masking", parseMicroMasking,
+                                  {"pom", "parallax", "normal"}, "pom");
+  expectEnumChoices<OnOff>(covered, "self-shadow", onOff("self-shadow"), {"off", "on"}, "off");
+  expectEnumChoices<MicroBrdf>(covered, "micro-brdf", parseMicroBrdf, {"ggx", "blinn-phong"},
+                               "ggx");
+  for (const ParameterSpec& spec : parameterSpecs())
+  {
+    EXPECT_EQ(covered.count(std::string(spec.name)) == 1, !spec.choices.empty()) << spec.name;
+  }
+  // The values mean what their names say.
+  EXPECT_EQ(parseSpecularMethod("split-sum"), SpecularMethod::SplitSum);
+  EXPECT_EQ(parseHalfVectorSource("lut"), HalfVectorSource::Lut);
+  EXPECT_EQ(parseBackgroundMode("none"), BackgroundMode::Transparent);
+  EXPECT_EQ(parseMicroMasking("pom"), MicroMasking::ParallaxOcclusion);
+  EXPECT_EQ(parseOnOff("filtered", "on"), OnOff::On);
+  EXPECT_EQ(errorOf([] { parseBumpMapping(""); }), "bump: empty value");
 }
 } // namespace

@@ -8,6 +8,9 @@
 #include <QSignalSpy>
 #include <QUndoStack>
 #include <QtTest>
+#include <map>
+#include <string>
+#include <vector>
 
 using aniso::colorValue;
 using aniso::numberValue;
@@ -34,6 +37,44 @@ private slots:
     QCOMPARE(model.text("normal-map"), std::string());
     QCOMPARE(model.text("mesh"), std::string("builtin:torus"));
     QVERIFY(!model.camera().set);
+  }
+
+  // What the keys beside the declared parameters affect (the parameters' roles: test_parameters):
+  // maps are features of the material's shader variant; the mesh, the shading model and the
+  // lights are what the lit and surface models draw; each forgets the learnt frame costs. A key
+  // that is no scene key affects nothing.
+  void sceneKeysSayWhatTheyAffect()
+  {
+    using A = aniso::Affects;
+    const A map = A::Variant | A::FrameCost;
+    const std::map<std::string, A> expected = {
+        {"model", A::FrameCost | A::LitModels | A::SurfaceModels},
+        {"sample-material", A::FrameCost | A::LitModels},
+        {"lights", A::FrameCost | A::LitModels | A::SurfaceModels},
+        {"mesh", A::FrameCost | A::LitModels | A::SurfaceModels},
+        {"normal-map", map},
+        {"quaternion-map", map},
+        {"tpr", map | A::SurfaceModels},
+        {"height-map", map},
+        {"albedo-map", map},
+        {"ao-map", map},
+        {"metallic-map", map}};
+    // The declared parameters first, in their order (sceneKeys), then the others.
+    const std::vector<aniso::SceneKey>& keys = aniso::sceneKeys();
+    const std::size_t declared = aniso::parameterSpecs().size();
+    QCOMPARE(keys.size(), declared + expected.size());
+    for (std::size_t i = 0; i < keys.size(); ++i)
+    {
+      const std::string name(keys[i].spec.name);
+      QVERIFY2(i < declared || expected.count(name) == 1, name.c_str());
+      const A roles = i < declared ? aniso::parameterSpecs()[i].roles : expected.at(name);
+      QVERIFY2(keys[i].spec.roles == roles, name.c_str());
+      QVERIFY2(aniso::sceneKeyAffects(name, roles) == (roles != A::None), name.c_str());
+    }
+    QVERIFY(aniso::sceneKeyAffects("normal-map", A::Uniforms | A::Variant));
+    QVERIFY(!aniso::sceneKeyAffects("normal-map", A::Uniforms | A::Display));
+    QVERIFY(!aniso::sceneKeyAffects("nope", A::Uniforms | A::Variant | A::Luts | A::Display |
+                                                A::FrameCost | A::LitModels | A::SurfaceModels));
   }
 
   // Out-of-range numbers, unknown choices, wrong types and unknown keys are refused with a

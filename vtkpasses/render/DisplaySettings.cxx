@@ -8,14 +8,8 @@ DisplaySettings displayFromParameters(const ParameterSet& parameters)
 {
   DisplaySettings d;
   d.exposureEV = parameters.real("exposure");
-  const std::string& tone = parameters.text("tone-mapping");
-  d.toneMapping = tone == "reinhard" ? ToneMapping::Reinhard
-                  : tone == "clamp"  ? ToneMapping::Clamp
-                                     : ToneMapping::Aces;
-  const std::string& background = parameters.text("background");
-  d.background = background == "none"    ? BackgroundMode::Transparent
-                 : background == "color" ? BackgroundMode::Color
-                                         : BackgroundMode::Environment;
+  d.toneMapping = parseToneMapping(parameters.text("tone-mapping"));
+  d.background = parseBackgroundMode(parameters.text("background"));
   d.backgroundColor = parameters.color("background-color");
   return d;
 }

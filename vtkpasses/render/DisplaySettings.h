@@ -2,25 +2,13 @@
 // How accumulated linear radiance is shown: exposure, tone mapping and sRGB encoding for the
 // screen and PNG files, and what lies behind the surfaces. EXR output bypasses all but the
 // background.
+#include "core/parameters/choices.h" // ToneMapping, BackgroundMode
+
 #include <glm/vec3.hpp>
 
 namespace aniso
 {
 class ParameterSet;
-
-enum class ToneMapping
-{
-  Aces,     // Narkowicz's fit of the ACES filmic curve: x(2.51x+0.03) / (x(2.43x+0.59)+0.14)
-  Reinhard, // x / (1 + x)
-  Clamp,    // min(x, 1): no compression, exact up to 1
-};
-
-enum class BackgroundMode
-{
-  Environment, // the environment seen along each view ray (a skybox)
-  Color,       // a uniform linear radiance (backgroundColor)
-  Transparent, // nothing: PNG alpha is the coverage of the surfaces
-};
 
 struct DisplaySettings
 {

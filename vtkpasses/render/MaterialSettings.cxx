@@ -12,13 +12,10 @@ MaterialSettings materialFromParameters(const ParameterSet& parameters, Material
   base.samples = parameters.integer("samples");
   base.lutSize = parameters.integer("lut-size");
   base.brdfLutSamples = parameters.integer("lut-samples");
-  base.method =
-      parameters.text("method") == "split-sum" ? SpecularMethod::SplitSum : SpecularMethod::Exact;
-  base.filtered = parameters.text("filtered") == "on";
-  base.halfVectors =
-      parameters.text("half-vectors") == "lut" ? HalfVectorSource::Lut : HalfVectorSource::Shader;
-  base.environmentSampling = parameters.text("env-sampling") == "mis" ? EnvironmentSampling::Mis
-                                                                      : EnvironmentSampling::Off;
+  base.method = parseSpecularMethod(parameters.text("method"));
+  base.filtered = parseOnOff("filtered", parameters.text("filtered")) == OnOff::On;
+  base.halfVectors = parseHalfVectorSource(parameters.text("half-vectors"));
+  base.environmentSampling = parseEnvironmentSampling(parameters.text("env-sampling"));
   base.heightScale = parameters.real("height-scale");
   return base;
 }

@@ -4,6 +4,7 @@
 // compiled only when a material uses it).
 #include "core/brdf/ashikhmin_shirley.h"
 #include "core/image/image.h"
+#include "core/parameters/choices.h" // SpecularMethod, HalfVectorSource, EnvironmentSampling
 
 #include <glm/vec3.hpp>
 #include <memory>
@@ -11,24 +12,6 @@
 namespace aniso
 {
 class ParameterSet;
-
-enum class SpecularMethod
-{
-  SplitSum, // the source method: normalised sum of L (n.l) times F0 s + b from the BRDF LUT
-  Exact,    // the same samples weighted by F (n.l) / max(n.l, n.v): no split-sum bias
-};
-
-enum class HalfVectorSource
-{
-  Lut,    // fetched from the half-vector LUT (as published)
-  Shader, // computed per sample in the shader
-};
-
-enum class EnvironmentSampling
-{
-  Off, // lobe samples only (the published method)
-  Mis, // one-sample MIS of lobe and environment samples (exact method only)
-};
 
 struct MaterialSettings
 {
