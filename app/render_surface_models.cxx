@@ -4,25 +4,63 @@
 #include "core/error.h"
 #include "core/leadr/leadr.h"
 #include "core/maps/map_files.h"
-#include "core/microstructure/microstructure.h"
-#include "core/models/height_field.h"
-#include "core/parameters/choices.h"
-#include "vtkpasses/render/LeadrMaterial.h"
-#include "vtkpasses/render/MicrostructureMaterial.h"
+#include "vtkpasses/render/SurfaceModelSettings.h"
 
-#include <cmath>
 #include <memory>
+#include <string_view>
 
 namespace aniso::cli
 {
 namespace
 {
-// The option NAME of declared parameter KEY (core/parameters/parameters.cxx, shared with the
-// window's scene keys): a choice lists its values, a number shows VALUE_NAME.
-Option declaredOption(std::string_view key, std::string name, const std::string& valueName,
-                      std::string_view help = {})
+// An option of a declared parameter (core/parameters/parameters.cxx, shared with the window's
+// scene keys) that only MODEL reads.
+struct ModelOption
 {
-  Option o = parameterOption(key, std::move(name), help);
+  std::string_view model;
+  std::string_view key;
+  std::string_view name;      // "--" + key but for the grid, --grid on the command line
+  std::string_view valueName; // for a number; a choice lists its values
+  std::string_view help = {}; // replaces the declared help
+};
+
+const ModelOption kModelOptions[] = {
+    {"leadr", "leadr-scale", "--leadr-scale", "S",
+     "leadr: heights of --height-map (or the built-in relief) times S (texture units)"},
+    {"leadr", "leadr-tiles", "--leadr-tiles", "N"},
+    {"leadr", "leadr-roughness", "--leadr-roughness", "ALPHA"},
+    {"leadr", "leadr-grid", "--leadr-grid", "N"},
+    {"leadr", "leadr-filter", "--leadr-filter", ""},
+    {"microstructure", "structure", "--structure", "",
+     "microstructure: the repeating structure; it turns with --tpr (grooves with --tpr circular "
+     "on --builtin disk: a brushed disk)"},
+    {"microstructure", "micro-grid", "--grid", "K"},
+    {"microstructure", "jitter-grid", "--jitter-grid", ""},
+    {"microstructure", "masking", "--masking", ""},
+    {"microstructure", "self-shadow", "--self-shadow", ""},
+    {"microstructure", "micro-brdf", "--micro-brdf", ""},
+    {"microstructure", "micro-roughness", "--micro-roughness", "ALPHA"},
+    {"microstructure", "blinn-exponent", "--blinn-exponent", "E"},
+    {"microstructure", "structure-depth", "--structure-depth", "D"},
+    {"microstructure", "structure-tiles", "--structure-tiles", "N"},
+};
+
+const ModelOption& modelOption(std::string_view key)
+{
+  for (const ModelOption& o : kModelOptions)
+  {
+    if (o.key == key)
+    {
+      return o;
+    }
+  }
+  throw errorAbout(std::string(key), "not an option of the surface models");
+}
+
+// The option of M: a choice lists its values, a number shows its value name.
+Option declaredOption(const ModelOption& m)
+{
+  Option o = parameterOption(m.key, std::string(m.name), m.help);
   for (std::string_view choice : o.spec.choices)
   {
     o.choices.emplace_back(choice);
@@ -35,36 +73,11 @@ Option declaredOption(std::string_view key, std::string name, const std::string&
       o.valueName += "|" + o.choices[i];
     }
   }
-  else if (!valueName.empty())
+  else if (!m.valueName.empty())
   {
-    o.valueName = valueName;
+    o.valueName = std::string(m.valueName);
   }
   return o;
-}
-
-const char* const kLeadrOptions[] = {"--leadr-scale", "--leadr-tiles", "--leadr-roughness",
-                                     "--leadr-grid", "--leadr-filter"};
-const char* const kMicroOptions[] = {"--structure",       "--grid",           "--jitter-grid",
-                                     "--masking",         "--self-shadow",    "--micro-brdf",
-                                     "--micro-roughness", "--blinn-exponent", "--structure-depth",
-                                     "--structure-tiles"};
-
-void refuse(const Arguments& a, const char* const* begin, const char* const* end,
-            const std::string& model)
-{
-  for (const char* const* name = begin; name != end; ++name)
-  {
-    if (a.has(*name))
-    {
-      throw usageError(*name, "only applies to --model " + model);
-    }
-  }
-}
-
-// The option of declared parameter KEY: "--" + KEY but for the grid, --grid on the command line.
-std::string optionOf(std::string_view key)
-{
-  return key == "micro-grid" ? std::string("--grid") : "--" + std::string(key);
 }
 
 std::shared_ptr<const LeadrMips> leadrMoments(const Arguments& a)
@@ -90,104 +103,43 @@ std::shared_ptr<const LeadrMips> leadrMoments(const Arguments& a)
 }
 } // namespace
 
-Image builtinLeadrRelief()
-{
-  // Slope deviation 0.3 per axis over a 64 x 64 tile: close to Gaussian, as LEADR assumes.
-  return randomWaveHeight(64, 0.3);
-}
-
-LeadrSettings leadrSettingsOf(const DeclaredValues& values)
-{
-  const auto real = [&values](std::string_view key) { return values(key).number[0]; };
-  LeadrSettings leadr;
-  leadr.surface.baseAlphaX = leadr.surface.baseAlphaY = real("leadr-roughness");
-  leadr.tiles = real("leadr-tiles");
-  leadr.gridN = int(real("leadr-grid"));
-  leadr.plainNormals = parseLeadrFilter(values("leadr-filter").text) == LeadrFilter::NormalMapping;
-  leadr.environment = true;
-  return leadr;
-}
-
-MicrostructureSettings microstructureSettingsOf(const DeclaredValues& values)
-{
-  const auto real = [&values](std::string_view key) { return values(key).number[0]; };
-  const auto text = [&values](std::string_view key) -> const std::string&
-  { return values(key).text; };
-  MicrostructureSettings micro;
-  micro.structure = std::make_shared<const Microstructure>(
-      makeMicrostructure(parseMicroPattern(text("structure")), 64, real("structure-depth")));
-  MicroShadingOptions& o = micro.options;
-  o.samplesPerAxis = int(real("micro-grid"));
-  o.jittered = parseOnOff("jitter-grid", text("jitter-grid")) == OnOff::On;
-  o.masking = parseMicroMasking(text("masking"));
-  o.selfShadowing = parseOnOff("self-shadow", text("self-shadow")) == OnOff::On;
-  o.brdf = parseMicroBrdf(text("micro-brdf"));
-  o.roughness = real("micro-roughness");
-  o.blinnExponent = real("blinn-exponent");
-  micro.tiles = real("structure-tiles");
-  return micro;
-}
-
 void addSurfaceModelOptions(Command& c)
 {
-  c.options.push_back(declaredOption("leadr-scale", "--leadr-scale", "S",
-                                     "leadr: heights of --height-map (or the built-in relief) "
-                                     "times S (texture units)"));
-  c.options.push_back(declaredOption("leadr-tiles", "--leadr-tiles", "N"));
-  c.options.push_back(declaredOption("leadr-roughness", "--leadr-roughness", "ALPHA"));
-  c.options.push_back(declaredOption("leadr-grid", "--leadr-grid", "N"));
-  c.options.push_back(declaredOption("leadr-filter", "--leadr-filter", ""));
-  c.options.push_back(declaredOption("structure", "--structure", "",
-                                     "microstructure: the repeating structure; it turns with "
-                                     "--tpr (grooves with --tpr circular on --builtin disk: a "
-                                     "brushed disk)"));
-  c.options.push_back(declaredOption("micro-grid", "--grid", "K"));
-  c.options.push_back(declaredOption("jitter-grid", "--jitter-grid", ""));
-  c.options.push_back(declaredOption("masking", "--masking", ""));
-  c.options.push_back(declaredOption("self-shadow", "--self-shadow", ""));
-  c.options.push_back(declaredOption("micro-brdf", "--micro-brdf", ""));
-  c.options.push_back(declaredOption("micro-roughness", "--micro-roughness", "ALPHA"));
-  c.options.push_back(declaredOption("blinn-exponent", "--blinn-exponent", "E"));
-  c.options.push_back(declaredOption("structure-depth", "--structure-depth", "D"));
-  c.options.push_back(declaredOption("structure-tiles", "--structure-tiles", "N"));
+  for (const ModelOption& m : kModelOptions)
+  {
+    c.options.push_back(declaredOption(m));
+  }
 }
 
 bool applySurfaceModelOptions(const Arguments& a, RenderSettings& settings)
 {
   const std::string model = a.text("--model");
-  if (model != "leadr")
+  for (const ModelOption& m : kModelOptions)
   {
-    refuse(a, std::begin(kLeadrOptions), std::end(kLeadrOptions), "leadr");
-  }
-  if (model != "microstructure")
-  {
-    refuse(a, std::begin(kMicroOptions), std::end(kMicroOptions), "microstructure");
+    if (m.model != model && a.has(std::string(m.name)))
+    {
+      throw usageError(std::string(m.name), "only applies to --model " + std::string(m.model));
+    }
   }
   const DeclaredValues values = [&a](std::string_view key) -> const ParameterValue&
-  { return a.value(optionOf(key)); };
-  if (model == "leadr")
+  { return a.value(std::string(modelOption(key).name)); };
+  SurfaceModelInputs inputs;
+  inputs.f0 = settings.material.f0;
+  inputs.albedo = settings.material.albedo;
+  inputs.lights = [&a] { return lightsFromOptions(a); };
+  inputs.leadrMoments = [&a] { return leadrMoments(a); };
+  inputs.tprMap = [&a]() -> std::shared_ptr<const Image>
   {
-    LeadrSettings leadr = leadrSettingsOf(values);
-    leadr.moments = leadrMoments(a);
-    leadr.surface.f0 = settings.material.f0;
-    leadr.surface.diffuse = settings.material.albedo;
-    leadr.lights = lightsFromOptions(a);
-    settings.installMaterial = LeadrShadingMaterial::installer(leadr);
-    return true;
-  }
-  if (model == "microstructure")
+    // The structure turns with the map (a brushed disk with circular grooves).
+    return a.has("--tpr") ? std::make_shared<const Image>(readTprMap(a.text("--tpr"), "--tpr"))
+                          : nullptr;
+  };
+  MaterialInstaller installer = surfaceModelInstaller(model, values, inputs);
+  if (!installer)
   {
-    MicrostructureSettings micro = microstructureSettingsOf(values);
-    micro.options.f0 = settings.material.f0;
-    micro.lights = lightsFromOptions(a);
-    if (a.has("--tpr"))
-    {
-      // The structure turns with the map (a brushed disk with circular grooves).
-      micro.tprMap = std::make_shared<const Image>(readTprMap(a.text("--tpr"), "--tpr"));
-    }
-    settings.installMaterial = MicrostructureShadingMaterial::installer(micro);
-    return true;
+    return false;
   }
-  return false;
+  settings.installMaterial = std::move(installer);
+  return true;
 }
 } // namespace aniso::cli

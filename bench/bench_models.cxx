@@ -8,13 +8,13 @@
 #include "core/error.h"
 #include "core/leadr/leadr.h"
 #include "core/microstructure/microstructure.h"
-#include "core/models/height_field.h"
 #include "core/models/models.h"
 #include "core/models/samples.h"
 #include "vtkpasses/mesh/BuiltinMeshes.h"
 #include "vtkpasses/render/LeadrMaterial.h"
 #include "vtkpasses/render/LitModelMaterial.h"
 #include "vtkpasses/render/MicrostructureMaterial.h"
+#include "vtkpasses/render/SurfaceModelSettings.h"
 
 #include <algorithm>
 #include <chrono>
@@ -170,12 +170,11 @@ ReferenceImage referenceOf(const RenderSession& session, const std::vector<int>&
   return reference;
 }
 
-// A 64 x 64 tiling relief of 96 random-phase waves (up to 6 per tile) with a slope deviation of
-// 0.3 per axis: close to the Gaussian slopes LEADR assumes, with detail at every scale down to
-// a sixth of a tile.
+// The built-in relief of the LEADR model (SurfaceModelSettings.h): close to the Gaussian slopes
+// LEADR assumes, with detail at every scale down to a sixth of a tile.
 LeadrMips bumpyMoments()
 {
-  return bakeLeadrFromHeight(randomWaveHeight(64, 0.3), 1.0);
+  return bakeLeadrFromHeight(builtinLeadrRelief(), 1.0);
 }
 
 struct MicroVariant

@@ -16,7 +16,6 @@
 #include <glm/geometric.hpp>
 #include <set>
 #include <vtkActor.h>
-#include <vtkCamera.h>
 #include <vtkCommand.h>
 #include <vtkFloatArray.h>
 #include <vtkImageData.h>
@@ -223,14 +222,7 @@ void RenderSession::setSurface(vtkSmartPointer<vtkPolyData> surface,
     throw errorAbout("mesh", "no surface to render");
   }
   impl_->mapper->SetInputData(surface);
-  vtkCamera* camera = impl_->renderer->GetActiveCamera();
-  camera->SetFocalPoint(placement.focalPoint.x, placement.focalPoint.y, placement.focalPoint.z);
-  camera->SetPosition(placement.position.x, placement.position.y, placement.position.z);
-  camera->SetViewUp(placement.viewUp.x, placement.viewUp.y, placement.viewUp.z);
-  camera->SetViewAngle(placement.viewAngleDegrees);
-  camera->SetParallelScale(placement.parallelScale);
-  camera->SetParallelProjection(placement.parallel);
-  impl_->renderer->ResetCameraClippingRange();
+  applyCamera(impl_->renderer, placement);
 }
 
 glm::dmat4 RenderSession::clipToWorld() const

@@ -3,14 +3,11 @@
 #include "app/gui/LitModelView.h"
 #include "app/gui/SceneAssets.h"
 #include "app/gui/SceneView.h"
-#include "app/render_surface_models.h"
 #include "core/error.h"
 #include "core/leadr/leadr.h"
-#include "core/microstructure/microstructure.h"
 #include "scene/SceneShading.h"
 #include "vtkpasses/render/DrawingFrame.h"
-#include "vtkpasses/render/LeadrMaterial.h"
-#include "vtkpasses/render/MicrostructureMaterial.h"
+#include "vtkpasses/render/SurfaceModelSettings.h"
 
 #include <algorithm>
 #include <vtkActor.h>
@@ -35,8 +32,7 @@ std::shared_ptr<const LeadrMips> leadrMoments(double scale)
   static std::shared_ptr<const LeadrMips> cached;
   if (!cached || scale != cachedScale)
   {
-    cached =
-        std::make_shared<const LeadrMips>(bakeLeadrFromHeight(cli::builtinLeadrRelief(), scale));
+    cached = std::make_shared<const LeadrMips>(bakeLeadrFromHeight(builtinLeadrRelief(), scale));
     cachedScale = scale;
   }
   return cached;
@@ -45,28 +41,16 @@ std::shared_ptr<const LeadrMips> leadrMoments(double scale)
 
 MaterialInstaller surfaceModelInstallerOf(const SceneModel& model, SceneAssets& assets)
 {
-  const std::string& name = model.text("model");
-  const cli::DeclaredValues values = [&model](std::string_view key) -> const ParameterValue&
+  const DeclaredValues values = [&model](std::string_view key) -> const ParameterValue&
   { return model.value(key); };
-  if (name == "leadr")
-  {
-    // As `aniso render --model leadr` without a map: the built-in relief.
-    LeadrSettings leadr = cli::leadrSettingsOf(values);
-    leadr.moments = leadrMoments(model.real("leadr-scale"));
-    leadr.surface.f0 = colourOf(model, "f0");
-    leadr.surface.diffuse = colourOf(model, "albedo");
-    leadr.lights = parseLightList(model.text("lights"), "lights");
-    return LeadrShadingMaterial::installer(leadr);
-  }
-  if (name == "microstructure")
-  {
-    MicrostructureSettings micro = cli::microstructureSettingsOf(values);
-    micro.options.f0 = colourOf(model, "f0");
-    micro.lights = parseLightList(model.text("lights"), "lights");
-    micro.tprMap = assets.map("tpr", model.text("tpr"));
-    return MicrostructureShadingMaterial::installer(micro);
-  }
-  return {};
+  SurfaceModelInputs inputs;
+  inputs.f0 = colourOf(model, "f0");
+  inputs.albedo = colourOf(model, "albedo");
+  inputs.lights = [&model] { return parseLightList(model.text("lights"), "lights"); };
+  // As `aniso render --model leadr` without a map: the built-in relief.
+  inputs.leadrMoments = [&model] { return leadrMoments(model.real("leadr-scale")); };
+  inputs.tprMap = [&model, &assets] { return assets.map("tpr", model.text("tpr")); };
+  return surfaceModelInstaller(model.text("model"), values, inputs);
 }
 
 SurfaceModelView::SurfaceModelView(SceneModel* model, SceneAssets* assets, SceneView* view,

@@ -5,6 +5,7 @@
 #include "core/lut/lut_cache.h"
 #include "vtkpasses/render/EnvironmentLighting.h"
 #include "vtkpasses/render/RendererMatrices.h"
+#include "vtkpasses/render/ShaderHook.h"
 #include "vtkpasses/render/TextureUpload.h"
 #include "vtkpasses/render/vtkAnisoAccumulationPass.h"
 
@@ -12,26 +13,15 @@
 #include <array>
 #include <cmath>
 #include <glm/gtc/type_ptr.hpp>
-#include <glm/mat3x3.hpp>
-#include <glm/matrix.hpp>
-#include <optional>
 #include <string>
-#include <vtkActor.h>
-#include <vtkCommand.h>
-#include <vtkDataArray.h>
-#include <vtkDataObject.h>
 #include <vtkInformation.h>
 #include <vtkInformationDoubleVectorKey.h>
 #include <vtkInformationIntegerKey.h>
-#include <vtkMatrix4x4.h>
-#include <vtkOpenGLPolyDataMapper.h>
 #include <vtkOpenGLRenderWindow.h>
 #include <vtkOpenGLState.h>
-#include <vtkPointData.h>
 #include <vtkPolyData.h>
 #include <vtkRenderer.h>
 #include <vtkShaderProgram.h>
-#include <vtkShaderProperty.h>
 #include <vtkSmartPointer.h>
 #include <vtkTextureObject.h>
 #include <vtkWeakPointer.h>
@@ -41,14 +31,6 @@ namespace aniso
 {
 namespace
 {
-// The tags the material's code follows (each replacement starts with its tag, so VTK's own
-// substitution still happens there).
-constexpr const char* kVertexDecTag = "//VTK::Normal::Dec";
-constexpr const char* kVertexImplTag = "//VTK::CustomEnd::Impl";
-constexpr const char* kFragmentDecTag = "//VTK::Light::Dec";
-constexpr const char* kFragmentUniformFlowTag = "//VTK::UniformFlow::Impl";
-constexpr const char* kFragmentImplTag = "//VTK::Light::Impl";
-
 constexpr int kMaxSamples = 1 << 16;
 
 // Filtered importance sampling: the level from the sample's footprint along the lobe's sharp
@@ -114,13 +96,6 @@ Image asRgb(const Image& image)
   }
   return rgb;
 }
-
-bool hasArray(vtkPolyData* poly, const char* name, int components)
-{
-  vtkDataArray* array = poly->GetPointData()->GetArray(name);
-  return array && array->GetNumberOfComponents() == components &&
-         array->GetNumberOfTuples() == poly->GetNumberOfPoints();
-}
 } // namespace
 
 class AnisoMaterial::Impl
@@ -136,19 +111,8 @@ public:
 
   MaterialSettings settings;
   std::shared_ptr<EnvironmentLighting> lighting;
-  vtkWeakPointer<vtkActor> actor;
-  vtkWeakPointer<vtkRenderer> renderer;
-  vtkWeakPointer<vtkOpenGLPolyDataMapper> mapper;
-  unsigned long updateShaderTag = 0;
-  unsigned long mapperEndTag = 0;
-  unsigned long rendererEndTag = 0;
-  // Activated for the current draw; freed once the renderer has drawn (as
-  // vtkOpenGLTexture::PostRender frees VTK's own), so none stays active between frames.
-  std::vector<vtkWeakPointer<vtkTextureObject>> active;
-  std::optional<MaterialVariant> installed;
-  bool normals = false;
-  bool tangents = false;
-  bool tcoords = false;
+  MaterialVariant installed; // while hook.installed()
+  MeshArrays mesh;
   bool dropped = false;
 
   std::shared_ptr<const HalfVectorLut> halfVectorLut;
@@ -163,8 +127,8 @@ public:
   Texture albedoTexture;
   Texture occlusionTexture;
   Texture metallicTexture;
-
-  ~Impl() { detach(); }
+  // Last, so it lets go of the actor (and the textures it activated) before the rest goes.
+  ShaderHook hook{"anisotropic material"};
 
   static bool matches(const std::shared_ptr<const HalfVectorLut>& lut, const MaterialSettings& s)
   {
@@ -202,72 +166,18 @@ public:
     settings = s;
   }
 
-  void deactivate()
+  // The mesh the mapper is about to draw chooses the variant.
+  void onMesh(vtkPolyData* poly)
   {
-    for (vtkTextureObject* texture : active)
-    {
-      if (texture)
-      {
-        texture->Deactivate();
-      }
-    }
-    active.clear();
-  }
-
-  void onRendererEnd(vtkObject*, unsigned long, void*) { deactivate(); }
-
-  void detach()
-  {
-    deactivate();
-    if (renderer)
-    {
-      renderer->RemoveObserver(rendererEndTag);
-    }
-    if (mapper)
-    {
-      mapper->RemoveObserver(updateShaderTag);
-      mapper->RemoveObserver(mapperEndTag);
-      for (const char* attribute : {"anisoNormalMC", "anisoTangentMC", "anisoTCoordMC"})
-      {
-        mapper->RemoveVertexAttributeMapping(attribute);
-      }
-    }
-    if (actor)
-    {
-      vtkShaderProperty* sp = actor->GetShaderProperty();
-      sp->ClearVertexShaderReplacement(kVertexDecTag, true);
-      sp->ClearVertexShaderReplacement(kVertexImplTag, true);
-      sp->ClearFragmentShaderReplacement(kFragmentDecTag, true);
-      sp->ClearFragmentShaderReplacement(kFragmentUniformFlowTag, true);
-      sp->ClearFragmentShaderReplacement(kFragmentImplTag, true);
-      actor->Modified();
-    }
-    mapper = nullptr;
-    actor = nullptr;
-    renderer = nullptr;
-    installed.reset();
-  }
-
-  // Looks at the mesh the mapper is about to draw (its input is up to date at EndEvent) and
-  // installs the matching variant.
-  void onMapperEnd(vtkObject*, unsigned long, void*)
-  {
-    vtkPolyData* poly = mapper ? mapper->GetInput() : nullptr;
-    if (!poly)
-    {
-      return;
-    }
-    normals = hasArray(poly, kNormalsArray, 3);
-    tangents = hasArray(poly, kTangentsArray, 3);
-    tcoords = hasArray(poly, kTCoordsArray, 2);
+    mesh = meshArraysOf(poly);
     updateVariant();
   }
 
   void updateVariant()
   {
-    dropped = droppedMaps(settings, tcoords);
-    const MaterialVariant v = materialVariant(settings, normals, tangents, tcoords);
-    if (!installed || *installed != v)
+    dropped = droppedMaps(settings, mesh.tcoords);
+    const MaterialVariant v = materialVariant(settings, mesh.normals, mesh.tangents, mesh.tcoords);
+    if (!hook.installed() || installed != v)
     {
       install(v);
     }
@@ -275,46 +185,16 @@ public:
 
   void install(const MaterialVariant& v)
   {
-    if (!actor || !mapper)
-    {
-      return;
-    }
     const MaterialShaderCode code = composeMaterialShaders(v);
-    vtkShaderProperty* sp = actor->GetShaderProperty();
-    auto replace = [](const char* tag, const std::string& text)
-    { return std::string(tag) + "\n" + text; };
-    sp->ClearVertexShaderReplacement(kVertexDecTag, true);
-    sp->ClearVertexShaderReplacement(kVertexImplTag, true);
-    sp->ClearFragmentShaderReplacement(kFragmentDecTag, true);
-    sp->ClearFragmentShaderReplacement(kFragmentUniformFlowTag, true);
-    sp->ClearFragmentShaderReplacement(kFragmentImplTag, true);
-    sp->AddVertexShaderReplacement(kVertexDecTag, true,
-                                   replace(kVertexDecTag, code.vertexDeclarations), false);
-    sp->AddVertexShaderReplacement(kVertexImplTag, true,
-                                   replace(kVertexImplTag, code.vertexImplementation), false);
-    sp->AddFragmentShaderReplacement(kFragmentDecTag, true,
-                                     replace(kFragmentDecTag, code.fragmentDeclarations), false);
-    sp->AddFragmentShaderReplacement(kFragmentUniformFlowTag, true,
-                                     replace(kFragmentUniformFlowTag, code.fragmentUniformFlow),
-                                     false);
-    sp->AddFragmentShaderReplacement(kFragmentImplTag, true,
-                                     replace(kFragmentImplTag, code.fragmentImplementation), false);
-
-    auto map = [this](bool on, const char* attribute, const char* array)
-    {
-      if (on)
-      {
-        mapper->MapDataArrayToVertexAttribute(attribute, array,
-                                              vtkDataObject::FIELD_ASSOCIATION_POINTS, -1);
-      }
-      else
-      {
-        mapper->RemoveVertexAttributeMapping(attribute);
-      }
-    };
-    map(v.normals, "anisoNormalMC", kNormalsArray);
-    map(v.tangents, "anisoTangentMC", kTangentsArray);
-    map(v.tcoords, "anisoTCoordMC", kTCoordsArray);
+    ShaderCode hooked;
+    hooked.vertex = {{tags::kVertexDec, code.vertexDeclarations},
+                     {tags::kVertexImpl, code.vertexImplementation}};
+    hooked.fragment = {{tags::kFragmentDec, code.fragmentDeclarations},
+                       {tags::kFragmentUniformFlow, code.fragmentUniformFlow},
+                       {tags::kFragmentImpl, code.fragmentImplementation}};
+    hooked.attributes = meshAttributes("aniso", {v.normals, v.tangents, v.tcoords});
+    hooked.uniform = "anisoSampleCount";
+    hook.install(hooked);
     installed = v;
   }
 
@@ -357,7 +237,7 @@ public:
               return uploadFloatTexture(window, brdfLut->size, brdfLut->size, 2, brdfLut->rg.data(),
                                         TextureFiltering::Linear, TextureWrap::Clamp, "BRDF LUT");
             });
-    const MaterialVariant& v = *installed;
+    const MaterialVariant& v = installed;
     auto mapTexture = [&](Texture& texture, bool used, const std::shared_ptr<const Image>& image,
                           int channels, const char* name)
     {
@@ -381,56 +261,24 @@ public:
   }
 
   // Uniforms and textures, every time the mapper draws: no value here changes the shader.
-  void onUpdateShader(vtkObject*, unsigned long, void* data)
+  void onShader(vtkShaderProgram* program, vtkOpenGLRenderWindow* window)
   {
-    auto* program = static_cast<vtkShaderProgram*>(data);
-    if (!program || !installed || !actor || !renderer || !lighting ||
-        !program->IsUniformUsed("anisoSampleCount"))
-    {
-      return;
-    }
-    auto* window = vtkOpenGLRenderWindow::SafeDownCast(renderer->GetRenderWindow());
-    if (!window)
-    {
-      return;
-    }
-    try
+    if (lighting)
     {
       updateTextures(window);
       setUniforms(program, window);
-    }
-    catch (const std::exception& e)
-    {
-      // Exceptions must not unwind through VTK's render loop; the draw goes on unshaded.
-      vtkGenericWarningMacro("anisotropic material: " << e.what());
-    }
-  }
-
-  void bind(vtkShaderProgram* program, const char* sampler, vtkTextureObject* texture)
-  {
-    texture->Activate();
-    program->SetUniformi(sampler, texture->GetTextureUnit());
-    if (std::find(active.begin(), active.end(), texture) == active.end())
-    {
-      active.emplace_back(texture);
     }
   }
 
   void setUniforms(vtkShaderProgram* program, vtkOpenGLRenderWindow* window)
   {
-    setUniformMatrix(program, "anisoClipToWorld", clipToWorld(renderer));
-    const glm::dmat3 toWorld(toGlm(actor->GetMatrix()));
-    const double det = glm::determinant(toWorld);
-    const glm::dmat3 normalToWorld =
-        det != 0.0 && std::isfinite(det) ? glm::transpose(glm::inverse(toWorld)) : toWorld;
-    setUniformMatrix(program, "anisoDirectionToWorld", toWorld);
-    setUniformMatrix(program, "anisoNormalToWorld", normalToWorld);
+    hook.setTransforms(program, "aniso");
 
     setVector(program, "anisoF0", settings.f0);
     setVector(program, "anisoAlbedo", settings.albedo);
     program->SetUniformi("anisoSampleCount", settings.samples);
     double shift[2] = {0.0, 0.0};
-    vtkInformation* info = renderer->GetInformation();
+    vtkInformation* info = hook.renderer()->GetInformation();
     if (info && info->Has(vtkAnisoAccumulationPass::FRAME_SHIFT()))
     {
       info->Get(vtkAnisoAccumulationPass::FRAME_SHIFT(), shift);
@@ -445,7 +293,7 @@ public:
     // The environment: cube with seamless filtering across faces (VTK enables it only for
     // its own image-based lighting).
     window->GetState()->vtkglEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS);
-    bind(program, "anisoEnvironment", lighting->cubeTexture(window));
+    hook.bindTexture(program, "anisoEnvironment", lighting->cubeTexture(window));
     setUniformMatrix(program, "anisoWorldToEnvironment", lighting->worldToEnvironment());
     const double size = lighting->cubeSize();
     program->SetUniformf("anisoLog2TexelSolidAngle",
@@ -458,11 +306,11 @@ public:
         static_cast<float>(kLodAnisotropyWeight * std::log2((nMax + 1.0) / (nMin + 1.0))));
     program->SetUniformf("anisoLodBias", static_cast<float>(kLodBias));
     program->SetUniformf("anisoPixelDecorrelation", settings.pixelDecorrelation ? 1.0f : 0.0f);
-    if (installed->environmentMis)
+    if (installed.environmentMis)
     {
-      bind(program, "anisoEnvCdf", lighting->samplingCdfTexture(window));
-      bind(program, "anisoEnvPdf", lighting->samplingPdfTexture(window));
-      bind(program, "anisoEnvGuide", lighting->samplingGuideTexture(window));
+      hook.bindTexture(program, "anisoEnvCdf", lighting->samplingCdfTexture(window));
+      hook.bindTexture(program, "anisoEnvPdf", lighting->samplingPdfTexture(window));
+      hook.bindTexture(program, "anisoEnvGuide", lighting->samplingGuideTexture(window));
       const EnvironmentDistribution& d = lighting->samplingDistribution();
       program->SetUniform2i("anisoEnvGrid", std::array<int, 2>{d.width(), d.height()}.data());
       // The split from the lobe and this environment's densities (env_sampling.h), unless set.
@@ -477,7 +325,7 @@ public:
 
     if (halfVectorTexture.object)
     {
-      bind(program, "anisoHalfVectorLut", halfVectorTexture.object);
+      hook.bindTexture(program, "anisoHalfVectorLut", halfVectorTexture.object);
       program->SetUniformi("anisoHalfVectorLutSize", halfVectorLut->size);
     }
     // The in-shader half vectors and the MIS densities read the exponents.
@@ -486,7 +334,7 @@ public:
     program->SetUniform2f("anisoExponents", exponents);
     if (brdfTexture.object)
     {
-      bind(program, "anisoBrdfLut", brdfTexture.object);
+      hook.bindTexture(program, "anisoBrdfLut", brdfTexture.object);
     }
     const std::pair<Texture*, const char*> maps[] = {
         {&normalTexture, "anisoNormalMap"},    {&quaternionTexture, "anisoQuaternionMap"},
@@ -497,7 +345,7 @@ public:
     {
       if (texture->object)
       {
-        bind(program, sampler, texture->object);
+        hook.bindTexture(program, sampler, texture->object);
       }
     }
     program->SetUniformf("anisoHeightScale", static_cast<float>(settings.heightScale));
@@ -547,38 +395,12 @@ void AnisoMaterial::validate(const MaterialSettings& s)
 
 void AnisoMaterial::apply(vtkActor* actor, vtkRenderer* renderer)
 {
-  if (!actor || !renderer)
-  {
-    throw errorAbout("material", "needs an actor and a renderer");
-  }
-  auto* mapper = vtkOpenGLPolyDataMapper::SafeDownCast(actor->GetMapper());
-  if (!mapper)
-  {
-    throw errorAbout("material", "the actor's mapper is not an OpenGL polydata mapper");
-  }
-  impl_->detach();
-  impl_->actor = actor;
-  impl_->renderer = renderer;
-  impl_->mapper = mapper;
-  Impl* impl = impl_.get();
-  impl_->updateShaderTag =
-      mapper->AddObserver(vtkCommand::UpdateShaderEvent, impl, &Impl::onUpdateShader);
-  impl_->mapperEndTag = mapper->AddObserver(vtkCommand::EndEvent, impl, &Impl::onMapperEnd);
-  impl_->rendererEndTag = renderer->AddObserver(vtkCommand::EndEvent, impl, &Impl::onRendererEnd);
-  // If the mesh is already there, install now; otherwise the first draw does.
-  if (vtkPolyData* poly = mapper->GetInput())
-  {
-    if (poly->GetNumberOfPoints() > 0)
-    {
-      impl_->onMapperEnd(nullptr, 0, nullptr);
-    }
-  }
-  actor->Modified();
+  impl_->hook.attach(actor, renderer, impl_.get());
 }
 
 void AnisoMaterial::detach()
 {
-  impl_->detach();
+  impl_->hook.detach();
 }
 
 void AnisoMaterial::setSettings(const MaterialSettings& settings)
@@ -592,15 +414,11 @@ void AnisoMaterial::setSettings(const MaterialSettings& settings,
 {
   validate(settings);
   impl_->adopt(settings, halfVector, brdf);
-  if (impl_->installed)
+  if (impl_->hook.installed())
   {
     impl_->updateVariant();
   }
-  if (impl_->actor)
-  {
-    // Uniform changes do not touch VTK's objects; this tells progressive accumulation.
-    impl_->actor->Modified();
-  }
+  impl_->hook.changed(); // uniforms do not touch VTK's objects
 }
 
 const MaterialSettings& AnisoMaterial::settings() const
@@ -615,10 +433,7 @@ void AnisoMaterial::setLighting(std::shared_ptr<EnvironmentLighting> lighting)
     throw errorAbout("environment", "a material needs lighting");
   }
   impl_->lighting = std::move(lighting);
-  if (impl_->actor)
-  {
-    impl_->actor->Modified();
-  }
+  impl_->hook.changed();
 }
 
 const std::shared_ptr<EnvironmentLighting>& AnisoMaterial::lighting() const
@@ -628,8 +443,8 @@ const std::shared_ptr<EnvironmentLighting>& AnisoMaterial::lighting() const
 
 MaterialVariant AnisoMaterial::variant() const
 {
-  return impl_->installed ? *impl_->installed
-                          : materialVariant(impl_->settings, false, false, false);
+  return impl_->hook.installed() ? impl_->installed
+                                 : materialVariant(impl_->settings, false, false, false);
 }
 
 bool AnisoMaterial::mapsDropped() const

@@ -2,24 +2,15 @@
 
 #include "aniso_shaders.h"
 #include "core/error.h"
-#include "vtkpasses/render/DrawingFrame.h"
 #include "vtkpasses/render/EnvironmentLighting.h"
 #include "vtkpasses/render/RendererMatrices.h"
-#include "vtkpasses/render/ShaderHook.h"
 
 #include <algorithm>
 #include <cmath>
 #include <glm/geometric.hpp>
 #include <glm/gtc/type_ptr.hpp>
-#include <glm/matrix.hpp>
-#include <vtkActor.h>
-#include <vtkDataArray.h>
-#include <vtkOpenGLPolyDataMapper.h>
 #include <vtkOpenGLRenderWindow.h>
 #include <vtkOpenGLState.h>
-#include <vtkPointData.h>
-#include <vtkPolyData.h>
-#include <vtkRenderer.h>
 #include <vtkShaderProgram.h>
 #include <vtkSmartPointer.h>
 #include <vtkTextureObject.h>
@@ -30,20 +21,7 @@ namespace aniso
 {
 namespace
 {
-constexpr const char* kVertexDecTag = "//VTK::Normal::Dec";
-constexpr const char* kVertexImplTag = "//VTK::CustomEnd::Impl";
-constexpr const char* kFragmentDecTag = "//VTK::Light::Dec";
-constexpr const char* kFragmentUniformFlowTag = "//VTK::UniformFlow::Impl";
-constexpr const char* kFragmentImplTag = "//VTK::Light::Impl";
-constexpr const char* kFrameMarker = "//LEADR_FRAME";
 constexpr int kMaxGrid = 16;
-
-bool hasArray(vtkPolyData* poly, const char* name, int components)
-{
-  vtkDataArray* array = poly->GetPointData()->GetArray(name);
-  return array && array->GetNumberOfComponents() == components &&
-         array->GetNumberOfTuples() == poly->GetNumberOfPoints();
-}
 
 void checkUnit(const glm::dvec3& c, const char* name)
 {
@@ -132,172 +110,6 @@ vtkSmartPointer<vtkTextureObject> uploadMomentLevels(vtkOpenGLRenderWindow* wind
 }
 } // namespace
 
-void validateShaderLights(const std::vector<Light>& lights)
-{
-  if (lights.size() > std::size_t(kMaxShaderLights))
-  {
-    throw errorAbout("light", "at most " + std::to_string(kMaxShaderLights) + " lights (got " +
-                                  std::to_string(lights.size()) + ")");
-  }
-  for (const Light& light : lights)
-  {
-    validateLight(light);
-  }
-}
-
-class SurfaceShaderMaterial::Impl
-{
-public:
-  std::string name;
-  ShaderHook hook;
-  bool installed = false;
-  std::vector<Light> lights;
-  SurfaceShaderMaterial* owner = nullptr;
-
-  // The code is the same for every mesh that has the arrays: install it once.
-  void onMesh(vtkPolyData* poly)
-  {
-    if (installed || poly->GetNumberOfPoints() == 0)
-    {
-      return;
-    }
-    if (!hasArray(poly, "Normals", 3) || !hasArray(poly, "Tangents", 3) ||
-        !hasArray(poly, "TCoords", 2))
-    {
-      vtkGenericWarningMacro(<< name
-                             << ": the mesh needs Normals, Tangents and TCoords; drawn unshaded");
-      return;
-    }
-    std::string implementation = owner->fragmentImplementation();
-    const std::size_t at = implementation.find(kFrameMarker);
-    if (at != std::string::npos)
-    {
-      implementation.replace(at, std::string(kFrameMarker).size(), shaders::kLeadrFsFrame);
-    }
-    ShaderCode code;
-    code.vertex = {{kVertexDecTag, shaders::kLeadrVsDec}, {kVertexImplTag, shaders::kLeadrVsImpl}};
-    code.fragment = {
-        {kFragmentDecTag, std::string(shaders::kLeadrFsLights) + owner->fragmentDeclarations()},
-        {kFragmentUniformFlowTag, shaders::kLeadrFsUniformFlow},
-        {kFragmentImplTag, implementation}};
-    code.attributes = {
-        {"leadrNormalMC", "Normals"}, {"leadrTangentMC", "Tangents"}, {"leadrTCoordMC", "TCoords"}};
-    hook.install(code);
-    installed = true;
-  }
-
-  void onShader(vtkShaderProgram* program)
-  {
-    vtkActor* actor = hook.actor();
-    vtkRenderer* renderer = hook.renderer();
-    if (!installed || !actor || !renderer || !program->IsUniformUsed("leadrClipToWorld"))
-    {
-      return;
-    }
-    auto* window = vtkOpenGLRenderWindow::SafeDownCast(renderer->GetRenderWindow());
-    if (!window)
-    {
-      return;
-    }
-    setUniformMatrix(program, "leadrClipToWorld", clipToWorld(renderer));
-    const glm::dmat3 toWorld(toGlm(actor->GetMatrix()));
-    const double det = glm::determinant(toWorld);
-    setUniformMatrix(program, "leadrDirectionToWorld", toWorld);
-    setUniformMatrix(program, "leadrNormalToWorld",
-                     det != 0.0 && std::isfinite(det) ? glm::transpose(glm::inverse(toWorld))
-                                                      : toWorld);
-    // Point lights move with the surface into the frame it is drawn in (DrawingFrame.h).
-    const DrawingFrame drawing = drawingFrame(actor);
-    std::vector<float> vectors;     // 4 per light
-    std::vector<float> intensities; // 3 per light
-    for (const Light& given : lights)
-    {
-      const Light light = drawing.lightToDrawing(given);
-      const bool point = light.type == LightType::Point;
-      const glm::dvec3 v = point ? light.vector : glm::normalize(light.vector);
-      vectors.insert(vectors.end(), {float(v.x), float(v.y), float(v.z), point ? 1.0f : 0.0f});
-      intensities.insert(intensities.end(), {float(light.intensity.x), float(light.intensity.y),
-                                             float(light.intensity.z)});
-    }
-    const int count = static_cast<int>(lights.size());
-    program->SetUniformi("leadrLightCount", count);
-    if (count > 0)
-    {
-      program->SetUniform4fv("leadrLightVector", count, vectors.data());
-      program->SetUniform3fv("leadrLightIntensity", count, intensities.data());
-    }
-    owner->setModelUniforms(program, window);
-  }
-};
-
-SurfaceShaderMaterial::SurfaceShaderMaterial(std::shared_ptr<EnvironmentLighting> lighting,
-                                             std::string name)
-    : impl_(std::make_unique<Impl>()), lighting_(std::move(lighting))
-{
-  if (!lighting_)
-  {
-    throw errorAbout("environment", "a material needs lighting");
-  }
-  impl_->name = std::move(name);
-  impl_->owner = this;
-}
-
-SurfaceShaderMaterial::~SurfaceShaderMaterial()
-{
-  impl_->hook.detach();
-}
-
-void SurfaceShaderMaterial::apply(vtkActor* actor, vtkRenderer* renderer)
-{
-  auto* mapper = actor ? vtkOpenGLPolyDataMapper::SafeDownCast(actor->GetMapper()) : nullptr;
-  if (vtkPolyData* poly = mapper ? mapper->GetInput() : nullptr)
-  {
-    if (poly->GetNumberOfPoints() > 0 &&
-        (!hasArray(poly, "Normals", 3) || !hasArray(poly, "Tangents", 3) ||
-         !hasArray(poly, "TCoords", 2)))
-    {
-      throw errorAbout("mesh", impl_->name + " needs normals, tangents and texture coordinates");
-    }
-  }
-  impl_->installed = false;
-  Impl* impl = impl_.get();
-  impl_->hook.attach(
-      actor, renderer, [impl](vtkPolyData* poly) { impl->onMesh(poly); },
-      [impl](vtkShaderProgram* program) { impl->onShader(program); });
-}
-
-void SurfaceShaderMaterial::detach()
-{
-  impl_->hook.detach();
-  impl_->installed = false;
-}
-
-void SurfaceShaderMaterial::setLights(const std::vector<Light>& lights)
-{
-  validateShaderLights(lights);
-  impl_->lights = lights;
-  changed();
-}
-
-void SurfaceShaderMaterial::bindTexture(vtkShaderProgram* program, const char* sampler,
-                                        vtkTextureObject* texture)
-{
-  impl_->hook.bindTexture(program, sampler, texture);
-}
-
-vtkRenderer* SurfaceShaderMaterial::renderer() const
-{
-  return impl_->hook.renderer();
-}
-
-void SurfaceShaderMaterial::changed()
-{
-  if (vtkActor* actor = impl_->hook.actor())
-  {
-    actor->Modified();
-  }
-}
-
 double leadrLevelOfFootprint(const LeadrMips& mips, double tiles, const glm::dvec2& dx,
                              const glm::dvec2& dy)
 {
@@ -321,11 +133,9 @@ public:
 
 LeadrShadingMaterial::LeadrShadingMaterial(std::shared_ptr<EnvironmentLighting> lighting,
                                            LeadrSettings settings)
-    : SurfaceShaderMaterial(std::move(lighting), "LEADR material"), settings_(std::move(settings)),
+    : SurfaceModelMaterial(std::move(lighting), "LEADR material", std::move(settings)),
       textures_(std::make_unique<Textures>())
 {
-  validate(settings_);
-  setLights(settings_.lights);
 }
 
 LeadrShadingMaterial::~LeadrShadingMaterial() = default;
@@ -357,18 +167,6 @@ void LeadrShadingMaterial::validate(const LeadrSettings& s)
   validateShaderLights(s.lights);
 }
 
-MaterialInstaller LeadrShadingMaterial::installer(const LeadrSettings& settings)
-{
-  validate(settings);
-  return [settings](vtkActor* actor, vtkRenderer* renderer,
-                    const std::shared_ptr<EnvironmentLighting>& lighting)
-  {
-    auto material = std::make_shared<LeadrShadingMaterial>(lighting, settings);
-    material->apply(actor, renderer);
-    return std::shared_ptr<void>(material);
-  };
-}
-
 std::string LeadrShadingMaterial::fragmentDeclarations() const
 {
   return shaders::kLeadrFsDec;
@@ -382,31 +180,32 @@ std::string LeadrShadingMaterial::fragmentImplementation() const
 void LeadrShadingMaterial::setModelUniforms(vtkShaderProgram* program,
                                             vtkOpenGLRenderWindow* window)
 {
+  const LeadrSettings& s = settings();
   // A texture of handle 0 was released with the window's context: upload them again.
   if (textures_->window != window || !textures_->moments || textures_->moments->GetHandle() == 0)
   {
-    textures_->moments = uploadMomentLevels(window, *settings_.moments, 0, 4, "LEADR moments");
-    textures_->momentXY = uploadMomentLevels(window, *settings_.moments, 4, 1, "LEADR moments");
+    textures_->moments = uploadMomentLevels(window, *s.moments, 0, 4, "LEADR moments");
+    textures_->momentXY = uploadMomentLevels(window, *s.moments, 4, 1, "LEADR moments");
     textures_->window = window;
   }
-  const LeadrMips& mips = *settings_.moments;
+  const LeadrMips& mips = *s.moments;
   bindTexture(program, "leadrMoments", textures_->moments);
   bindTexture(program, "leadrMomentsXY", textures_->momentXY);
   const float size[2] = {float(mips.levels[0].width), float(mips.levels[0].height)};
   program->SetUniform2f("leadrMomentsSize", size);
   program->SetUniformf("leadrMaxLevel", float(mips.levels.size() - 1));
-  program->SetUniformf("leadrTiles", float(settings_.tiles));
-  const float base[2] = {float(0.5 * settings_.surface.baseAlphaX * settings_.surface.baseAlphaX),
-                         float(0.5 * settings_.surface.baseAlphaY * settings_.surface.baseAlphaY)};
+  program->SetUniformf("leadrTiles", float(s.tiles));
+  const float base[2] = {float(0.5 * s.surface.baseAlphaX * s.surface.baseAlphaX),
+                         float(0.5 * s.surface.baseAlphaY * s.surface.baseAlphaY)};
   program->SetUniform2f("leadrBaseVariance", base);
-  setVector(program, "leadrF0", settings_.surface.f0);
-  setVector(program, "leadrDiffuse", settings_.surface.diffuse);
-  program->SetUniformi("leadrPlainNormals", settings_.plainNormals ? 1 : 0);
-  const SlopeGrid grid = makeSlopeGrid(settings_.gridN);
+  setVector(program, "leadrF0", s.surface.f0);
+  setVector(program, "leadrDiffuse", s.surface.diffuse);
+  program->SetUniformi("leadrPlainNormals", s.plainNormals ? 1 : 0);
+  const SlopeGrid grid = makeSlopeGrid(s.gridN);
   std::vector<float> quantiles(grid.quantiles.begin(), grid.quantiles.end());
   program->SetUniformi("leadrGridN", grid.n);
   program->SetUniform1fv("leadrQuantiles", grid.n, quantiles.data());
-  program->SetUniformi("leadrUseEnvironment", settings_.environment ? 1 : 0);
+  program->SetUniformi("leadrUseEnvironment", s.environment ? 1 : 0);
   // Bound even when unused: a cube sampler left on a unit that holds a 2D texture fails the draw.
   {
     window->GetState()->vtkglEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS);

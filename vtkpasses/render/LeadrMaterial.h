@@ -1,68 +1,23 @@
 #pragma once
-// Materials of the LEADR and small-scale microstructure shading models (core/leadr/leadr.h,
-// core/microstructure/microstructure.h) for any vtkActor drawn by a vtkOpenGLPolyDataMapper.
-// Like the anisotropic material, they inject GLSL through shader replacements and set their
-// values as uniforms each time the mapper draws. Both need the mesh's "Normals", "Tangents" and
-// "TCoords" point arrays (the built-in meshes have them): apply() refuses a mesh without them,
-// and a mesh that loses them later is drawn with VTK's own shading and a warning.
+// The material of the LEADR shading model (core/leadr/leadr.h) for any vtkActor drawn by a
+// vtkOpenGLPolyDataMapper: the moments chain, base roughness and colours as uniforms and
+// textures, over what every surface model shares (SurfaceShaderMaterial.h: the mesh needs
+// "Normals", "Tangents" and "TCoords").
 #include "core/leadr/leadr.h"
 #include "core/lights/light.h"
-#include "vtkpasses/render/OffscreenRenderer.h"
+#include "vtkpasses/render/SurfaceShaderMaterial.h"
 
+#include <glm/vec2.hpp>
 #include <memory>
 #include <string>
 #include <vector>
 
-class vtkActor;
 class vtkOpenGLRenderWindow;
-class vtkRenderer;
 class vtkShaderProgram;
-class vtkTextureObject;
 
 namespace aniso
 {
 class EnvironmentLighting;
-
-// Lights a shader can take at once.
-constexpr int kMaxShaderLights = 8;
-
-// What the LEADR and microstructure materials share: the actor, its mapper's shader
-// replacements and attributes, the camera and frame uniforms and the lights. A model supplies
-// its fragment code and its own uniforms.
-class SurfaceShaderMaterial
-{
-public:
-  virtual ~SurfaceShaderMaterial();
-  SurfaceShaderMaterial(const SurfaceShaderMaterial&) = delete;
-  SurfaceShaderMaterial& operator=(const SurfaceShaderMaterial&) = delete;
-
-  // Gives the material to ACTOR, drawn by RENDERER. aniso::Error "material: reason" when the
-  // actor has no OpenGL polydata mapper, "mesh: reason" when its input lacks the arrays.
-  void apply(vtkActor* actor, vtkRenderer* renderer);
-  void detach();
-
-protected:
-  SurfaceShaderMaterial(std::shared_ptr<EnvironmentLighting> lighting, std::string name);
-  // Fragment declarations and the block that writes gl_FragData[0] (the frame code, which
-  // defines viewWC, t, b, n, tbn and the tangent-space view v, replaces the line //LEADR_FRAME).
-  virtual std::string fragmentDeclarations() const = 0;
-  virtual std::string fragmentImplementation() const = 0;
-  virtual void setModelUniforms(vtkShaderProgram* program, vtkOpenGLRenderWindow* window) = 0;
-  void setLights(const std::vector<Light>& lights);
-  EnvironmentLighting& lighting() const { return *lighting_; }
-  vtkRenderer* renderer() const;
-  // Activates TEXTURE for the coming draw only (ShaderHook::bindTexture).
-  void bindTexture(vtkShaderProgram* program, const char* sampler, vtkTextureObject* texture);
-  void changed(); // tells the actor (and progressive accumulation) that the shading changed
-
-private:
-  class Impl;
-  std::unique_ptr<Impl> impl_;
-  std::shared_ptr<EnvironmentLighting> lighting_;
-};
-
-// Throws aniso::Error "light: reason" for an invalid light or more than kMaxShaderLights.
-void validateShaderLights(const std::vector<Light>& lights);
 
 struct LeadrSettings
 {
@@ -77,7 +32,8 @@ struct LeadrSettings
   std::vector<Light> lights;
 };
 
-class LeadrShadingMaterial : public SurfaceShaderMaterial
+// installer(settings) gives RenderSettings::installMaterial (SurfaceModelMaterial).
+class LeadrShadingMaterial : public SurfaceModelMaterial<LeadrShadingMaterial, LeadrSettings>
 {
 public:
   // Invalid settings throw aniso::Error "name: reason".
@@ -85,8 +41,6 @@ public:
   ~LeadrShadingMaterial() override;
 
   static void validate(const LeadrSettings& settings);
-  // For RenderSettings::installMaterial.
-  static MaterialInstaller installer(const LeadrSettings& settings);
 
 protected:
   std::string fragmentDeclarations() const override;
@@ -95,7 +49,6 @@ protected:
 
 private:
   class Textures;
-  LeadrSettings settings_;
   std::unique_ptr<Textures> textures_;
 };
 

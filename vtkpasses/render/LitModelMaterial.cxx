@@ -4,21 +4,13 @@
 #include "core/error.h"
 #include "vtkpasses/render/DrawingFrame.h"
 #include "vtkpasses/render/MaterialShaderSource.h"
-#include "vtkpasses/render/RendererMatrices.h"
 #include "vtkpasses/render/ShaderHook.h"
 #include "vtkpasses/render/TextureUpload.h"
 
 #include <array>
-#include <cmath>
-#include <glm/mat3x3.hpp>
-#include <glm/matrix.hpp>
-#include <optional>
-#include <vtkActor.h>
-#include <vtkDataArray.h>
+#include <glm/geometric.hpp>
 #include <vtkOpenGLRenderWindow.h>
-#include <vtkPointData.h>
 #include <vtkPolyData.h>
-#include <vtkRenderer.h>
 #include <vtkShaderProgram.h>
 #include <vtkSmartPointer.h>
 #include <vtkTextureObject.h>
@@ -28,13 +20,6 @@ namespace aniso
 {
 namespace
 {
-// The tags the material's code follows (each replacement keeps its tag).
-constexpr const char* kVertexDecTag = "//VTK::Normal::Dec";
-constexpr const char* kVertexImplTag = "//VTK::CustomEnd::Impl";
-constexpr const char* kFragmentDecTag = "//VTK::Light::Dec";
-constexpr const char* kFragmentUniformFlowTag = "//VTK::UniformFlow::Impl";
-constexpr const char* kFragmentImplTag = "//VTK::Light::Impl";
-
 const char* modelDefine(LitModel model)
 {
   switch (model)
@@ -51,13 +36,6 @@ const char* modelDefine(LitModel model)
     return "LIT_MODEL_HEIDRICH_SEIDEL";
   }
   return "LIT_MODEL_ASHIKHMIN_SHIRLEY";
-}
-
-bool hasArray(vtkPolyData* poly, const char* name, int components)
-{
-  vtkDataArray* array = poly->GetPointData()->GetArray(name);
-  return array && array->GetNumberOfComponents() == components &&
-         array->GetNumberOfTuples() == poly->GetNumberOfPoints();
 }
 
 std::shared_ptr<const SvMaps> defaultMaps()
@@ -90,51 +68,39 @@ class LitModelMaterial::Impl
 {
 public:
   LitModelSettings settings;
-  ShaderHook hook;
-  std::optional<LitModelVariant> installed;
-  bool normals = false;
-  bool tangents = false;
-  bool tcoords = false;
+  LitModelVariant installed; // while hook.installed()
+  MeshArrays mesh;
 
   // The textures and the maps they were made from (held, so new maps at a freed address are
   // never taken for the old ones).
   vtkWeakPointer<vtkOpenGLRenderWindow> textureWindow;
   std::shared_ptr<const SvMaps> uploadedMaps;
   std::array<vtkSmartPointer<vtkTextureObject>, 3> textures;
+  // Last, so it lets go of the actor (and the textures it activated) before the rest goes.
+  ShaderHook hook;
 
   void onMesh(vtkPolyData* poly)
   {
-    normals = hasArray(poly, kNormalsArray, 3);
-    tangents = hasArray(poly, kTangentsArray, 3);
-    tcoords = hasArray(poly, kTCoordsArray, 2);
+    mesh = meshArraysOf(poly);
     updateVariant();
   }
 
   void updateVariant()
   {
-    const LitModelVariant v{settings.model, normals, tangents, tcoords};
-    if (installed && *installed == v)
+    const LitModelVariant v{settings.model, mesh.normals, mesh.tangents, mesh.tcoords};
+    if (hook.installed() && installed == v)
     {
       return;
     }
     const std::string defines = litVariantDefines(v);
     ShaderCode code;
-    code.vertex = {{kVertexDecTag, defines + shaders::kLitVsDec},
-                   {kVertexImplTag, shaders::kLitVsImpl}};
-    code.fragment = {{kFragmentDecTag, defines + shaders::kLitFsDec},
-                     {kFragmentUniformFlowTag, shaders::kLitFsUniformFlow},
-                     {kFragmentImplTag, shaders::kLitFsImpl}};
-    const std::pair<bool, std::pair<std::string, std::string>> attributes[] = {
-        {v.normals, {"litNormalMC", kNormalsArray}},
-        {v.tangents, {"litTangentMC", kTangentsArray}},
-        {v.tcoords, {"litTCoordMC", kTCoordsArray}}};
-    for (const auto& [used, attribute] : attributes)
-    {
-      if (used)
-      {
-        code.attributes.push_back(attribute);
-      }
-    }
+    code.vertex = {{tags::kVertexDec, defines + shaders::kLitVsDec},
+                   {tags::kVertexImpl, shaders::kLitVsImpl}};
+    code.fragment = {{tags::kFragmentDec, defines + shaders::kLitFsDec},
+                     {tags::kFragmentUniformFlow, shaders::kLitFsUniformFlow},
+                     {tags::kFragmentImpl, shaders::kLitFsImpl}};
+    code.attributes = meshAttributes("lit", {v.normals, v.tangents, v.tcoords});
+    code.uniform = "litLightCount";
     hook.install(code);
     installed = v;
   }
@@ -156,32 +122,15 @@ public:
   }
 
   // Uniforms and textures, every time the mapper draws: nothing here changes the shader.
-  void onShader(vtkShaderProgram* program)
+  void onShader(vtkShaderProgram* program, vtkOpenGLRenderWindow* window)
   {
-    vtkRenderer* renderer = hook.renderer();
-    vtkActor* actor = hook.actor();
-    if (!installed || !program->IsUniformUsed("litLightCount"))
-    {
-      return;
-    }
-    auto* window = vtkOpenGLRenderWindow::SafeDownCast(renderer->GetRenderWindow());
-    if (!window)
-    {
-      return;
-    }
     updateTextures(window);
-    setUniformMatrix(program, "litClipToWorld", clipToWorld(renderer));
-    const glm::dmat3 toWorld(toGlm(actor->GetMatrix()));
-    const double det = glm::determinant(toWorld);
-    const glm::dmat3 normalToWorld =
-        det != 0.0 && std::isfinite(det) ? glm::transpose(glm::inverse(toWorld)) : toWorld;
-    setUniformMatrix(program, "litDirectionToWorld", toWorld);
-    setUniformMatrix(program, "litNormalToWorld", normalToWorld);
+    hook.setTransforms(program, "lit");
 
     float vectors[kMaxLights][4] = {};
     float intensities[kMaxLights][3] = {};
     const int count = static_cast<int>(settings.lights.size());
-    const DrawingFrame drawing = drawingFrame(actor); // point lights move with the surface
+    const DrawingFrame drawing = drawingFrame(hook.actor()); // point lights move with the surface
     for (int i = 0; i < count; ++i)
     {
       const Light light = drawing.lightToDrawing(settings.lights[std::size_t(i)]);
@@ -234,32 +183,23 @@ void LitModelMaterial::validate(const LitModelSettings& s)
 
 void LitModelMaterial::apply(vtkActor* actor, vtkRenderer* renderer)
 {
-  Impl* impl = impl_.get();
-  impl->installed.reset();
-  impl->hook.attach(
-      actor, renderer, [impl](vtkPolyData* poly) { impl->onMesh(poly); },
-      [impl](vtkShaderProgram* program) { impl->onShader(program); });
+  impl_->hook.attach(actor, renderer, impl_.get());
 }
 
 void LitModelMaterial::detach()
 {
   impl_->hook.detach();
-  impl_->installed.reset();
 }
 
 void LitModelMaterial::setSettings(const LitModelSettings& settings)
 {
   validate(settings);
   impl_->settings = settings;
-  if (impl_->installed)
+  if (impl_->hook.installed())
   {
     impl_->updateVariant();
   }
-  if (vtkActor* actor = impl_->hook.actor())
-  {
-    // Lights and maps live outside VTK's objects; this restarts progressive accumulation.
-    actor->Modified();
-  }
+  impl_->hook.changed(); // lights and maps live outside VTK's objects
 }
 
 const LitModelSettings& LitModelMaterial::settings() const

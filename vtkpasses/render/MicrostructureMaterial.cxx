@@ -66,11 +66,9 @@ public:
 
 MicrostructureShadingMaterial::MicrostructureShadingMaterial(
     std::shared_ptr<EnvironmentLighting> lighting, MicrostructureSettings settings)
-    : SurfaceShaderMaterial(std::move(lighting), "microstructure material"),
-      settings_(std::move(settings)), textures_(std::make_unique<Textures>())
+    : SurfaceModelMaterial(std::move(lighting), "microstructure material", std::move(settings)),
+      textures_(std::make_unique<Textures>())
 {
-  validate(settings_);
-  setLights(settings_.lights);
 }
 
 MicrostructureShadingMaterial::~MicrostructureShadingMaterial() = default;
@@ -105,23 +103,11 @@ void MicrostructureShadingMaterial::validate(const MicrostructureSettings& s)
   }
 }
 
-MaterialInstaller MicrostructureShadingMaterial::installer(const MicrostructureSettings& settings)
-{
-  validate(settings);
-  return [settings](vtkActor* actor, vtkRenderer* renderer,
-                    const std::shared_ptr<EnvironmentLighting>& lighting)
-  {
-    auto material = std::make_shared<MicrostructureShadingMaterial>(lighting, settings);
-    material->apply(actor, renderer);
-    return std::shared_ptr<void>(material);
-  };
-}
-
 std::string MicrostructureShadingMaterial::fragmentDeclarations() const
 {
   // Without a map the turn is compiled out rather than branched over.
-  return settings_.tprMap ? std::string("#define MICRO_TPR\n") + shaders::kMicroFsDec
-                          : std::string(shaders::kMicroFsDec);
+  return settings().tprMap ? std::string("#define MICRO_TPR\n") + shaders::kMicroFsDec
+                           : std::string(shaders::kMicroFsDec);
 }
 
 std::string MicrostructureShadingMaterial::fragmentImplementation() const
@@ -132,15 +118,15 @@ std::string MicrostructureShadingMaterial::fragmentImplementation() const
 void MicrostructureShadingMaterial::setModelUniforms(vtkShaderProgram* program,
                                                      vtkOpenGLRenderWindow* window)
 {
-  const Microstructure& s = *settings_.structure;
+  const MicrostructureSettings& micro = settings();
+  const Microstructure& s = *micro.structure;
   // A texture of handle 0 was released with the window's context: upload them again.
   if (textures_->window != window || !textures_->height || textures_->height->GetHandle() == 0)
   {
     textures_->height = uploadStructure(window, s.height, 1, "microstructure height");
     textures_->normal = uploadStructure(window, s.normal, 3, "microstructure normals");
     textures_->albedo = uploadStructure(window, s.albedo, 3, "microstructure albedo");
-    textures_->tpr =
-        settings_.tprMap ? uploadStructure(window, *settings_.tprMap, 2, "TPR map") : nullptr;
+    textures_->tpr = micro.tprMap ? uploadStructure(window, *micro.tprMap, 2, "TPR map") : nullptr;
     textures_->window = window;
   }
   bindTexture(program, "microHeight", textures_->height);
@@ -150,9 +136,9 @@ void MicrostructureShadingMaterial::setModelUniforms(vtkShaderProgram* program,
   {
     bindTexture(program, "microTpr", textures_->tpr);
   }
-  const MicroShadingOptions& o = settings_.options;
+  const MicroShadingOptions& o = micro.options;
   program->SetUniformf("microDepth", float(s.depth));
-  program->SetUniformf("microTiles", float(settings_.tiles));
+  program->SetUniformf("microTiles", float(micro.tiles));
   program->SetUniformi("microK", o.samplesPerAxis);
   program->SetUniformi("microJittered", o.jittered ? 1 : 0);
   double shift[2] = {0.0, 0.0};

@@ -4,14 +4,20 @@
 // parallax occlusion masking, optional self-shadowing and GGX or Blinn-Phong per sample, under
 // point and directional lights. The structure's height, normal and albedo are uploaded as
 // bilinear, repeating float textures (the core's lookups). Needs "Normals", "Tangents" and
-// "TCoords" on the mesh (LeadrMaterial.h).
+// "TCoords" on the mesh (SurfaceShaderMaterial.h).
+#include "core/image/image.h"
+#include "core/lights/light.h"
 #include "core/microstructure/microstructure.h"
-#include "vtkpasses/render/LeadrMaterial.h"
+#include "vtkpasses/render/SurfaceShaderMaterial.h"
 
 #include <cstdint>
 #include <glm/vec2.hpp>
 #include <memory>
+#include <string>
 #include <vector>
+
+class vtkOpenGLRenderWindow;
+class vtkShaderProgram;
 
 namespace aniso
 {
@@ -32,7 +38,9 @@ struct MicrostructureSettings
 std::uint32_t microFrameSeed(const glm::dvec2& frameShift);
 std::uint32_t microPixelSeed(int x, int yFromBottom, std::uint32_t frameSeed);
 
-class MicrostructureShadingMaterial : public SurfaceShaderMaterial
+// installer(settings) gives RenderSettings::installMaterial (SurfaceModelMaterial).
+class MicrostructureShadingMaterial
+    : public SurfaceModelMaterial<MicrostructureShadingMaterial, MicrostructureSettings>
 {
 public:
   // Invalid settings throw aniso::Error "name: reason".
@@ -41,8 +49,6 @@ public:
   ~MicrostructureShadingMaterial() override;
 
   static void validate(const MicrostructureSettings& settings);
-  // For RenderSettings::installMaterial.
-  static MaterialInstaller installer(const MicrostructureSettings& settings);
 
 protected:
   std::string fragmentDeclarations() const override;
@@ -51,7 +57,6 @@ protected:
 
 private:
   class Textures;
-  MicrostructureSettings settings_;
   std::unique_ptr<Textures> textures_;
 };
 } // namespace aniso

@@ -15,7 +15,6 @@
 #include <mutex>
 #include <thread>
 #include <vtkActor.h>
-#include <vtkCamera.h>
 #include <vtkNew.h>
 #include <vtkOpenGLPolyDataMapper.h>
 #include <vtkOpenGLRenderWindow.h>
@@ -127,16 +126,8 @@ RenderResult renderOffscreen(const RenderSettings& s)
   window->AddRenderer(renderer);
 
   // A given camera is in the mesh's coordinates, like the surface: mapped the same way.
-  const CameraPlacement placement =
-      s.camera ? drawing.cameraToDrawing(*s.camera) : placeCamera(s.view, glm::dvec3(0.0), 1.0);
-  vtkCamera* camera = renderer->GetActiveCamera();
-  camera->SetFocalPoint(placement.focalPoint.x, placement.focalPoint.y, placement.focalPoint.z);
-  camera->SetPosition(placement.position.x, placement.position.y, placement.position.z);
-  camera->SetViewUp(placement.viewUp.x, placement.viewUp.y, placement.viewUp.z);
-  camera->SetViewAngle(placement.viewAngleDegrees);
-  camera->SetParallelScale(placement.parallelScale);
-  camera->SetParallelProjection(placement.parallel);
-  renderer->ResetCameraClippingRange();
+  applyCamera(renderer, s.camera ? drawing.cameraToDrawing(*s.camera)
+                                 : placeCamera(s.view, glm::dvec3(0.0), 1.0));
 
   vtkNew<vtkRenderStepsPass> steps;
   vtkNew<vtkAnisoAccumulationPass> pass;

@@ -1,12 +1,20 @@
 #include "vtkpasses/render/ShaderHook.h"
 
 #include "core/error.h"
+#include "vtkpasses/render/MaterialShaderSource.h"
+#include "vtkpasses/render/RendererMatrices.h"
 
 #include <algorithm>
+#include <cmath>
+#include <glm/mat3x3.hpp>
+#include <glm/matrix.hpp>
 #include <vtkActor.h>
 #include <vtkCommand.h>
+#include <vtkDataArray.h>
 #include <vtkDataObject.h>
 #include <vtkOpenGLPolyDataMapper.h>
+#include <vtkOpenGLRenderWindow.h>
+#include <vtkPointData.h>
 #include <vtkPolyData.h>
 #include <vtkRenderer.h>
 #include <vtkShaderProgram.h>
@@ -16,9 +24,48 @@
 
 namespace aniso
 {
+namespace
+{
+bool hasPointArray(vtkPolyData* poly, const char* name, int components)
+{
+  vtkDataArray* array = poly->GetPointData()->GetArray(name);
+  return array && array->GetNumberOfComponents() == components &&
+         array->GetNumberOfTuples() == poly->GetNumberOfPoints();
+}
+} // namespace
+
+MeshArrays meshArraysOf(vtkPolyData* poly)
+{
+  MeshArrays arrays;
+  arrays.normals = hasPointArray(poly, kNormalsArray, 3);
+  arrays.tangents = hasPointArray(poly, kTangentsArray, 3);
+  arrays.tcoords = hasPointArray(poly, kTCoordsArray, 2);
+  return arrays;
+}
+
+std::vector<std::pair<std::string, std::string>> meshAttributes(const std::string& prefix,
+                                                                const MeshArrays& used)
+{
+  std::vector<std::pair<std::string, std::string>> attributes;
+  if (used.normals)
+  {
+    attributes.emplace_back(prefix + "NormalMC", kNormalsArray);
+  }
+  if (used.tangents)
+  {
+    attributes.emplace_back(prefix + "TangentMC", kTangentsArray);
+  }
+  if (used.tcoords)
+  {
+    attributes.emplace_back(prefix + "TCoordMC", kTCoordsArray);
+  }
+  return attributes;
+}
+
 class ShaderHook::Impl
 {
 public:
+  std::string subject;
   vtkWeakPointer<vtkActor> actor;
   vtkWeakPointer<vtkRenderer> renderer;
   vtkWeakPointer<vtkOpenGLPolyDataMapper> mapper;
@@ -27,7 +74,8 @@ public:
   unsigned long updateShaderTag = 0;
   unsigned long mapperEndTag = 0;
   unsigned long rendererEndTag = 0;
-  ShaderCode installed;
+  bool installed = false;
+  ShaderCode code;                                      // what is installed
   std::vector<vtkWeakPointer<vtkTextureObject>> active; // activated for the current draw
 
   void deactivate()
@@ -49,11 +97,11 @@ public:
     if (actor)
     {
       vtkShaderProperty* sp = actor->GetShaderProperty();
-      for (const auto& [tag, code] : installed.vertex)
+      for (const auto& [tag, text] : code.vertex)
       {
         sp->ClearVertexShaderReplacement(tag, true);
       }
-      for (const auto& [tag, code] : installed.fragment)
+      for (const auto& [tag, text] : code.fragment)
       {
         sp->ClearFragmentShaderReplacement(tag, true);
       }
@@ -61,12 +109,13 @@ public:
     }
     if (mapper)
     {
-      for (const auto& [attribute, array] : installed.attributes)
+      for (const auto& [attribute, array] : code.attributes)
       {
         mapper->RemoveVertexAttributeMapping(attribute.c_str());
       }
     }
-    installed = ShaderCode{};
+    code = ShaderCode{};
+    installed = false;
   }
 
   void onMapperEnd(vtkObject*, unsigned long, void*)
@@ -81,22 +130,31 @@ public:
   void onUpdateShader(vtkObject*, unsigned long, void* data)
   {
     auto* program = static_cast<vtkShaderProgram*>(data);
-    if (!program || !actor || !renderer || !onShader)
+    if (!program || !installed || !actor || !renderer || !onShader ||
+        (!code.uniform.empty() && !program->IsUniformUsed(code.uniform.c_str())))
+    {
+      return;
+    }
+    auto* window = vtkOpenGLRenderWindow::SafeDownCast(renderer->GetRenderWindow());
+    if (!window)
     {
       return;
     }
     try
     {
-      onShader(program);
+      onShader(program, window);
     }
     catch (const std::exception& e)
     {
-      vtkGenericWarningMacro("material: " << e.what());
+      vtkGenericWarningMacro(<< subject << ": " << e.what());
     }
   }
 };
 
-ShaderHook::ShaderHook() : impl_(std::make_unique<Impl>()) {}
+ShaderHook::ShaderHook(std::string subject) : impl_(std::make_unique<Impl>())
+{
+  impl_->subject = std::move(subject);
+}
 
 ShaderHook::~ShaderHook()
 {
@@ -169,6 +227,17 @@ void ShaderHook::bindTexture(vtkShaderProgram* program, const char* sampler,
   }
 }
 
+void ShaderHook::setTransforms(vtkShaderProgram* program, const std::string& prefix) const
+{
+  setUniformMatrix(program, (prefix + "ClipToWorld").c_str(), clipToWorld(impl_->renderer));
+  const glm::dmat3 toWorld(toGlm(impl_->actor->GetMatrix()));
+  const double det = glm::determinant(toWorld);
+  const glm::dmat3 normalToWorld =
+      det != 0.0 && std::isfinite(det) ? glm::transpose(glm::inverse(toWorld)) : toWorld;
+  setUniformMatrix(program, (prefix + "DirectionToWorld").c_str(), toWorld);
+  setUniformMatrix(program, (prefix + "NormalToWorld").c_str(), normalToWorld);
+}
+
 void ShaderHook::install(const ShaderCode& code)
 {
   Impl& d = *impl_;
@@ -191,8 +260,22 @@ void ShaderHook::install(const ShaderCode& code)
     d.mapper->MapDataArrayToVertexAttribute(attribute.c_str(), array.c_str(),
                                             vtkDataObject::FIELD_ASSOCIATION_POINTS, -1);
   }
-  d.installed = code;
+  d.code = code;
+  d.installed = true;
   d.actor->Modified();
+}
+
+void ShaderHook::changed()
+{
+  if (impl_->actor)
+  {
+    impl_->actor->Modified();
+  }
+}
+
+bool ShaderHook::installed() const
+{
+  return impl_->installed;
 }
 
 vtkActor* ShaderHook::actor() const

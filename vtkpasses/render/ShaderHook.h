@@ -11,6 +11,7 @@
 #include <vector>
 
 class vtkActor;
+class vtkOpenGLRenderWindow;
 class vtkPolyData;
 class vtkRenderer;
 class vtkShaderProgram;
@@ -18,14 +19,42 @@ class vtkTextureObject;
 
 namespace aniso
 {
+// The tags the materials' code follows.
+namespace tags
+{
+constexpr const char* kVertexDec = "//VTK::Normal::Dec";
+constexpr const char* kVertexImpl = "//VTK::CustomEnd::Impl";
+constexpr const char* kFragmentDec = "//VTK::Light::Dec";
+constexpr const char* kFragmentUniformFlow = "//VTK::UniformFlow::Impl";
+constexpr const char* kFragmentImpl = "//VTK::Light::Impl";
+} // namespace tags
+
 struct ShaderCode
 {
-  // (tag, code inserted after it), e.g. {"//VTK::Light::Impl", "..."}.
+  // (tag, code inserted after it), e.g. {tags::kFragmentImpl, "..."}.
   std::vector<std::pair<std::string, std::string>> vertex;
   std::vector<std::pair<std::string, std::string>> fragment;
   // (vertex attribute, point array) pairs the code reads.
   std::vector<std::pair<std::string, std::string>> attributes;
+  // A uniform the code uses: a program without it (another pass's) is not the code's, and the
+  // shader callback is not called for it.
+  std::string uniform;
 };
+
+// Which of the point arrays the materials read ("Normals", "Tangents", "TCoords":
+// MaterialShaderSource.h) a mesh has, with a tuple for each point.
+struct MeshArrays
+{
+  bool normals = false;
+  bool tangents = false;
+  bool tcoords = false;
+  bool all() const { return normals && tangents && tcoords; }
+};
+MeshArrays meshArraysOf(vtkPolyData* poly);
+// The vertex attributes PREFIX + "NormalMC", "TangentMC" and "TCoordMC" of the arrays USED
+// names, for ShaderCode::attributes.
+std::vector<std::pair<std::string, std::string>> meshAttributes(const std::string& prefix,
+                                                                const MeshArrays& used);
 
 class ShaderHook
 {
@@ -33,18 +62,31 @@ public:
   // Called with the mapper's input once it is known (at attach if it has points, and after
   // each draw), so the caller can install the variant the mesh needs.
   using MeshCallback = std::function<void(vtkPolyData*)>;
-  // Called with the shader program before each draw: set uniforms and bind textures here.
-  // Exceptions are caught and reported as a VTK warning (they must not unwind through VTK).
-  using ShaderCallback = std::function<void(vtkShaderProgram*)>;
+  // Called with the shader program and the window before each draw while code is installed
+  // (and the program uses ShaderCode::uniform): set uniforms and bind textures here. Exceptions
+  // are caught and reported as a VTK warning "SUBJECT: reason" (they must not unwind through
+  // VTK); the draw goes on unshaded.
+  using ShaderCallback = std::function<void(vtkShaderProgram*, vtkOpenGLRenderWindow*)>;
 
-  ShaderHook();
+  explicit ShaderHook(std::string subject = "material");
   ~ShaderHook();
   ShaderHook(const ShaderHook&) = delete;
   ShaderHook& operator=(const ShaderHook&) = delete;
 
   // Hooks ACTOR drawn by RENDERER (detaching from any previous actor first). The actor's mapper
-  // must be a vtkOpenGLPolyDataMapper; aniso::Error "material: reason" otherwise.
+  // must be a vtkOpenGLPolyDataMapper; aniso::Error "material: reason" otherwise, and nothing
+  // changes.
   void attach(vtkActor* actor, vtkRenderer* renderer, MeshCallback onMesh, ShaderCallback onShader);
+  // The same with OWNER's onMesh(vtkPolyData*) and onShader(vtkShaderProgram*,
+  // vtkOpenGLRenderWindow*) as the callbacks.
+  template <class Owner>
+  void attach(vtkActor* actor, vtkRenderer* renderer, Owner* owner)
+  {
+    attach(
+        actor, renderer, [owner](vtkPolyData* poly) { owner->onMesh(poly); },
+        [owner](vtkShaderProgram* program, vtkOpenGLRenderWindow* window)
+        { owner->onShader(program, window); });
+  }
   void detach();
 
   // Activates TEXTURE for the coming draw and points SAMPLER at its unit (call from the shader
@@ -52,8 +94,21 @@ public:
   // does for VTK's own textures: no texture stays active between frames or after detaching.
   void bindTexture(vtkShaderProgram* program, const char* sampler, vtkTextureObject* texture);
 
+  // The transforms of the attached actor and renderer as PREFIX + "ClipToWorld" (mat4: the
+  // camera's clip coordinates to world), PREFIX + "DirectionToWorld" (mat3: the actor's
+  // model-to-world) and PREFIX + "NormalToWorld" (mat3: its inverse transpose, or itself when
+  // singular). Call from the shader callback.
+  void setTransforms(vtkShaderProgram* program, const std::string& prefix) const;
+
   // Replaces the installed code (if any) by CODE on the attached actor.
   void install(const ShaderCode& code);
+  // True while code given to install() is on the attached actor (attaching anew and detaching
+  // remove it).
+  bool installed() const;
+
+  // Tells the attached actor (and so progressive accumulation) that its shading changed: for
+  // values that live outside VTK's objects, such as uniforms.
+  void changed();
 
   vtkActor* actor() const;
   vtkRenderer* renderer() const;

@@ -5,8 +5,10 @@
 #include <algorithm>
 #include <cmath>
 #include <glm/geometric.hpp>
+#include <vtkCamera.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
+#include <vtkRenderer.h>
 
 namespace aniso
 {
@@ -79,5 +81,17 @@ CameraPlacement placeCamera(const ViewSettings& view, const glm::dvec3& centre, 
   c.position = centre + d * distance;
   c.viewUp = std::abs(d.z) > 0.999 ? glm::dvec3(0.0, 1.0, 0.0) : glm::dvec3(0.0, 0.0, 1.0);
   return c;
+}
+
+void applyCamera(vtkRenderer* renderer, const CameraPlacement& placement)
+{
+  vtkCamera* camera = renderer->GetActiveCamera();
+  camera->SetFocalPoint(placement.focalPoint.x, placement.focalPoint.y, placement.focalPoint.z);
+  camera->SetPosition(placement.position.x, placement.position.y, placement.position.z);
+  camera->SetViewUp(placement.viewUp.x, placement.viewUp.y, placement.viewUp.z);
+  camera->SetViewAngle(placement.viewAngleDegrees);
+  camera->SetParallelScale(placement.parallelScale);
+  camera->SetParallelProjection(placement.parallel);
+  renderer->ResetCameraClippingRange();
 }
 } // namespace aniso

@@ -2,9 +2,10 @@
 // Where the camera looks from: the world is Z-up; the camera looks at the centre of the object's
 // bounding sphere from a direction, far enough for the sphere to fit the view.
 #include <glm/vec3.hpp>
+#include <string>
 
 class vtkPolyData;
-#include <string>
+class vtkRenderer;
 
 namespace aniso
 {
@@ -39,4 +40,8 @@ void boundingSphere(vtkPolyData* surface, glm::dvec3& centre, double& radius);
 
 // The camera for an object with bounding sphere (centre, radius > 0).
 CameraPlacement placeCamera(const ViewSettings& view, const glm::dvec3& centre, double radius);
+
+// Gives RENDERER's active camera PLACEMENT and fits its clipping range to what the renderer
+// draws.
+void applyCamera(vtkRenderer* renderer, const CameraPlacement& placement);
 } // namespace aniso
