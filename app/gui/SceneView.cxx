@@ -2,20 +2,18 @@
 
 #include "app/gui/RenderTimer.h"
 #include "app/gui/SceneAssets.h"
+#include "app/gui/ViewCamera.h"
 #include "core/error.h"
 #include "scene/LutScheduler.h"
 #include "vtkpasses/render/AnisoMaterial.h"
 #include "vtkpasses/render/EnvironmentLighting.h"
-#include "vtkpasses/render/ViewSettings.h"
 #include "vtkpasses/render/vtkAnisoAccumulationPass.h"
 
 #include <QTimer>
 #include <algorithm>
 #include <functional>
-#include <glm/geometric.hpp>
 #include <vtkActor.h>
 #include <vtkCallbackCommand.h>
-#include <vtkCamera.h>
 #include <vtkCommand.h>
 #include <vtkInteractorObserver.h>
 #include <vtkOpenGLPolyDataMapper.h>
@@ -60,12 +58,6 @@ bool keepsFrameCost(const std::string& key)
 bool needsLuts(const MaterialSettings& s)
 {
   return s.method == SpecularMethod::SplitSum || s.halfVectors == HalfVectorSource::Lut;
-}
-
-// Default view: a three-quarter view from the front, slightly above (Z up).
-glm::dvec3 defaultViewDirection()
-{
-  return viewDirectionFromAngles(-35.0, 25.0);
 }
 } // namespace
 
@@ -444,39 +436,15 @@ void SceneView::applyCameraFromModel()
     }
     return;
   }
-  const glm::dvec3 position =
-      drawing_.pointToDrawing({c.position[0], c.position[1], c.position[2]});
-  const glm::dvec3 focalPoint =
-      drawing_.pointToDrawing({c.focalPoint[0], c.focalPoint[1], c.focalPoint[2]});
-  vtkCamera* camera = renderer_->GetActiveCamera();
-  camera->SetPosition(position.x, position.y, position.z);
-  camera->SetFocalPoint(focalPoint.x, focalPoint.y, focalPoint.z);
-  camera->SetViewUp(c.viewUp.data());
-  camera->SetViewAngle(c.viewAngle);
-  camera->SetParallelProjection(c.parallel);
-  camera->SetParallelScale(c.parallelScale / drawing_.radius);
+  setCameraState(renderer_->GetActiveCamera(), c, drawing_);
   renderer_->ResetCameraClippingRange();
   requestRender();
 }
 
 void SceneView::resetCamera()
 {
-  ViewSettings view;
-  view.direction = defaultViewDirection();
-  // placeCamera fits the object's height; a window narrower than high needs more room.
   const int* size = window_->GetSize();
-  if (size[0] > 0 && size[1] > 0 && size[0] < size[1])
-  {
-    view.margin *= static_cast<double>(size[1]) / size[0];
-  }
-  const CameraPlacement p = placeCamera(view, glm::dvec3(0.0), 1.0); // the drawing frame
-  vtkCamera* camera = renderer_->GetActiveCamera();
-  camera->SetFocalPoint(p.focalPoint.x, p.focalPoint.y, p.focalPoint.z);
-  camera->SetPosition(p.position.x, p.position.y, p.position.z);
-  camera->SetViewUp(p.viewUp.x, p.viewUp.y, p.viewUp.z);
-  camera->SetViewAngle(p.viewAngleDegrees);
-  camera->SetParallelScale(p.parallelScale);
-  camera->SetParallelProjection(p.parallel);
+  setCameraPlacement(renderer_->GetActiveCamera(), defaultPlacement(size[0], size[1]));
   renderer_->ResetCameraClippingRange();
   applyingCamera_ = true;
   model_->setCamera(CameraState{});
@@ -486,22 +454,7 @@ void SceneView::resetCamera()
 
 CameraState SceneView::currentCamera() const
 {
-  vtkCamera* camera = renderer_->GetActiveCamera();
-  CameraState c;
-  c.set = true;
-  camera->GetPosition(c.position.data());
-  camera->GetFocalPoint(c.focalPoint.data());
-  camera->GetViewUp(c.viewUp.data());
-  c.viewAngle = camera->GetViewAngle();
-  c.parallel = camera->GetParallelProjection() != 0;
-  // From the drawing frame back to the mesh's coordinates.
-  for (std::size_t i = 0; i < 3; ++i)
-  {
-    c.position[i] = c.position[i] * drawing_.radius + drawing_.centre[int(i)];
-    c.focalPoint[i] = c.focalPoint[i] * drawing_.radius + drawing_.centre[int(i)];
-  }
-  c.parallelScale = camera->GetParallelScale() * drawing_.radius;
-  return c;
+  return cameraStateOf(renderer_->GetActiveCamera(), drawing_);
 }
 
 RenderSettings SceneView::renderSettings(int width, int height) const
@@ -513,15 +466,7 @@ RenderSettings SceneView::renderSettings(int width, int height) const
   s.environmentRotationDegrees = model_->real("env-rotation");
   s.material = full_;
   s.display = displayFromParameters(model_->parameters());
-  const CameraState c = currentCamera();
-  CameraPlacement p;
-  p.position = {c.position[0], c.position[1], c.position[2]};
-  p.focalPoint = {c.focalPoint[0], c.focalPoint[1], c.focalPoint[2]};
-  p.viewUp = {c.viewUp[0], c.viewUp[1], c.viewUp[2]};
-  p.viewAngleDegrees = c.viewAngle;
-  p.parallel = c.parallel;
-  p.parallelScale = c.parallelScale;
-  s.camera = p;
+  s.camera = placementOf(currentCamera());
   s.width = width;
   s.height = height;
   s.frames = targetSamples() / full_.samples;
