@@ -1,5 +1,6 @@
 #include "app/gui/MainWindow.h"
 
+#include "app/gui/BackgroundLoader.h"
 #include "app/gui/CompareWindow.h"
 #include "app/gui/LitModelView.h"
 #include "app/gui/SceneView.h"
@@ -41,14 +42,12 @@
 #include <QSpinBox>
 #include <QStandardPaths>
 #include <QStatusBar>
-#include <QThreadPool>
 #include <QToolButton>
 #include <QUndoStack>
 #include <QUrl>
 #include <QVTKOpenGLNativeWidget.h>
 #include <algorithm>
 #include <cmath>
-#include <new>
 #include <vtkGenericOpenGLRenderWindow.h>
 #include <vtkInteractorStyleTrackballCamera.h>
 #include <vtkRenderWindowInteractor.h>
@@ -58,6 +57,10 @@ namespace aniso
 namespace
 {
 constexpr int kMaxRecent = 8;
+// The kinds of background loads besides the edits of a key (named by the key): no key's names.
+const char* const kMeshLoad = "open mesh";
+const char* const kEnvironmentLoad = "open environment";
+const char* const kSessionLoad = "open session";
 
 // Equirectangular environments are twice as wide as high; maps usually are not.
 bool looksEquirectangular(int width, int height)
@@ -90,10 +93,9 @@ Image rgbOf(const Image& rgba)
 MainWindow::MainWindow(QWidget* parent)
     : QMainWindow(parent), editor_(&model_), assets_(&model_),
       luts_(new LutScheduler(&model_, nullptr, this)), vtkWidget_(new QVTKOpenGLNativeWidget(this)),
-      samplesLabel_(new QLabel(this)), lutLabel_(new QLabel(this)), loadPool_(new QThreadPool(this))
+      samplesLabel_(new QLabel(this)), lutLabel_(new QLabel(this)),
+      loader_(new BackgroundLoader(&assets_, this))
 {
-  // A mesh and an environment may load at once; more would only compete for the two cores.
-  loadPool_->setMaxThreadCount(2);
   setWindowTitle(tr("aniso"));
   setObjectName("MainWindow");
   setAcceptDrops(true);
@@ -126,6 +128,11 @@ MainWindow::MainWindow(QWidget* parent)
   setCorner(Qt::BottomRightCorner, Qt::RightDockWidgetArea);
   addDockWidget(Qt::BottomDockWidgetArea, lightsDock_);
 
+  connect(loader_, &BackgroundLoader::started, this,
+          [this](const QString& name) { statusBar()->showMessage(tr("Loading %1").arg(name)); });
+  connect(loader_, &BackgroundLoader::finished, statusBar(), &QStatusBar::clearMessage);
+  connect(loader_, &BackgroundLoader::failed, this,
+          [this](const QString& message) { reportError(message, true); });
   const auto toStatus = [this](const QString& message) { reportError(message, false); };
   connect(materialDock_, &MaterialDock::errorOccurred, this, toStatus);
   connect(mapsDock_, &MapsDock::errorOccurred, this, toStatus);
@@ -185,7 +192,7 @@ MainWindow::MainWindow(QWidget* parent)
 MainWindow::~MainWindow()
 {
   // A load in flight delivers to this window: it ends first (its result is dropped).
-  loadPool_->waitForDone();
+  delete loader_;
   // The comparison and the lit actor draw the view's mesh: they go before the view, which goes
   // before the widget whose window it draws into.
   delete compareWindow_;
@@ -328,65 +335,32 @@ bool MainWindow::openMesh(const QString& path)
       });
 }
 
-void MainWindow::runInBackground(int* request, bool* busy, const QString& name,
-                                 const std::function<void(SceneAssets&)>& load,
-                                 const std::function<void()>& deliver, bool prefetch)
+bool MainWindow::meshLoading() const
 {
-  const int id = ++*request;
-  *busy = true;
-  statusBar()->showMessage(tr("Loading %1").arg(name));
-  // The worker loads into assets of its own; this thread takes them over on delivery.
-  auto staged = std::make_shared<SceneAssets>();
-  staged->setMaxTextureSide(assets_.maxTextureSide());
-  loadPool_->start(
-      [this, id, request, busy, name, staged, load, deliver, prefetch]
-      {
-        QString error;
-        try
-        {
-          load(*staged);
-        }
-        catch (const Error& e)
-        {
-          error = QString::fromStdString(e.what());
-        }
-        catch (const std::bad_alloc&)
-        {
-          error = tr("%1: too large for the memory available").arg(name);
-        }
-        // Delivered on the UI thread (the window waits for its workers before it goes).
-        QMetaObject::invokeMethod(
-            this,
-            [this, id, request, busy, staged, error, deliver, prefetch]
-            {
-              if (id != *request)
-              {
-                return; // a later request took its place
-              }
-              *busy = false;
-              statusBar()->clearMessage();
-              assets_.adopt(*staged);
-              if (!error.isEmpty() && !prefetch)
-              {
-                // The scene stays as it was.
-                reportError(error, true);
-                return;
-              }
-              // A prefetch that failed leaves the failure to DELIVER's own reading, which
-              // reports it in its words.
-              deliver();
-            },
-            Qt::QueuedConnection);
-      });
+  return loader_->loading(kMeshLoad);
+}
+
+bool MainWindow::environmentLoading() const
+{
+  return loader_->loading(kEnvironmentLoad);
+}
+
+bool MainWindow::assetLoading(const std::string& key) const
+{
+  return loader_->loading(key);
+}
+
+bool MainWindow::sessionLoading() const
+{
+  return loader_->loading(kSessionLoad);
 }
 
 void MainWindow::openMeshInBackground(const QString& path)
 {
   const std::string mesh = path.toStdString();
   const std::string tangents = model_.text("tangents");
-  runInBackground(
-      &meshRequest_, &meshLoading_, path,
-      [mesh, tangents](SceneAssets& staged) { staged.surface(mesh, tangents); },
+  loader_->load(
+      kMeshLoad, path, [mesh, tangents](SceneAssets& staged) { staged.surface(mesh, tangents); },
       // In the assets now: opening it (the model's validation, the view) reads nothing again,
       // unless the tangents changed meanwhile.
       [this, path] { openMesh(path); });
@@ -395,9 +369,8 @@ void MainWindow::openMeshInBackground(const QString& path)
 void MainWindow::openEnvironmentInBackground(const QString& spec, bool recent)
 {
   const std::string text = spec.toStdString();
-  runInBackground(
-      &environmentRequest_, &environmentLoading_, spec,
-      [text](SceneAssets& staged) { staged.environment(text); },
+  loader_->load(
+      kEnvironmentLoad, spec, [text](SceneAssets& staged) { staged.environment(text); },
       [this, spec, text, recent]
       {
         if (recent)
@@ -415,9 +388,8 @@ void MainWindow::editInBackground(const std::string& key, const QString& text)
 {
   const std::string value = text.toStdString();
   const std::string mesh = model_.text("mesh");
-  runInBackground(
-      &assetRequests_[key], &assetLoading_[key],
-      text.isEmpty() ? QString::fromStdString(key) : text,
+  loader_->load(
+      key, text.isEmpty() ? QString::fromStdString(key) : text,
       [key, value, mesh](SceneAssets& staged)
       {
         if (key == "tangents")
@@ -434,8 +406,8 @@ void MainWindow::editInBackground(const std::string& key, const QString& text)
 
 void MainWindow::openSessionInBackground(const QString& path)
 {
-  runInBackground(
-      &sessionRequest_, &sessionLoading_, path,
+  loader_->load(
+      kSessionLoad, path,
       [path](SceneAssets& staged)
       {
         // What the session names, read ahead; anything wrong with it is left to openSession.
@@ -573,8 +545,8 @@ void MainWindow::openImageInBackground(const QString& path)
   const std::string text = path.toStdString();
   const bool exr = lowerSuffix(path) == "exr";
   auto environment = std::make_shared<bool>(false);
-  runInBackground(
-      &assetRequests_["normal-map"], &assetLoading_["normal-map"], path,
+  loader_->load(
+      "normal-map", path,
       [text, exr, environment](SceneAssets& staged)
       {
         const std::shared_ptr<const Image> image = staged.map("normal-map", text);

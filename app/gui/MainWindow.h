@@ -12,19 +12,18 @@
 #include <QString>
 #include <QStringList>
 #include <functional>
-#include <map>
 #include <memory>
 #include <string>
 #include <vtkNew.h>
 
 class QLabel;
-class QThreadPool;
 class QMenu;
 class QVTKOpenGLNativeWidget;
 class vtkGenericOpenGLRenderWindow;
 
 namespace aniso
 {
+class BackgroundLoader;
 class CompareWindow;
 class EnvironmentDock;
 class LightsDock;
@@ -80,23 +79,19 @@ public:
   // openMesh reports it, once, and leaves the scene as it was. The File menu, dropped files and
   // the recent files open meshes so.
   void openMeshInBackground(const QString& path);
-  bool meshLoading() const { return meshLoading_; }
+  bool meshLoading() const;
   // The same for an environment (a file, or a spec the environment dock lists); with RECENT it
   // joins the recent files as openEnvironment does. The dock opens its choices so.
   void openEnvironmentInBackground(const QString& spec, bool recent);
-  bool environmentLoading() const { return environmentLoading_; }
+  bool environmentLoading() const;
   // The same for a map file or pattern (normal-map, tpr, ...) or a tangent model (the mesh
   // prepared anew), then set as KEY's value. The Maps dock edits them so.
   void editInBackground(const std::string& key, const QString& text);
-  bool assetLoading(const std::string& key) const
-  {
-    const auto it = assetLoading_.find(key);
-    return it != assetLoading_.end() && it->second;
-  }
+  bool assetLoading(const std::string& key) const;
   // A session: what it names (mesh, environment, maps) is read on a worker, then openSession
   // applies it, finding them read; anything wrong is reported by openSession, in its words.
   void openSessionInBackground(const QString& path);
-  bool sessionLoading() const { return sessionLoading_; }
+  bool sessionLoading() const;
   // Renders the current view at scale x its size with the full quality and writes PATH by its
   // extension: .png (display-transformed 8-bit sRGB), .tif/.tiff (the same in 16 bits), .exr
   // (linear radiance, float, alpha = coverage). Throws aniso::Error "PATH: reason".
@@ -124,18 +119,11 @@ private:
   void showSamples(int samples, int target);
   void setInteractiveResolution(bool interacting);
   void chooseAndExportScreenshot();
-  // Runs LOAD on a worker with assets of its own (the status bar says NAME is loading, BUSY is
-  // true), then on this thread takes those assets into the scene's and runs DELIVER, unless a
-  // later request counted by REQUEST took its place, or LOAD threw: then the error is reported
-  // and the scene stays, or with PREFETCH, DELIVER runs all the same (and reports it itself).
   // PATH as the normal map (and bump quaternion when bump was none).
   bool openNormalMap(const QString& path);
   // An image dropped or reopened: read on a worker, then an environment (an .exr twice as wide
   // as high) or the normal map.
   void openImageInBackground(const QString& path);
-  void runInBackground(int* request, bool* busy, const QString& name,
-                       const std::function<void(SceneAssets&)>& load,
-                       const std::function<void()>& deliver, bool prefetch = false);
 
   SceneModel model_;
   SceneEditor editor_;
@@ -158,14 +146,7 @@ private:
   QLabel* samplesLabel_;
   QLabel* lutLabel_;
   bool errorDialogs_ = true;
-  QThreadPool* loadPool_;
-  int meshRequest_ = 0; // sequence numbers of the latest background requests
-  int environmentRequest_ = 0;
-  int sessionRequest_ = 0;
-  std::map<std::string, int> assetRequests_; // by key (node addresses stay)
-  bool meshLoading_ = false;
-  bool environmentLoading_ = false;
-  bool sessionLoading_ = false;
-  std::map<std::string, bool> assetLoading_;
+  // The background loads (the status bar says what loads), each kind's latest request winning.
+  BackgroundLoader* loader_;
 };
 } // namespace aniso

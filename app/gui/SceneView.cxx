@@ -1,33 +1,24 @@
 #include "app/gui/SceneView.h"
 
+#include "app/gui/RenderTimer.h"
 #include "app/gui/SceneAssets.h"
+#include "app/gui/ViewCamera.h"
 #include "core/error.h"
 #include "scene/LutScheduler.h"
 #include "vtkpasses/render/AnisoMaterial.h"
 #include "vtkpasses/render/EnvironmentLighting.h"
-#include "vtkpasses/render/ViewSettings.h"
 #include "vtkpasses/render/vtkAnisoAccumulationPass.h"
 
-#include <QThreadPool>
 #include <QTimer>
 #include <algorithm>
-#include <cctype>
-#include <cmath>
 #include <functional>
-#include <glm/geometric.hpp>
-#include <new>
-#include <sstream>
 #include <vtkActor.h>
 #include <vtkCallbackCommand.h>
-#include <vtkCamera.h>
 #include <vtkCommand.h>
 #include <vtkInteractorObserver.h>
-#include <vtkObjectFactory.h>
 #include <vtkOpenGLPolyDataMapper.h>
 #include <vtkOpenGLRenderWindow.h>
 #include <vtkOpenGLRenderer.h>
-#include <vtkOutputWindow.h>
-#include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtkRenderStepsPass.h>
 #include <vtkRenderWindow.h>
@@ -36,45 +27,6 @@
 
 namespace aniso
 {
-// VTK's error text (a shader that does not compile, a failed GL call) and generic warnings (the
-// material's failures) go to SINK while the view draws; everything goes where it went before
-// too.
-class ErrorForwardingWindow : public vtkOutputWindow
-{
-public:
-  static ErrorForwardingWindow* New();
-  vtkSmartPointer<vtkOutputWindow> previous;
-  std::function<void(const std::string&)> sink;
-  bool drawing = false;
-  bool spoke = false; // something went to SINK since the flag was cleared
-
-  void DisplayText(const char* text) override { previous->DisplayText(text); }
-  void DisplayErrorText(const char* text) override
-  {
-    previous->DisplayErrorText(text);
-    if (drawing && sink && text)
-    {
-      spoke = true;
-      sink(text);
-    }
-  }
-  void DisplayWarningText(const char* text) override { previous->DisplayWarningText(text); }
-  void DisplayGenericWarningText(const char* text) override
-  {
-    previous->DisplayGenericWarningText(text);
-    // The material reports what failed while drawing (a texture that could not be made) so.
-    if (drawing && sink && text)
-    {
-      spoke = true;
-      sink(text);
-    }
-  }
-  void DisplayDebugText(const char* text) override { previous->DisplayDebugText(text); }
-
-  vtkTypeMacro(ErrorForwardingWindow, vtkOutputWindow)
-};
-vtkStandardNewMacro(ErrorForwardingWindow);
-
 namespace
 {
 bool isMaterialKey(const std::string& key)
@@ -97,53 +49,22 @@ bool needsLuts(const MaterialSettings& s)
 {
   return s.method == SpecularMethod::SplitSum || s.halfVectors == HalfVectorSource::Lut;
 }
-
-// "ERROR: In FILE, line N\nvtkClass (0x...): what\n" -> "what": the words, not the source.
-std::string plainVtkError(std::string text)
-{
-  if ((text.rfind("ERROR: In ", 0) == 0 || text.rfind("Generic Warning: In ", 0) == 0) &&
-      text.find('\n') != std::string::npos)
-  {
-    text = text.substr(text.find('\n') + 1);
-  }
-  const std::size_t object = text.find("): ");
-  if (text.rfind("vtk", 0) == 0 && object != std::string::npos)
-  {
-    text = text.substr(object + 3);
-  }
-  while (!text.empty() && std::isspace(static_cast<unsigned char>(text.back())))
-  {
-    text.pop_back();
-  }
-  return text;
-}
-
-// Default view: a three-quarter view from the front, slightly above (Z up).
-glm::dvec3 defaultViewDirection()
-{
-  return viewDirectionFromAngles(-35.0, 25.0);
-}
 } // namespace
 
 SceneView::SceneView(SceneModel* model, SceneAssets* assets, LutScheduler* luts,
                      vtkRenderWindow* window, QObject* parent)
     : QObject(parent), model_(model), assets_(assets), luts_(luts), window_(window),
-      settle_(new QTimer(this)), frame_(new QTimer(this)), lightingPool_(new QThreadPool(this)),
-      errorOutput_(vtkSmartPointer<ErrorForwardingWindow>::New())
+      settle_(new QTimer(this)), frame_(new QTimer(this)),
+      errors_(
+          [this](const std::string& message)
+          {
+            // Queued: never re-enter the window from inside its own rendering.
+            QMetaObject::invokeMethod(
+                this, [this, message] { emit errorOccurred(QString::fromStdString(message)); },
+                Qt::QueuedConnection);
+          }),
+      lightingLoader_(new LightingLoader(model, assets, window, &errors_, this))
 {
-  errorOutput_->previous = vtkOutputWindow::GetInstance();
-  errorOutput_->sink = [this](const std::string& text)
-  {
-    const std::string plain = plainVtkError(text);
-    const std::string material = "anisotropic material: ";
-    // The material's messages name their subject already.
-    reportRenderError(plain.rfind(material, 0) == 0 ? plain.substr(material.size())
-                                                    : "OpenGL: " + plain);
-  };
-  vtkOutputWindow::SetInstance(errorOutput_);
-
-  // One lighting bake at a time: a second would only compete for the cores with the first.
-  lightingPool_->setMaxThreadCount(1);
   mapper_->ScalarVisibilityOff();
   actor_->SetMapper(mapper_);
   renderer_->AddActor(actor_);
@@ -194,22 +115,32 @@ SceneView::SceneView(SceneModel* model, SceneAssets* assets, LutScheduler* luts,
 
   // Every frame the window draws is timed (progressive ones and the interactor's own); those
   // that drew the surface are what the frame budget learns from.
-  clock_.start();
-  frameTiming_->SetClientData(this);
-  frameTiming_->SetCallback([](vtkObject* caller, unsigned long event, void* self, void*)
-                            { static_cast<SceneView*>(self)->frameEvent(caller, event); });
-  window_->AddObserver(vtkCommand::StartEvent, frameTiming_);
-  window_->AddObserver(vtkCommand::EndEvent, frameTiming_);
-  mapper_->AddObserver(vtkCommand::StartEvent, frameTiming_);
+  renderTimer_ = std::make_unique<RenderTimer>(
+      window_, mapper_, &planner_,
+      [this](MeasuredRender& drawn)
+      {
+        drawn.standIn = drawnInteractive_ && mapper_->GetInput() == drawnInteractive_;
+        drawn.samples = material_ ? material_->settings().samples : 1;
+        drawn.bands = pass_->GetCurrentFrameBands();
+        drawn.band = pass_->GetNextBand(); // the band being drawn (counted up after it)
+      },
+      // Only refinement frames after a run's first measure the load: the first after a resize
+      // or a new shader variant also pays for those once, which says nothing of the load.
+      [this](MeasuredRender& drawn)
+      { drawn.measuresLoad = !interacting_ && pass_->GetAccumulatedFrames() > 1; });
 
   connect(model_, &SceneModel::valueChanged, this, &SceneView::modelChanged);
   connect(model_, &SceneModel::cameraChanged, this, &SceneView::applyCameraFromModel);
   connect(luts_, &LutScheduler::lutsReady, this, [this] { applyMaterial(); });
+  connect(lightingLoader_, &LightingLoader::shown, this, &SceneView::lightingShown);
+  connect(lightingLoader_, &LightingLoader::busyChanged, this, &SceneView::lightingBusyChanged);
+  connect(lightingLoader_, &LightingLoader::failed, this, &SceneView::errorOccurred);
 
-  applyLighting();
+  lightingLoader_->loadNow();
+  pass_->SetLighting(lighting());
   applySurface();
   applyDisplay();
-  material_ = std::make_unique<AnisoMaterial>(lighting_);
+  material_ = std::make_unique<AnisoMaterial>(lighting());
   applyMaterial();
   material_->apply(actor_, renderer_);
   luts_->requestNow();
@@ -218,8 +149,8 @@ SceneView::SceneView(SceneModel* model, SceneAssets* assets, LutScheduler* luts,
 
 SceneView::~SceneView()
 {
-  // A bake in flight refers to this view; its queued result dies with it.
-  lightingPool_->waitForDone();
+  // A bake in flight ends first; its upload and showing (queued) die with the loader.
+  delete lightingLoader_;
   if (vtkRenderWindowInteractor* interactor = window_->GetInteractor())
   {
     if (vtkInteractorObserver* style = interactor->GetInteractorStyle())
@@ -227,24 +158,21 @@ SceneView::~SceneView()
       style->RemoveObserver(interactionObserver_);
     }
   }
-  window_->RemoveObserver(frameTiming_);
-  mapper_->RemoveObserver(frameTiming_);
+  renderTimer_.reset();
   material_.reset();
   window_->RemoveRenderer(renderer_);
-  vtkOutputWindow::SetInstance(errorOutput_->previous);
 }
 
-void SceneView::reportRenderError(const std::string& message)
+void SceneView::attempt(const std::function<void()>& action)
 {
-  // A failure repeats with every frame: the user hears of it once.
-  if (!reportedRenderErrors_.insert(message).second)
+  try
   {
-    return;
+    action();
   }
-  // Queued: never re-enter the window from inside its own rendering.
-  QMetaObject::invokeMethod(
-      this, [this, message] { emit errorOccurred(QString::fromStdString(message)); },
-      Qt::QueuedConnection);
+  catch (const Error& e)
+  {
+    emit errorOccurred(QString::fromStdString(e.what()));
+  }
 }
 
 vtkOpenGLRenderer* SceneView::renderer() const
@@ -259,38 +187,25 @@ void SceneView::setSettleMs(int ms)
 
 void SceneView::setFrameBudgetMs(int ms)
 {
-  frameBudgetMs_ = std::max(ms, 0);
-  try
-  {
-    applyMaterial();
-  }
-  catch (const Error& e)
-  {
-    emit errorOccurred(QString::fromStdString(e.what()));
-  }
+  planner_.setBudgetMs(ms);
+  attempt([this] { applyMaterial(); });
   requestRender();
+}
+
+long long SceneView::windowPixels() const
+{
+  const int* size = window_->GetSize();
+  return static_cast<long long>(size[0]) * size[1];
 }
 
 FrameCostModel SceneView::frameCost(bool anySize) const
 {
-  const int* size = window_->GetSize();
-  const long long pixels = static_cast<long long>(size[0]) * size[1];
-  // Only frames of this size (unless asked otherwise): a frame also has costs that do not grow
-  // with its pixels, so costs per pixel of other sizes would mislead.
-  std::vector<FrameCostSample> measured;
-  for (const auto& [key, cost] : frameCosts_)
-  {
-    if (anySize || key.first == pixels)
-    {
-      measured.push_back({key.second, static_cast<double>(key.first), cost.seconds});
-    }
-  }
-  return fitFrameCost(measured);
+  return planner_.cost(windowPixels(), anySize);
 }
 
 int SceneView::frameSamples() const
 {
-  return interacting_ ? std::min(full_.samples, kInteractiveSamples) : runSamples_;
+  return interacting_ ? std::min(full_.samples, kInteractiveSamples) : planner_.runSamples();
 }
 
 int SceneView::frameBands() const
@@ -298,148 +213,14 @@ int SceneView::frameBands() const
   return interacting_ ? 1 : pass_->GetFrameBands();
 }
 
-FramePlan SceneView::planRun() const
+RunShape SceneView::runShape() const
 {
-  const int total = targetSamples();
-  if (frameBudgetMs_ <= 0)
-  {
-    return {full_.samples, 1};
-  }
-  const int* size = window_->GetSize();
-  const long long pixels = static_cast<long long>(size[0]) * size[1];
-  const FrameCostModel cost = frameCost();
-  if (!cost.known)
-  {
-    // Nothing measured at this size (the first still frame after moving at half resolution): a
-    // first frame as cheap as can be, which measures it, in bands as the costs of the other sizes
-    // suggest (costs per pixel of smaller frames are higher: it errs on the side of more bands).
-    const FrameCostModel guess = frameCost(true);
-    if (!guess.known)
-    {
-      // Nothing measured at any size: bands by the surface's triangles.
-      const long long triangles = drawnSurface_ ? drawnSurface_->GetNumberOfPolys() : 0;
-      const long long bands = (triangles + kTrianglesPerBand - 1) / kTrianglesPerBand;
-      return {1, static_cast<int>(std::clamp<long long>(bands, 1, kMaxBands))};
-    }
-    return {1, chooseFrameBands(guess, 1, double(pixels), planBudgetSeconds(guess), kMaxBands)};
-  }
-  int largestMeasured = 1;
-  for (const auto& entry : frameCosts_)
-  {
-    if (entry.first.first == pixels)
-    {
-      largestMeasured = std::max(largestMeasured, entry.first.second);
-    }
-  }
-  if (!cost.separated && largestMeasured != 1)
-  {
-    // One sample count measured, more than 1: a frame of 1 (the cheapest) tells the fixed cost
-    // from the samples'.
-    return {1, chooseFrameBands(cost, 1, double(pixels), planBudgetSeconds(cost), kMaxBands)};
-  }
-  // A fit from few, noisy renders is trusted up to 4 times the largest count measured (with one
-  // count, 1, measured: its assumed split overestimates the cost of more samples, so a plan of up
-  // to 4 stays within the budget and measures the split); a count beyond is reached over later
-  // runs, each measuring the way there. Below the material's count, a divisor of the run's total.
-  const int reach = 4 * largestMeasured;
-  const int most = reach >= full_.samples ? full_.samples : largestDivisorAtMost(total, reach);
-  FramePlan plan =
-      chooseFramePlan(cost, double(pixels), planBudgetSeconds(cost), most, total, kMaxBands);
-  if (frameCosts_.count(std::make_pair(pixels, plan.samples)) == 0)
-  {
-    // A count never measured at this size is extrapolated: its first frame is cut in bands for
-    // kUnmeasuredMargin times the predicted cost; the bands are re-planned from what it measured
-    // once it is complete.
-    plan.bands = chooseFrameBands(cost, plan.samples, double(pixels),
-                                  planBudgetSeconds(cost) / kUnmeasuredMargin, kMaxBands);
-  }
-  return plan;
-}
-
-double SceneView::planBudgetSeconds(const FrameCostModel& cost) const
-{
-  // Planned for the machine as it ran the latest frames (the fit follows a change of load only
-  // over several frames), except while the parts are not yet told apart: a margin on the
-  // pessimistic split would keep every frame at 1 sample and the split unknown.
-  return frameBudgetMs_ * 1e-3 / (cost.separated ? loadMargin(loadRatios_, kMaxLoadMargin) : 1.0);
-}
-
-void SceneView::frameEvent(vtkObject* caller, unsigned long event)
-{
-  if (caller == window_ && event == vtkCommand::StartEvent)
-  {
-    frameStartNs_ = clock_.nsecsElapsed();
-    frameDrewSurface_ = false;
-    lastFrameSeconds_ = 0.0;
-    return;
-  }
-  if (caller != window_)
-  {
-    // The surface's mapper starts drawing: this render adds (a band of) a frame to the mean.
-    frameDrewSurface_ = true;
-    frameDrewStandIn_ = drawnInteractive_ && mapper_->GetInput() == drawnInteractive_;
-    frameDrawnSamples_ = material_ ? material_->settings().samples : 1;
-    frameDrawnBands_ = pass_->GetCurrentFrameBands();
-    frameDrawnBand_ = pass_->GetNextBand(); // the band being drawn (counted up after it)
-    return;
-  }
-  if (frameStartNs_ < 0)
-  {
-    return;
-  }
-  if (frameDrewSurface_)
-  {
-    // The GL may still be drawing what it was given (a software rasteriser works on its own
-    // threads until something needs the result): the render is measured, and its cost paid,
-    // here, not in whichever later call waits for it.
-    glFinish();
-  }
-  const double seconds = double(clock_.nsecsElapsed() - frameStartNs_) * 1e-9;
-  frameStartNs_ = -1;
-  if (!frameDrewSurface_)
-  {
-    return; // a converged view shown again, or nothing to draw
-  }
-  lastFrameSeconds_ = seconds;
-  const int* size = window_->GetSize();
-  const long long pixels = static_cast<long long>(size[0]) * size[1];
-  // How far the fit was off for this render, before it learns from it: the load margin (a band
-  // predicted as its share of the frame). Only refinement frames after a run's first: the first
-  // after a resize or a new shader variant also pays for those once, which says nothing of the
-  // load.
-  const FrameCostModel before = frameCost();
-  if (before.known && !interacting_ && pass_->GetAccumulatedFrames() > 1)
-  {
-    const double predicted =
-        before.predictSeconds(frameDrawnSamples_, double(pixels)) / frameDrawnBands_;
-    if (predicted > 0.0)
-    {
-      loadRatios_.push_back(seconds / predicted);
-      if (loadRatios_.size() > std::size_t(kLoadFrames))
-      {
-        loadRatios_.erase(loadRatios_.begin());
-      }
-    }
-  }
-  if (frameDrewStandIn_)
-  {
-    return; // the stand-in's cost says nothing of the surface's
-  }
-  // What the model learns is the cost of whole frames: a frame drawn in bands costs its bands
-  // together (bands differ from one another as the surface does across the rows; together they
-  // are the frame). A frame whose bands were interrupted (the view changed) is not counted.
-  frameBandSeconds_ = frameDrawnBand_ == 0 ? seconds : frameBandSeconds_ + seconds;
-  if (frameDrawnBand_ != frameDrawnBands_ - 1)
-  {
-    return;
-  }
-  // A running mean that follows the view (how much of it the surface covers) within a few
-  // frames. The first frame of a size and sample count may also have paid for things done once
-  // (the targets' allocation at a new size, a new shader variant's compilation): the second
-  // replaces it.
-  FrameCost& cost = frameCosts_[std::make_pair(pixels, frameDrawnSamples_)];
-  cost.seconds = cost.frames < 2 ? frameBandSeconds_ : 0.7 * cost.seconds + 0.3 * frameBandSeconds_;
-  ++cost.frames;
+  RunShape shape;
+  shape.total = targetSamples();
+  shape.pixels = windowPixels();
+  shape.materialSamples = full_.samples;
+  shape.triangles = drawnSurface_ ? drawnSurface_->GetNumberOfPolys() : 0;
+  return shape;
 }
 
 void SceneView::modelChanged(const QString& qkey)
@@ -453,23 +234,23 @@ void SceneView::modelChanged(const QString& qkey)
     }
     else if (key == "env" || key == "cube-size")
     {
-      requestLighting();
+      lightingLoader_->request();
     }
     else if (key == "env-sampling" &&
              parseEnvironmentSampling(model_->text("env-sampling")) != EnvironmentSampling::Off &&
-             !lightingSampled_)
+             !lightingSampled())
     {
       // The distribution is baked with a new lighting on the worker; until it is on screen the
       // material keeps sampling only its lobe.
-      requestLighting();
+      lightingLoader_->request();
     }
     if (!keepsFrameCost(key))
     {
-      frameCosts_.clear();
+      planner_.forgetCosts();
     }
     else if (key == "env-rotation")
     {
-      lighting_->setRotationDegrees(model_->real("env-rotation"));
+      lighting()->setRotationDegrees(model_->real("env-rotation"));
     }
     else if (isDisplayKey(key))
     {
@@ -548,196 +329,19 @@ long long SceneView::drawnTriangles() const
   return drawn ? static_cast<long long>(drawn->GetNumberOfPolys()) : 0;
 }
 
-void SceneView::applyLighting()
+void SceneView::lightingShown()
 {
-  lighting_ = std::make_shared<EnvironmentLighting>(assets_->environment(model_->text("env")),
-                                                    model_->integer("cube-size"));
-  lighting_->setRotationDegrees(model_->real("env-rotation"));
-  pass_->SetLighting(lighting_);
-}
-
-void SceneView::requestLighting()
-{
-  ++lightingRequest_;
-  if (lightingInFlight_)
-  {
-    lightingPending_ = true;
-  }
-  else
-  {
-    startLightingBake();
-  }
-  if (lightingBusy() && !lightingBusyShown_)
-  {
-    lightingBusyShown_ = true;
-    emit lightingBusyChanged(true);
-  }
-}
-
-void SceneView::startLightingBake()
-{
-  lightingPending_ = false;
-  const int id = lightingRequest_;
-  const int cubeSize = model_->integer("cube-size");
-  const bool sampling =
-      parseEnvironmentSampling(model_->text("env-sampling")) != EnvironmentSampling::Off;
-  std::shared_ptr<const Environment> environment;
-  try
-  {
-    // The model's validator loaded and checked it already: a hit of the assets' cache.
-    environment = assets_->environment(model_->text("env"));
-  }
-  catch (const Error& e)
-  {
-    lightingBaked(id, nullptr, false, QString::fromStdString(e.what()));
-    return;
-  }
-  if (lighting_ && &lighting_->environment() == environment.get() &&
-      lighting_->cubeSize() == cubeSize && (!sampling || lightingSampled_))
-  {
-    // Back to what is on screen (an undo, or a change reverted while a bake ran).
-    lightingBaked(id, lighting_, lightingSampled_, QString());
-    return;
-  }
-  lightingInFlight_ = true;
-  lightingPool_->start(
-      [this, id, environment, cubeSize, sampling]
-      {
-        std::shared_ptr<EnvironmentLighting> baked;
-        QString message;
-        try
-        {
-          baked = std::make_shared<EnvironmentLighting>(environment, cubeSize);
-          if (sampling)
-          {
-            // The material samples the environment only with a lighting baked so: never
-            // baked on the UI thread.
-            baked->samplingDistribution();
-          }
-        }
-        catch (const Error& e)
-        {
-          message = QString::fromStdString(e.what());
-        }
-        catch (const std::bad_alloc&)
-        {
-          message = tr("cube-size: %1 is too large for the memory available").arg(cubeSize);
-        }
-        // Delivered on the UI thread; dropped with the view if it is gone by then.
-        QMetaObject::invokeMethod(
-            this,
-            [this, id, baked, sampling, message] { lightingBaked(id, baked, sampling, message); },
-            Qt::QueuedConnection);
-      });
-}
-
-void SceneView::lightingBaked(int id, std::shared_ptr<EnvironmentLighting> baked, bool sampled,
-                              const QString& error)
-{
-  lightingInFlight_ = false;
-  if (id != lightingRequest_)
-  {
-    // Stale: the latest request bakes next.
-    startLightingBake();
-    return;
-  }
-  if (!error.isEmpty())
-  {
-    // The lighting on screen stays.
-    emit errorOccurred(error);
-  }
-  else if (baked != lighting_ && uploadLighting(*baked, sampled))
-  {
-    // Its textures are in the GL now; the switch to it, with the first frame of the new shader
-    // variant, comes in a later pass of the event loop (events in between are handled).
-    nextLighting_ = std::move(baked);
-    nextLightingSampled_ = sampled;
-    nextLightingId_ = id;
-    QTimer::singleShot(kAfterPresentMs, this, [this, id] { showLighting(id); });
-  }
-  updateLightingBusy();
-}
-
-bool SceneView::uploadLighting(EnvironmentLighting& lighting, bool sampled)
-{
-  auto* gl = vtkOpenGLRenderWindow::SafeDownCast(window_);
-  if (!gl || !contextReady_)
-  {
-    return true; // no context yet: the first frame drawn with it uploads them
-  }
-  errorOutput_->drawing = true;
-  QString failure;
-  try
-  {
-    window_->MakeCurrent();
-    lighting.cubeTexture(gl);
-    if (sampled)
-    {
-      lighting.samplingCdfTexture(gl);
-      lighting.samplingPdfTexture(gl);
-      lighting.samplingGuideTexture(gl);
-    }
-  }
-  catch (const Error& e)
-  {
-    failure = QString::fromStdString(e.what());
-  }
-  catch (const std::bad_alloc&)
-  {
-    failure = tr("environment: its textures are too large for the memory available");
-  }
-  errorOutput_->drawing = false;
-  if (!failure.isEmpty())
-  {
-    // The lighting on screen stays.
-    emit errorOccurred(failure);
-    return false;
-  }
-  return true;
-}
-
-void SceneView::showLighting(int id)
-{
-  if (!nextLighting_ || id != nextLightingId_)
-  {
-    return; // a later delivery took its place
-  }
-  std::shared_ptr<EnvironmentLighting> next = std::move(nextLighting_);
-  nextLighting_.reset();
-  if (id == lightingRequest_)
-  {
-    next->setRotationDegrees(model_->real("env-rotation"));
-    lighting_ = std::move(next);
-    lightingSampled_ = nextLightingSampled_;
-    pass_->SetLighting(lighting_);
-    material_->setLighting(lighting_);
-    // Frames with another lighting (and with environment sampling, another shader variant) cost
-    // what they cost: measured anew.
-    frameCosts_.clear();
-    // The first frame compiles the new variant: drawn as cheaply as while moving, refinement
-    // under the frame budget once settled.
-    beginInteraction();
-    // Environment sampling held back for want of the distribution can start now.
-    try
-    {
-      applyMaterial();
-    }
-    catch (const Error& e)
-    {
-      emit errorOccurred(QString::fromStdString(e.what()));
-    }
-    requestRender();
-  }
-  updateLightingBusy();
-}
-
-void SceneView::updateLightingBusy()
-{
-  if (!lightingBusy() && lightingBusyShown_)
-  {
-    lightingBusyShown_ = false;
-    emit lightingBusyChanged(false);
-  }
+  pass_->SetLighting(lighting());
+  material_->setLighting(lighting());
+  // Frames with another lighting (and with environment sampling, another shader variant) cost
+  // what they cost: measured anew.
+  planner_.forgetCosts();
+  // The first frame compiles the new variant: drawn as cheaply as while moving, refinement
+  // under the frame budget once settled.
+  beginInteraction();
+  // Environment sampling held back for want of the distribution can start now.
+  attempt([this] { applyMaterial(); });
+  requestRender();
 }
 
 void SceneView::applyMaterial()
@@ -770,9 +374,9 @@ void SceneView::applyMaterial()
       wanted.halfVectors = full_.halfVectors;
     }
   }
-  if (wanted.environmentSampling != EnvironmentSampling::Off && !lightingSampled_)
+  if (wanted.environmentSampling != EnvironmentSampling::Off && !lightingSampled())
   {
-    // Its distribution is being baked on the worker (requestLighting); the lobe alone until then.
+    // Its distribution is being baked on the worker (LightingLoader); the lobe alone until then.
     wanted.environmentSampling = EnvironmentSampling::Off;
   }
   full_ = wanted;
@@ -786,15 +390,14 @@ void SceneView::applyMaterial()
   }
   else
   {
-    const FramePlan plan = planRun();
-    if (plan.samples != runSamples_)
+    const FramePlan plan = planner_.plan(runShape());
+    if (planner_.beginRun(plan))
     {
       // Frames of another sample count: the run starts over, every frame with the same weight.
-      runSamples_ = plan.samples;
       pass_->Reset();
     }
-    shown.samples = runSamples_;
-    frames = targetSamples() / runSamples_;
+    shown.samples = planner_.runSamples();
+    frames = targetSamples() / planner_.runSamples();
     // Bands split a frame's drawing, not its samples: the mean is the same, so no restart (the
     // frame in progress keeps its bands).
     pass_->SetFrameBands(plan.bands);
@@ -825,39 +428,15 @@ void SceneView::applyCameraFromModel()
     }
     return;
   }
-  const glm::dvec3 position =
-      drawing_.pointToDrawing({c.position[0], c.position[1], c.position[2]});
-  const glm::dvec3 focalPoint =
-      drawing_.pointToDrawing({c.focalPoint[0], c.focalPoint[1], c.focalPoint[2]});
-  vtkCamera* camera = renderer_->GetActiveCamera();
-  camera->SetPosition(position.x, position.y, position.z);
-  camera->SetFocalPoint(focalPoint.x, focalPoint.y, focalPoint.z);
-  camera->SetViewUp(c.viewUp.data());
-  camera->SetViewAngle(c.viewAngle);
-  camera->SetParallelProjection(c.parallel);
-  camera->SetParallelScale(c.parallelScale / drawing_.radius);
+  setCameraState(renderer_->GetActiveCamera(), c, drawing_);
   renderer_->ResetCameraClippingRange();
   requestRender();
 }
 
 void SceneView::resetCamera()
 {
-  ViewSettings view;
-  view.direction = defaultViewDirection();
-  // placeCamera fits the object's height; a window narrower than high needs more room.
   const int* size = window_->GetSize();
-  if (size[0] > 0 && size[1] > 0 && size[0] < size[1])
-  {
-    view.margin *= static_cast<double>(size[1]) / size[0];
-  }
-  const CameraPlacement p = placeCamera(view, glm::dvec3(0.0), 1.0); // the drawing frame
-  vtkCamera* camera = renderer_->GetActiveCamera();
-  camera->SetFocalPoint(p.focalPoint.x, p.focalPoint.y, p.focalPoint.z);
-  camera->SetPosition(p.position.x, p.position.y, p.position.z);
-  camera->SetViewUp(p.viewUp.x, p.viewUp.y, p.viewUp.z);
-  camera->SetViewAngle(p.viewAngleDegrees);
-  camera->SetParallelScale(p.parallelScale);
-  camera->SetParallelProjection(p.parallel);
+  setCameraPlacement(renderer_->GetActiveCamera(), defaultPlacement(size[0], size[1]));
   renderer_->ResetCameraClippingRange();
   applyingCamera_ = true;
   model_->setCamera(CameraState{});
@@ -867,22 +446,7 @@ void SceneView::resetCamera()
 
 CameraState SceneView::currentCamera() const
 {
-  vtkCamera* camera = renderer_->GetActiveCamera();
-  CameraState c;
-  c.set = true;
-  camera->GetPosition(c.position.data());
-  camera->GetFocalPoint(c.focalPoint.data());
-  camera->GetViewUp(c.viewUp.data());
-  c.viewAngle = camera->GetViewAngle();
-  c.parallel = camera->GetParallelProjection() != 0;
-  // From the drawing frame back to the mesh's coordinates.
-  for (std::size_t i = 0; i < 3; ++i)
-  {
-    c.position[i] = c.position[i] * drawing_.radius + drawing_.centre[int(i)];
-    c.focalPoint[i] = c.focalPoint[i] * drawing_.radius + drawing_.centre[int(i)];
-  }
-  c.parallelScale = camera->GetParallelScale() * drawing_.radius;
-  return c;
+  return cameraStateOf(renderer_->GetActiveCamera(), drawing_);
 }
 
 RenderSettings SceneView::renderSettings(int width, int height) const
@@ -894,15 +458,7 @@ RenderSettings SceneView::renderSettings(int width, int height) const
   s.environmentRotationDegrees = model_->real("env-rotation");
   s.material = full_;
   s.display = displayFromParameters(model_->parameters());
-  const CameraState c = currentCamera();
-  CameraPlacement p;
-  p.position = {c.position[0], c.position[1], c.position[2]};
-  p.focalPoint = {c.focalPoint[0], c.focalPoint[1], c.focalPoint[2]};
-  p.viewUp = {c.viewUp[0], c.viewUp[1], c.viewUp[2]};
-  p.viewAngleDegrees = c.viewAngle;
-  p.parallel = c.parallel;
-  p.parallelScale = c.parallelScale;
-  s.camera = p;
+  s.camera = placementOf(currentCamera());
   s.width = width;
   s.height = height;
   s.frames = targetSamples() / full_.samples;
@@ -957,9 +513,8 @@ void SceneView::renderNow()
   // as much as drawing one of few samples. The mean is shown by a step of its own
   // (presentFrame) after the first frame of a run, every kPresentIntervalMs and after the last,
   // so the two costs never add up in one stall. Frames while things move are shown as drawn.
-  const bool hide = frameBudgetMs_ > 0 && !interacting_ && !pass_->IsConverged();
-  errorOutput_->drawing = true;
-  errorOutput_->spoke = false;
+  const bool hide = planner_.budgetMs() > 0 && !interacting_ && !pass_->IsConverged();
+  errors_.beginDrawing();
   const bool swap = window_->GetSwapBuffers() != 0;
   if (hide)
   {
@@ -970,7 +525,7 @@ void SceneView::renderNow()
   {
     window_->SwapBuffersOn();
   }
-  errorOutput_->drawing = false;
+  errors_.endDrawing();
   if (!hide)
   {
     presentClock_.start();
@@ -986,7 +541,7 @@ void SceneView::renderNow()
   auto* gl = vtkOpenGLRenderWindow::SafeDownCast(window_);
   if (gl && gl->IsCurrent())
   {
-    contextReady_ = true;
+    lightingLoader_->setContextReady();
     if (!maxTextureSideKnown_)
     {
       // Map files the GL cannot hold are then refused before they reach the scene.
@@ -998,62 +553,30 @@ void SceneView::renderNow()
         maxTextureSideKnown_ = true;
       }
     }
-    // Errors VTK did not report itself (it checks only in debug builds); a few at most, as
-    // glGetError returns one per call. When VTK or the material said what failed, the GL's
-    // code for the same failure adds nothing.
-    for (int i = 0; i < 4; ++i)
-    {
-      const GLenum code = glGetError();
-      if (code == GL_NO_ERROR)
-      {
-        break;
-      }
-      if (errorOutput_->spoke)
-      {
-        continue;
-      }
-      std::ostringstream message;
-      message << "OpenGL: error 0x" << std::hex << code
-              << " while drawing the view (the image may be wrong)";
-      reportRenderError(message.str());
-    }
+    // Errors VTK did not report itself.
+    errors_.checkGlErrors();
   }
   // A refinement frame just completed (its last band drawn): the plan for the frames to come.
   const bool frameDone = pass_->GetNextBand() == 0;
-  if (!interacting_ && frameDone && frameBudgetMs_ > 0 && !pass_->IsConverged())
+  if (!interacting_ && frameDone && planner_.budgetMs() > 0 && !pass_->IsConverged())
   {
-    try
-    {
-      const FramePlan plan = planRun();
-      const bool firstOfRun = pass_->GetAccumulatedFrames() == 1;
-      const bool overran =
-          frameOverran(lastFrameSeconds_, frameBudgetMs_ * 1e-3, kOverrunTolerance);
-      if (runReplans_ < kMaxReplans &&
-          ((firstOfRun && runReplans_ < 2 && plan.samples != runSamples_) ||
-           (overran && plan.samples < runSamples_)))
-      {
-        // The run's first frame measured its own cost: if the plan was off (nothing measured at
-        // this size yet, or one sample count only), the run starts over with the corrected
-        // count, at most twice. A later frame that overran the budget (the load rose) does the
-        // same when the plan, with the margin it measured, now takes fewer samples.
-        ++runReplans_;
-        applyMaterial();
-        requestRender();
-      }
-      else
-      {
-        // The run's samples stay; its frames are cut in as many bands as their measured cost
-        // (and the load) now asks for. That changes no sample of the mean: no restart.
-        const FrameCostModel cost = frameCost();
-        const int* size = window_->GetSize();
-        pass_->SetFrameBands(chooseFrameBands(cost, runSamples_, double(size[0]) * double(size[1]),
-                                              planBudgetSeconds(cost), kMaxBands));
-      }
-    }
-    catch (const Error& e)
-    {
-      emit errorOccurred(QString::fromStdString(e.what()));
-    }
+    attempt(
+        [this]
+        {
+          const RunStep step = planner_.afterFrame(runShape(), pass_->GetAccumulatedFrames() == 1);
+          if (step.replan)
+          {
+            // The run starts over with the corrected plan.
+            applyMaterial();
+            requestRender();
+          }
+          else
+          {
+            // The run's samples stay, its frames in the bands their measured cost asks for: no
+            // restart.
+            pass_->SetFrameBands(step.bands);
+          }
+        });
   }
   if (!hide)
   {
@@ -1093,21 +616,14 @@ void SceneView::beginInteraction()
     interacting_ = true;
     showDrawnSurface();
     emit interactionChanged(true);
-    try
-    {
-      applyMaterial();
-    }
-    catch (const Error& e)
-    {
-      emit errorOccurred(QString::fromStdString(e.what()));
-    }
+    attempt([this] { applyMaterial(); });
   }
 }
 
 void SceneView::settle()
 {
   interacting_ = false;
-  runReplans_ = 0;
+  planner_.settled();
   showDrawnSurface();
   emit interactionChanged(false);
   if (cameraMoved_)
@@ -1125,14 +641,7 @@ void SceneView::settle()
     }
     applyingCamera_ = false;
   }
-  try
-  {
-    applyMaterial();
-  }
-  catch (const Error& e)
-  {
-    emit errorOccurred(QString::fromStdString(e.what()));
-  }
+  attempt([this] { applyMaterial(); });
   requestRender();
 }
 } // namespace aniso

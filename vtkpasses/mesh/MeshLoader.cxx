@@ -4,6 +4,7 @@
 #include "vtkpasses/mesh/OffReader.h"
 #include "vtkpasses/mesh/PlyReader.h"
 #include "vtkpasses/mesh/StlReader.h"
+#include "vtkpasses/mesh/VtkErrorText.h"
 
 #include <algorithm>
 #include <cctype>
@@ -54,31 +55,11 @@ namespace
 {
 const char* const kExtensions[] = {".obj", ".ply", ".stl", ".off", ".vtk", ".vtp", ".gltf", ".glb"};
 
-struct VtkMessage
+// VTK's message as a user reads it: its words (VtkErrorText.h), in one line of printable text.
+VtkErrorText parseVtkMessage(const char* raw)
 {
-  std::string origin; // the VTK class that printed it
-  std::string text;   // without the "ERROR: In file, line" line and the object address
-};
-
-// "ERROR: In ./IO/x.cxx, line 12\nvtkXReader (0x55d...): reason\n\n" -> {vtkXReader, reason}.
-VtkMessage parseVtkMessage(const char* raw)
-{
-  std::string text = raw ? raw : "";
-  if (text.rfind("ERROR: In ", 0) == 0 || text.rfind("Warning: In ", 0) == 0 ||
-      text.rfind("Generic Warning: In ", 0) == 0)
-  {
-    const size_t newline = text.find('\n');
-    text = newline == std::string::npos ? std::string() : text.substr(newline + 1);
-  }
-  VtkMessage message;
-  const size_t open = text.find(" (");
-  const size_t close = text.find("): ");
-  if (open != std::string::npos && close != std::string::npos && open < close &&
-      text.find_first_of(" \n") == open)
-  {
-    message.origin = text.substr(0, open);
-    text = text.substr(close + 3);
-  }
+  VtkErrorText message = parseVtkErrorText(raw);
+  const std::string& text = message.text;
   // One line of printable text: readers quote raw file bytes in their messages, and a user
   // message must carry neither binary junk nor a whole line of a corrupt file, so it stops at
   // the first unprintable byte.
@@ -144,8 +125,8 @@ public:
     this->Warnings.push_back(parseVtkMessage(text));
   }
 
-  std::vector<VtkMessage> Errors;
-  std::vector<VtkMessage> Warnings;
+  std::vector<VtkErrorText> Errors;
+  std::vector<VtkErrorText> Warnings;
 
 protected:
   CapturingOutputWindow() = default;
@@ -200,7 +181,7 @@ void throwIfReaderFailed(const std::string& path, vtkAlgorithm* reader,
 {
   const auto& errors = capture.messages().Errors;
   std::string reason;
-  for (const VtkMessage& message : errors)
+  for (const VtkErrorText& message : errors)
   {
     if (!isPipelineClass(message.origin) && !message.text.empty())
     {
@@ -560,7 +541,7 @@ void limitChildMemory(uintmax_t fileSize)
   {
     ScopedVtkMessageCapture capture;
     vtkSmartPointer<vtkPolyData> polyData = readWithVtk(path, ext, capture);
-    for (const VtkMessage& warning : capture.messages().Warnings)
+    for (const VtkErrorText& warning : capture.messages().Warnings)
     {
       if (!warning.text.empty())
       {

@@ -1,0 +1,46 @@
+#pragma once
+// Times every render of a window (a view's progressive frames and the interactor's own) on the
+// UI thread, the GL's work included, and hands each that drew the surface (its mapper started
+// drawing) to a RefinementPlanner to learn from; each render that starts tells the planner so.
+#include "core/quality/refinement_planner.h"
+
+#include <QElapsedTimer>
+#include <functional>
+#include <vtkNew.h>
+
+class vtkCallbackCommand;
+class vtkMapper;
+class vtkObject;
+class vtkRenderWindow;
+
+namespace aniso
+{
+class RenderTimer
+{
+public:
+  // Fills in what a render draws: DRAW_STARTS as the surface's draw starts (its samples, bands,
+  // band and whether it is the stand-in), RENDER_ENDS once the render is done (whether it
+  // measures the load); the timer adds the window's pixels and the seconds.
+  using Describe = std::function<void(MeasuredRender&)>;
+  RenderTimer(vtkRenderWindow* window, vtkMapper* mapper, RefinementPlanner* planner,
+              Describe drawStarts, Describe renderEnds);
+  ~RenderTimer();
+  RenderTimer(const RenderTimer&) = delete;
+  RenderTimer& operator=(const RenderTimer&) = delete;
+
+private:
+  // Window render start and end, the surface's draw in between: a render's cost.
+  void event(vtkObject* caller, unsigned long event);
+
+  vtkRenderWindow* window_;
+  vtkMapper* mapper_;
+  RefinementPlanner* planner_;
+  Describe drawStarts_;
+  Describe renderEnds_;
+  vtkNew<vtkCallbackCommand> observer_;
+  QElapsedTimer clock_;
+  qint64 startNs_ = -1;
+  bool drewSurface_ = false;
+  MeasuredRender drawn_; // what the surface's draw of the render in progress draws
+};
+} // namespace aniso

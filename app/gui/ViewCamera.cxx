@@ -1,0 +1,72 @@
+#include "app/gui/ViewCamera.h"
+
+#include <vtkCamera.h>
+
+namespace aniso
+{
+void setCameraState(vtkCamera* camera, const CameraState& c, const DrawingFrame& drawing)
+{
+  const glm::dvec3 position = drawing.pointToDrawing({c.position[0], c.position[1], c.position[2]});
+  const glm::dvec3 focalPoint =
+      drawing.pointToDrawing({c.focalPoint[0], c.focalPoint[1], c.focalPoint[2]});
+  camera->SetPosition(position.x, position.y, position.z);
+  camera->SetFocalPoint(focalPoint.x, focalPoint.y, focalPoint.z);
+  camera->SetViewUp(c.viewUp.data());
+  camera->SetViewAngle(c.viewAngle);
+  camera->SetParallelProjection(c.parallel);
+  camera->SetParallelScale(c.parallelScale / drawing.radius);
+}
+
+CameraState cameraStateOf(vtkCamera* camera, const DrawingFrame& drawing)
+{
+  CameraState c;
+  c.set = true;
+  camera->GetPosition(c.position.data());
+  camera->GetFocalPoint(c.focalPoint.data());
+  camera->GetViewUp(c.viewUp.data());
+  c.viewAngle = camera->GetViewAngle();
+  c.parallel = camera->GetParallelProjection() != 0;
+  // From the drawing frame back to the mesh's coordinates.
+  for (std::size_t i = 0; i < 3; ++i)
+  {
+    c.position[i] = c.position[i] * drawing.radius + drawing.centre[int(i)];
+    c.focalPoint[i] = c.focalPoint[i] * drawing.radius + drawing.centre[int(i)];
+  }
+  c.parallelScale = camera->GetParallelScale() * drawing.radius;
+  return c;
+}
+
+CameraPlacement placementOf(const CameraState& c)
+{
+  CameraPlacement p;
+  p.position = {c.position[0], c.position[1], c.position[2]};
+  p.focalPoint = {c.focalPoint[0], c.focalPoint[1], c.focalPoint[2]};
+  p.viewUp = {c.viewUp[0], c.viewUp[1], c.viewUp[2]};
+  p.viewAngleDegrees = c.viewAngle;
+  p.parallel = c.parallel;
+  p.parallelScale = c.parallelScale;
+  return p;
+}
+
+CameraPlacement defaultPlacement(int width, int height)
+{
+  ViewSettings view;
+  view.direction = viewDirectionFromAngles(-35.0, 25.0);
+  // placeCamera fits the object's height; a window narrower than high needs more room.
+  if (width > 0 && height > 0 && width < height)
+  {
+    view.margin *= static_cast<double>(height) / width;
+  }
+  return placeCamera(view, glm::dvec3(0.0), 1.0);
+}
+
+void setCameraPlacement(vtkCamera* camera, const CameraPlacement& p)
+{
+  camera->SetFocalPoint(p.focalPoint.x, p.focalPoint.y, p.focalPoint.z);
+  camera->SetPosition(p.position.x, p.position.y, p.position.z);
+  camera->SetViewUp(p.viewUp.x, p.viewUp.y, p.viewUp.z);
+  camera->SetViewAngle(p.viewAngleDegrees);
+  camera->SetParallelScale(p.parallelScale);
+  camera->SetParallelProjection(p.parallel);
+}
+} // namespace aniso
