@@ -436,8 +436,7 @@ void SceneView::applyCameraFromModel()
 void SceneView::resetCamera()
 {
   const int* size = window_->GetSize();
-  setCameraPlacement(renderer_->GetActiveCamera(), defaultPlacement(size[0], size[1]));
-  renderer_->ResetCameraClippingRange();
+  applyCamera(renderer_, defaultPlacement(size[0], size[1]));
   applyingCamera_ = true;
   model_->setCamera(CameraState{});
   applyingCamera_ = false;

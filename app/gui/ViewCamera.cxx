@@ -60,13 +60,4 @@ CameraPlacement defaultPlacement(int width, int height)
   return placeCamera(view, glm::dvec3(0.0), 1.0);
 }
 
-void setCameraPlacement(vtkCamera* camera, const CameraPlacement& p)
-{
-  camera->SetFocalPoint(p.focalPoint.x, p.focalPoint.y, p.focalPoint.z);
-  camera->SetPosition(p.position.x, p.position.y, p.position.z);
-  camera->SetViewUp(p.viewUp.x, p.viewUp.y, p.viewUp.z);
-  camera->SetViewAngle(p.viewAngleDegrees);
-  camera->SetParallelScale(p.parallelScale);
-  camera->SetParallelProjection(p.parallel);
-}
 } // namespace aniso

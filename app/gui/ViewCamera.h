@@ -18,6 +18,4 @@ CameraPlacement placementOf(const CameraState& state);
 // The default view of the drawing frame's unit sphere in a window of WIDTH x HEIGHT: a
 // three-quarter view from the front, slightly above (Z up), with room for a narrow window.
 CameraPlacement defaultPlacement(int width, int height);
-// CAMERA set to PLACEMENT.
-void setCameraPlacement(vtkCamera* camera, const CameraPlacement& placement);
 } // namespace aniso
