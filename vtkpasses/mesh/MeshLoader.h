@@ -23,9 +23,10 @@
 // so that such entries count as NaN vertices, texture coordinates and normals, as in the other
 // formats. OBJ positions are stored as float by that reader (the other readers keep doubles).
 // Hostile input (truncated, garbage, out-of-range indices) gives an error or a smaller mesh,
-// never a crash: VTK's readers (OBJ, VTK, VTP, glTF) run in a forked child process with a
-// memory limit and a time limit, which hands the surface back as VTK XML; a crash there
-// becomes "PATH: the reader crashed on this file ...". loadMesh serialises itself, since
+// never a crash: VTK's readers (OBJ, VTK, VTP, glTF) run in a program of their own,
+// aniso-mesh-reader, started for each file (posix_spawn, never a fork of this process;
+// MeshReaderProcess.h), with a memory limit and a time limit, which hands the surface back as
+// VTK XML; a crash there becomes "PATH: the reader crashed on this file ...". loadMesh serialises itself, since
 // VTK's message output is process-wide; while it runs, VTK messages from other threads are
 // captured too, so call it where no rendering runs concurrently (the GUI thread does).
 #include "vtkpasses/mesh/MeshValidation.h"

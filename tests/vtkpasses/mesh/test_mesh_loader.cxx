@@ -14,6 +14,7 @@
 #include <iterator>
 #include <random>
 #include <string>
+#include <unistd.h>
 #include <vector>
 #include <vtkCellArray.h>
 #include <vtkFloatArray.h>
@@ -780,6 +781,37 @@ TEST_F(MeshLoaderTest, AReaderCrashBecomesAnErrorInsteadOfEndingTheProcess)
   // A header that is not a dataset gives the fallback message, not the pipeline's jargon.
   EXPECT_EQ(this->loadError(this->write("head.vtk", "# vtk DataFile Version 3.0\nbox\nASCII")),
             "the reader failed (corrupt file, or not in this format)");
+}
+
+// VTK's readers run in the reader program (MeshReaderProcess.h), found through
+// ANISO_MESH_READER first: stand-ins for it show that whatever that process does, the loader
+// reports it with the file's name and the test process goes on. The real program reads the box.
+TEST_F(MeshLoaderTest, TheReaderProgramsFailuresAreErrorsNamingTheFile)
+{
+  const std::string box = this->write("box.obj", boxObj());
+  const auto withReader = [&](const std::string& program)
+  {
+    ::setenv("ANISO_MESH_READER", program.c_str(), 1);
+    std::string message = this->loadError(box);
+    ::unsetenv("ANISO_MESH_READER");
+    return message;
+  };
+  const auto script = [&](const std::string& name, const std::string& body)
+  {
+    const std::string path = this->write(name, "#!/bin/sh\n" + body + "\n");
+    std::filesystem::permissions(path, std::filesystem::perms::owner_all);
+    return path;
+  };
+  const std::string missing = (this->Dir / "no-such-reader").string();
+  EXPECT_EQ(withReader(missing), "aniso-mesh-reader: the mesh reader program is missing (looked "
+                                 "for " + missing + ")");
+  EXPECT_EQ(withReader(script("segv.sh", "kill -SEGV $$")),
+            "the reader crashed on this file (corrupt or unsupported content)");
+  EXPECT_EQ(withReader(script("silent.sh", "exit 0")),
+            "the reader process ended without a result (corrupt file?)");
+  EXPECT_EQ(withReader(script("noise.sh", "echo not a record")),
+            "the reader process ended without a result (corrupt file?)");
+  expectBox(this->loadQuietly(box), "obj through the reader program");
 }
 
 TEST_F(MeshLoaderTest, GarbageBytesFailCleanly)

@@ -1,0 +1,66 @@
+// What reading a file with VTK's readers in a process of its own costs per load: loadMesh of the
+// same small mesh as OBJ (vtkOBJReader, in the reader process) and as PLY (the project's own
+// reader, in this process: the baseline), measured side by side in one run, N loads each
+// (default 40), median per load and the ratio. bench_mesh_reader [N] [TRIANGLES_PER_SIDE]
+#include "vtkpasses/mesh/BuiltinMeshes.h"
+#include "vtkpasses/mesh/MeshLoader.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <string>
+#include <unistd.h>
+#include <vector>
+#include <vtkOBJWriter.h>
+#include <vtkPLYWriter.h>
+#include <vtkPolyData.h>
+
+namespace
+{
+double medianMs(const std::string& path, int loads)
+{
+  std::vector<double> ms;
+  for (int i = 0; i < loads; ++i)
+  {
+    const auto start = std::chrono::steady_clock::now();
+    aniso::loadMesh(path);
+    ms.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+                     .count());
+  }
+  std::sort(ms.begin(), ms.end());
+  return ms[ms.size() / 2];
+}
+} // namespace
+
+int main(int argc, char** argv)
+{
+  const int loads = argc > 1 ? std::max(1, std::atoi(argv[1])) : 40;
+  const int side = argc > 2 ? std::max(2, std::atoi(argv[2])) : 16;
+  vtkSmartPointer<vtkPolyData> plate = aniso::makePlate(side);
+  const std::filesystem::path dir =
+      std::filesystem::temp_directory_path() / ("aniso-bench-reader-" + std::to_string(getpid()));
+  std::filesystem::create_directories(dir);
+  const std::string obj = (dir / "plate.obj").string();
+  const std::string ply = (dir / "plate.ply").string();
+  vtkNew<vtkOBJWriter> objWriter;
+  objWriter->SetInputData(plate);
+  objWriter->SetFileName(obj.c_str());
+  objWriter->Write();
+  vtkNew<vtkPLYWriter> plyWriter;
+  plyWriter->SetInputData(plate);
+  plyWriter->SetFileName(ply.c_str());
+  plyWriter->Write();
+  medianMs(obj, 2); // warm: the page cache, the reader program's libraries
+  medianMs(ply, 2);
+  const double objMs = medianMs(obj, loads);
+  const double plyMs = medianMs(ply, loads);
+  std::printf("| mesh | loads | OBJ, reader process (ms) | PLY, in process (ms) | ratio |\n");
+  std::printf("|---|---|---|---|---|\n");
+  std::printf("| plate, %lld triangles | %d | %.2f | %.2f | %.2f |\n",
+              static_cast<long long>(plate->GetNumberOfPolys()), loads, objMs, plyMs,
+              objMs / plyMs);
+  std::filesystem::remove_all(dir);
+  return 0;
+}

@@ -1,0 +1,42 @@
+#pragma once
+// VTK's readers (VtkReaders.h) run in a program of their own, aniso-mesh-reader, started with
+// posix_spawn for each file: a crash, a runaway allocation or an endless loop there ends that
+// process, not the application. It is never a fork of the application, whose other threads
+// (LUT and environment bakes, background loads) may hold locks that a forked child would wait
+// for forever. The reader bounds its own address space (what it starts with plus a budget of
+// 64 times the file, at least 512 MiB), prints nothing, and sends back its messages and the
+// surface as VTK XML (VTK's own output, read back safely) through a pipe; it is killed after
+// kReaderTimeoutSeconds.
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+#include <vtkSmartPointer.h>
+
+class vtkPolyData;
+
+namespace aniso
+{
+class VtkMessageCapture;
+
+constexpr int kReaderTimeoutSeconds = 120;
+
+// The application's side: reads PATH (lower-case extension EXT, FILE_SIZE bytes) in the reader
+// program; its warnings are appended to WARNINGS. Throws aniso::Error "PATH: reason" (the
+// reader's error, a crash, the time limit, a program that cannot be started).
+vtkSmartPointer<vtkPolyData> readInReaderProcess(const std::string& path, const std::string& ext,
+                                                 uintmax_t fileSize,
+                                                 std::vector<std::string>& warnings);
+
+// Where the reader program is: $ANISO_MESH_READER when set, else beside the running executable,
+// else in ../lib/aniso/ from it (the installed layout), else where this build made it. Throws
+// aniso::Error naming the places looked at when it is in none of them.
+std::string meshReaderProgram();
+
+// The reader program's side: reads PATH with READ and writes what came of it to FD (the
+// parent's pipe); standard output and error go to /dev/null first. Returns the exit status.
+using VtkRead = std::function<vtkSmartPointer<vtkPolyData>(
+    const std::string& path, const std::string& ext, const VtkMessageCapture& capture)>;
+int runMeshReader(int fd, const std::string& path, const std::string& ext, uintmax_t fileSize,
+                  const VtkRead& read);
+} // namespace aniso
