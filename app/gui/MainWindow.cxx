@@ -7,6 +7,7 @@
 #include "app/gui/SurfaceModelView.h"
 #include "core/error.h"
 #include "core/image/image.h"
+#include "scene/Autosave.h"
 #include "scene/LutScheduler.h"
 #include "scene/SceneShading.h"
 #include "vtkpasses/mesh/MeshLoader.h"
@@ -34,6 +35,7 @@
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QLineEdit>
+#include <QLocale>
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QMimeData>
@@ -464,6 +466,43 @@ bool MainWindow::openSession(const QString& path)
               15000);
         }
       });
+}
+
+void MainWindow::enableAutosave(const QString& directory, AutosaveRestore restore)
+{
+  const QString dir = directory.isEmpty() ? Autosave::stateDirectory() : directory;
+  const std::vector<CrashedSession> crashed = Autosave::crashedSessions(dir);
+  delete autosave_;
+  autosave_ = new Autosave(&model_, &session_, dir, Autosave::kDefaultDelayMs, this);
+  connect(autosave_, &Autosave::failed, this, [this](const QString& m) { reportError(m, false); });
+  if (crashed.empty() || restore == AutosaveRestore::Keep)
+  {
+    return;
+  }
+  const CrashedSession& latest = crashed.front();
+  bool restoreIt = restore == AutosaveRestore::Always;
+  if (restore == AutosaveRestore::Ask)
+  {
+    restoreIt = QMessageBox::question(
+                    this, tr("Restore the last scene"),
+                    tr("aniso did not close normally last time. Restore the scene it autosaved "
+                       "at %1?")
+                        .arg(QLocale().toString(latest.savedAt, QLocale::ShortFormat))) ==
+                QMessageBox::Yes;
+  }
+  if (restoreIt)
+  {
+    // Not through openSession: the autosave is no file of the user's (no recent entry, no
+    // session path to save back to).
+    attempt([&] { session_.open(editor_, latest.path); });
+    statusBar()->showMessage(tr("Restored the scene autosaved at %1")
+                                 .arg(QLocale().toString(latest.savedAt, QLocale::ShortFormat)),
+                             10000);
+  }
+  for (const CrashedSession& c : crashed)
+  {
+    Autosave::forget(c);
+  }
 }
 
 bool MainWindow::saveSession(const QString& path)

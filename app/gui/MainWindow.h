@@ -23,6 +23,7 @@ class vtkGenericOpenGLRenderWindow;
 
 namespace aniso
 {
+class Autosave;
 class BackgroundLoader;
 class CompareWindow;
 class EnvironmentDock;
@@ -33,6 +34,14 @@ class LutScheduler;
 class MapsDock;
 class MaterialDock;
 class SceneView;
+
+// What enableAutosave does with the autosave of an earlier run that did not exit normally.
+enum class AutosaveRestore
+{
+  Ask,    // asks whether to restore it (interactive starts without a mesh or session to open)
+  Always, // restores it without asking
+  Keep,   // leaves it for a later start (one that opens a file of its own)
+};
 
 struct ScreenshotOptions
 {
@@ -63,6 +72,11 @@ public:
   // Errors go to the status bar and errorReported; with dialogs on (the default) file
   // operations also show a message box.
   void setErrorDialogs(bool on) { errorDialogs_ = on; }
+  // Autosaves the scene from now on (scene/Autosave.h) into DIRECTORY (empty: the state
+  // directory), and deals with the newest autosave an earlier run left there by dying as
+  // RESTORE says: restored as one undoable step (the older ones are dropped with it).
+  void enableAutosave(const QString& directory, AutosaveRestore restore);
+  Autosave* autosave() const { return autosave_; }
 
   // Each returns false after reporting a failure (the scene is unchanged then).
   bool openMesh(const QString& path);
@@ -146,6 +160,7 @@ private:
   QLabel* samplesLabel_;
   QLabel* lutLabel_;
   bool errorDialogs_ = true;
+  Autosave* autosave_ = nullptr;
   // The background loads (the status bar says what loads), each kind's latest request winning.
   BackgroundLoader* loader_;
 };

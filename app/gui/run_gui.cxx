@@ -147,6 +147,13 @@ int runGui(const std::vector<std::string>& args)
                      }
                    });
   window.show();
+  if (!scripted)
+  {
+    // Nothing of the user's tuning is lost if this run dies; a start that opens a file of its
+    // own leaves an earlier run's autosave for a later plain start.
+    window.enableAutosave(QString(), a.mesh.empty() && a.session.empty() ? AutosaveRestore::Ask
+                                                                        : AutosaveRestore::Keep);
+  }
   if (!a.mesh.empty() && !scripted && a.session.empty())
   {
     // The window answers while the mesh loads (the default scene until then).

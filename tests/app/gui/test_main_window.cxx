@@ -13,12 +13,14 @@
 #include "app/gui/SceneView.h"
 #include "core/error.h"
 #include "core/image/image.h"
+#include "scene/Autosave.h"
 #include "scene/LutScheduler.h"
 #include "widgets/AssetControls.h"
 #include "widgets/EnvironmentDock.h"
 #include "widgets/MapsDock.h"
 
 #include <QApplication>
+#include <QDir>
 #include <QEventLoop>
 #include <QFile>
 #include <QFileInfo>
@@ -461,6 +463,47 @@ private slots:
     QCOMPARE(errors.count(), 1);
     QVERIFY(errors.at(0).at(0).toString().startsWith(broken));
     QVERIFY(window.model()->values() == kept);
+  }
+
+  // An earlier run's autosave (a marker of a process that is gone, its session) comes back into
+  // the window as one undoable step, is then dropped from the state directory, and the window
+  // autosaves its own scene there; with Keep it stays for a later start.
+  void aDeadRunsAutosaveIsRestored()
+  {
+    QTemporaryDir dir;
+    QProcess gone;
+    gone.start("sleep", {"0.2"});
+    QVERIFY(gone.waitForStarted(5000));
+    const QString pid = QString::number(gone.processId());
+    QVERIFY(gone.waitForFinished(5000));
+    const auto writeDeadRun = [&]
+    {
+      QFile marker(QDir(dir.path()).filePath("running-" + pid));
+      QVERIFY(marker.open(QIODevice::WriteOnly));
+      QFile f(QDir(dir.path()).filePath("autosave-" + pid + ".aniso"));
+      QVERIFY(f.open(QIODevice::WriteOnly));
+      f.write(R"({"format": "aniso-session", "version": 1,
+        "parameters": {"nu": 555, "samples": 1, "target-samples": 1}})");
+    };
+    writeDeadRun();
+    {
+      aniso::MainWindow window;
+      QVERIFY(showCheapWindow(window));
+      window.enableAutosave(dir.path(), aniso::AutosaveRestore::Keep);
+      QVERIFY(window.model()->real("nu") != 555.0);
+      QCOMPARE(aniso::Autosave::crashedSessions(dir.path()).size(), std::size_t(1));
+    }
+    aniso::MainWindow window;
+    QVERIFY(showCheapWindow(window));
+    const int undoSteps = window.editor()->undoStack()->count();
+    window.enableAutosave(dir.path(), aniso::AutosaveRestore::Always);
+    QCOMPARE(window.model()->real("nu"), 555.0);
+    QCOMPARE(window.editor()->undoStack()->count(), undoSteps + 1);
+    QVERIFY(aniso::Autosave::crashedSessions(dir.path()).empty());
+    QVERIFY(!QFile::exists(QDir(dir.path()).filePath("autosave-" + pid + ".aniso")));
+    QVERIFY(window.autosave());
+    QVERIFY(window.autosave()->saveNow());
+    QCOMPARE(aniso::readSessionFile(window.autosave()->path()).values.at("nu").number[0], 555.0);
   }
 
   // The camera a session stores is the one the view shows.
