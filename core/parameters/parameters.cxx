@@ -514,6 +514,8 @@ std::string formatParameterValue(const ParameterSpec& spec, const ParameterValue
   case ParameterType::Text:
     return value.text;
   case ParameterType::Integer:
+    // Every digit: the shortest form ("2e5") is no integer to parseParameterValue.
+    return std::to_string(static_cast<long long>(value.number[0]));
   case ParameterType::Real:
     return formatNumber(value.number[0]);
   case ParameterType::Color:

@@ -134,6 +134,26 @@ TEST(Parameters, FormatParseRoundTrip)
   awkward.number = {1.0 / 3.0, 0.1, 1e-7};
   const ParameterSpec& f0 = aniso::parameterSpec("f0");
   EXPECT_EQ(aniso::parseParameterValue(f0, aniso::formatParameterValue(f0, awkward), "x"), awkward);
+  // Integers at the top of their range, and round ones: 200000 was spelled "2e5", which the
+  // integer parser refuses (a fuzzing finding).
+  for (const ParameterSpec& spec : aniso::parameterSpecs())
+  {
+    if (spec.type != aniso::ParameterType::Integer)
+    {
+      continue;
+    }
+    for (const double n : {spec.maximum, spec.minimum, std::floor((spec.minimum + spec.maximum) / 2)})
+    {
+      ParameterValue v;
+      v.number.fill(n); // as the parser fills a number's value
+      const std::string text = aniso::formatParameterValue(spec, v);
+      EXPECT_EQ(aniso::parseParameterValue(spec, text, "x"), v) << spec.name << " " << text;
+    }
+  }
+  EXPECT_EQ(aniso::formatParameterValue(aniso::parameterSpec("lut-samples"),
+                                        aniso::parseParameterValue(aniso::parameterSpec("lut-samples"),
+                                                                   "200000", "x")),
+            "200000");
 }
 
 // formatNumber gives the shortest exact form, with compact exponents.
