@@ -101,6 +101,194 @@ void checkReadableFile(const std::string& path)
   std::fclose(probe);
 }
 
+// OpenEXR 3.1 trusts the sizes its header states: it allocates an attribute of whatever size
+// the header claims (a few bytes can ask for gigabytes) and an offset table for whatever data
+// window and tiling it states, before OpenImageIO sees any of it. So for a file with the EXR
+// magic number, walk its header(s) first: every attribute must lie inside the file, the data
+// window must be within kMaxSide per side, and the tiles must be few enough for their offset
+// table. Files without the magic number are left to OpenImageIO.
+class ExrHeaderWalk
+{
+public:
+  ExrHeaderWalk(const std::string& path, std::FILE* file, long long size)
+    : path_(path)
+    , file_(file)
+    , size_(size)
+  {
+  }
+
+  void check()
+  {
+    unsigned char start[8];
+    if (size_ < 8 || std::fread(start, 1, 8, file_) != 8)
+    {
+      return; // too short for the magic number: OpenImageIO says what it is not
+    }
+    if (start[0] != 0x76 || start[1] != 0x2f || start[2] != 0x31 || start[3] != 0x01)
+    {
+      return;
+    }
+    offset_ = 8;
+    const unsigned flags = unsigned(start[5]) << 8 | unsigned(start[6]) << 16;
+    maxName_ = (flags & 0x400u) ? 255 : 31;
+    const bool multipart = (flags & 0x1000u) != 0;
+    const int kMaxParts = 1024;
+    for (int part = 0;; ++part)
+    {
+      if (part >= kMaxParts)
+      {
+        fail("header names more than " + std::to_string(kMaxParts) + " parts");
+      }
+      const bool empty = walkHeader(/*mayBeEmpty=*/multipart && part > 0);
+      if (!multipart || empty)
+      {
+        return;
+      }
+    }
+  }
+
+private:
+  [[noreturn]] void fail(const std::string& reason) const
+  {
+    throw errorAbout(path_, "not a valid OpenEXR file (" + reason + ")");
+  }
+
+  int nextByte()
+  {
+    const int ch = std::fgetc(file_);
+    if (ch == EOF)
+    {
+      fail("header ends before its end marker");
+    }
+    ++offset_;
+    return ch;
+  }
+
+  // A null-terminated name of at most maxName_ characters; empty marks the end of a header.
+  std::string readName(const char* what)
+  {
+    std::string name;
+    for (int ch = nextByte(); ch != 0; ch = nextByte())
+    {
+      if (int(name.size()) >= maxName_)
+      {
+        fail(std::string(what) + " longer than " + std::to_string(maxName_) + " characters");
+      }
+      name.push_back(char(ch));
+    }
+    return name;
+  }
+
+  std::int32_t readInt()
+  {
+    std::uint32_t v = 0;
+    for (int i = 0; i < 4; ++i)
+    {
+      v |= std::uint32_t(nextByte()) << (8 * i);
+    }
+    std::int32_t out;
+    std::memcpy(&out, &v, 4);
+    return out;
+  }
+
+  // Walks one header; returns true when it is the empty header that ends a multi-part list.
+  bool walkHeader(bool mayBeEmpty)
+  {
+    long long xMin = 0, yMin = 0, xMax = -1, yMax = -1;
+    bool window = false;
+    long long tileX = 0, tileY = 0;
+    for (bool first = true;; first = false)
+    {
+      const std::string name = readName("attribute name");
+      if (name.empty())
+      {
+        if (first && mayBeEmpty)
+        {
+          return true;
+        }
+        break;
+      }
+      const std::string type = readName("attribute type");
+      const std::int32_t bytes = readInt();
+      if (bytes < 0 || bytes > size_ - offset_)
+      {
+        fail("attribute '" + name + "' claims " + std::to_string(bytes) + " bytes, the file has " +
+             std::to_string(size_ - offset_) + " left");
+      }
+      if (name == "dataWindow" && type == "box2i" && bytes == 16)
+      {
+        xMin = readInt();
+        yMin = readInt();
+        xMax = readInt();
+        yMax = readInt();
+        window = true;
+      }
+      else if (name == "tiles" && type == "tiledesc" && bytes == 9)
+      {
+        tileX = std::uint32_t(readInt());
+        tileY = std::uint32_t(readInt());
+        nextByte();
+      }
+      else
+      {
+        if (std::fseek(file_, bytes, SEEK_CUR) != 0)
+        {
+          fail("cannot seek past attribute '" + name + "'");
+        }
+        offset_ += bytes;
+      }
+    }
+    if (window)
+    {
+      const long long w = xMax - xMin + 1;
+      const long long h = yMax - yMin + 1;
+      if (w < 1 || h < 1 || w > kMaxSide || h > kMaxSide)
+      {
+        fail("data window " + std::to_string(w) + "x" + std::to_string(h) + ", allowed 1 to " +
+             std::to_string(kMaxSide) + " per side");
+      }
+      if (tileX > 0 && tileY > 0)
+      {
+        const long long tiles = ((w + tileX - 1) / tileX) * ((h + tileY - 1) / tileY);
+        constexpr long long kMaxTiles = 1LL << 22;
+        if (tiles > kMaxTiles)
+        {
+          fail(std::to_string(tiles) + " tiles of " + std::to_string(tileX) + "x" +
+               std::to_string(tileY) + ", more than " + std::to_string(kMaxTiles));
+        }
+      }
+    }
+    return false;
+  }
+
+  const std::string& path_;
+  std::FILE* file_;
+  long long size_;
+  long long offset_ = 0;
+  int maxName_ = 31;
+};
+
+void checkExrHeader(const std::string& path)
+{
+  std::FILE* file = std::fopen(path.c_str(), "rb");
+  if (!file)
+  {
+    throw errorAbout(path, std::string("cannot open (") + std::strerror(errno) + ")");
+  }
+  struct Closer
+  {
+    std::FILE* f;
+    ~Closer() { std::fclose(f); }
+  } closer{file};
+  std::error_code ec;
+  const auto size = fs::file_size(path, ec);
+  if (ec)
+  {
+    throw errorAbout(path, "cannot read its size (" + ec.message() + ")");
+  }
+  ExrHeaderWalk(path, file, static_cast<long long>(size)).check();
+}
+
 void checkSpec(const std::string& path, const OIIO::ImageSpec& spec)
 {
   if (spec.width <= 0 || spec.height <= 0)
@@ -341,6 +529,7 @@ Image readImage(const std::string& path, ImageInfo* info)
     throw errorAbout("image path", "empty");
   }
   checkReadableFile(path);
+  checkExrHeader(path);
 
   // Keep colour values as stored when there is an alpha channel: a fourth channel of a data map
   // (normals, quaternions) is not coverage, and premultiplying would corrupt it.
