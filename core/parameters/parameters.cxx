@@ -83,6 +83,12 @@ ParameterSpec affecting(Affects roles, ParameterSpec s)
   return s;
 }
 
+ParameterSpec ofMaterial(ParameterSpec s)
+{
+  s.scope = ParameterScope::Material;
+  return s;
+}
+
 // The spelling of each value of an enum-backed choice: the only place these words are written.
 template <typename E>
 struct Spelling
@@ -159,19 +165,19 @@ std::vector<ParameterSpec> declare()
   // The default material is brushed aluminium: sharp across the brushing (n_u, along t) and
   // broad along it (n_v), so highlights stretch along b as on a brushed plate.
   return {
-      affecting(A::Uniforms | A::Luts | A::LitModels,
+      ofMaterial(affecting(A::Uniforms | A::Luts | A::LitModels,
                 number("nu", "n_u", T::Real, 1000.0, 0.0, kMaxExponent, 1.0, S::Logarithmic, {},
-                       "Ashikhmin-Shirley exponent along the tangent t; higher is sharper")),
-      affecting(A::Uniforms | A::Luts | A::LitModels,
+                       "Ashikhmin-Shirley exponent along the tangent t; higher is sharper"))),
+      ofMaterial(affecting(A::Uniforms | A::Luts | A::LitModels,
                 number("nv", "n_v", T::Real, 50.0, 0.0, kMaxExponent, 1.0, S::Logarithmic, {},
-                       "Ashikhmin-Shirley exponent along the bitangent b; higher is sharper")),
-      affecting(A::Uniforms | A::LitModels | A::SurfaceModels,
+                       "Ashikhmin-Shirley exponent along the bitangent b; higher is sharper"))),
+      ofMaterial(affecting(A::Uniforms | A::LitModels | A::SurfaceModels,
                 color("f0", "F0", {0.913, 0.922, 0.924}, 0.001,
                       "Fresnel reflectance at normal incidence, linear RGB; the default is "
-                      "aluminium")),
-      affecting(A::Uniforms | A::LitModels | A::SurfaceModels,
+                      "aluminium"))),
+      ofMaterial(affecting(A::Uniforms | A::LitModels | A::SurfaceModels,
                 color("albedo", "Albedo", {0.0, 0.0, 0.0}, 0.01,
-                      "diffuse Lambert albedo, linear RGB; metals have none")),
+                      "diffuse Lambert albedo, linear RGB; metals have none"))),
       affecting(A::Uniforms, number("samples", "Samples", T::Integer, 16.0, 1.0, 1024.0, 1.0,
                                     S::Logarithmic, {}, "importance samples per pixel and frame")),
       affecting(A::Luts, number("lut-size", "LUT size", T::Integer, 64.0, kMinLutSize, kMaxLutSize,
@@ -226,21 +232,21 @@ std::vector<ParameterSpec> declare()
       number("error-target", "Error target", T::Real, 0.01, 1e-4, 1.0, 1e-4, S::Logarithmic, {},
              "relative L2 error a still view refines to with quality-mode error (0.01 = 1%); "
              "also 'aniso render --quality'"),
-      affecting(A::Variant | A::FrameCost,
+      ofMaterial(affecting(A::Variant | A::FrameCost,
                 choice("bump", "Bump mapping",
                        {BumpMapping::None, BumpMapping::Normal, BumpMapping::Quaternion},
                        BumpMapping::None,
                        "how the maps perturb the shading frame: not at all, by the normal map, or "
-                       "by the quaternion map (baked from the normal map when none is given)")),
-      affecting(A::Uniforms,
+                       "by the quaternion map (baked from the normal map when none is given)"))),
+      ofMaterial(affecting(A::Uniforms,
                 number("height-scale", "Height scale", T::Real, 0.02, 0.0, 0.5, 0.001, S::Linear,
                        "uv",
                        "relief depth of parallax occlusion mapping, in texture-coordinate "
-                       "units")),
-      affecting(A::FrameCost | A::LitModels | A::SurfaceModels,
+                       "units"))),
+      ofMaterial(affecting(A::FrameCost | A::LitModels | A::SurfaceModels,
                 text("tangents", "Tangents", "auto",
                      "tangent field: auto (the mesh's, else from UVs, else axis:1,0,0), uv, "
-                     "axis:X,Y,Z, around:X,Y,Z or radial:X,Y,Z")),
+                     "axis:X,Y,Z, around:X,Y,Z or radial:X,Y,Z"))),
       affecting(
           A::Display,
           choice("background", "Background",

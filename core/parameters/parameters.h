@@ -47,6 +47,15 @@ constexpr Affects operator|(Affects a, Affects b)
   return static_cast<Affects>(static_cast<unsigned>(a) | static_cast<unsigned>(b));
 }
 
+// Whose value a parameter is: the scene's (one value for the whole scene: environment, quality,
+// display) or a material's (each part of a scene references a material of the library, which
+// holds its own value: core/parameters/material_library.h).
+enum class ParameterScope
+{
+  Scene,
+  Material
+};
+
 struct ParameterSpec
 {
   std::string_view name;  // option "--NAME", session key, identifier in code
@@ -65,6 +74,7 @@ struct ParameterSpec
   // the first being the usual choice; empty = free text.
   std::vector<std::string_view> choices;
   Affects roles = Affects::None; // what a change of the value affects
+  ParameterScope scope = ParameterScope::Scene;
 
   int components() const { return type == ParameterType::Color ? 3 : 1; }
   // Whether a change affects any of WHAT.
