@@ -10,13 +10,42 @@ namespace aniso
 {
 namespace
 {
-// Applies a set of values; undo restores the values it replaced.
+// The values of VALUES that are scene-scope (material keys live in the library).
+SceneModel::Values sceneScope(const SceneModel::Values& values)
+{
+  SceneModel::Values kept;
+  for (const auto& [key, value] : values)
+  {
+    if (!isMaterialKey(key))
+    {
+      kept.emplace(key, value);
+    }
+  }
+  return kept;
+}
+
+bool touchesMaterials(const SceneModel::Values& values)
+{
+  for (const auto& [key, value] : values)
+  {
+    if (isMaterialKey(key))
+    {
+      return true;
+    }
+  }
+  return false;
+}
+
+// Applies a set of values; undo restores the values it replaced. Material keys were set in the
+// edited parts' materials: undo and redo restore the library as it was before and after, so they
+// reach the same materials whatever is selected by then.
 class ChangeValuesCommand : public QUndoCommand
 {
 public:
   ChangeValuesCommand(SceneEditor* editor, SceneModel::Values before, SceneModel::Values after,
                       int dragId)
-      : editor_(editor), before_(std::move(before)), after_(std::move(after)), dragId_(dragId)
+      : editor_(editor), before_(std::move(before)), after_(std::move(after)), dragId_(dragId),
+        materials_(touchesMaterials(after_))
   {
     QString names;
     for (const auto& [key, value] : after_)
@@ -25,10 +54,26 @@ public:
                QString::fromStdString(std::string(sceneKey(key).spec.label));
     }
     setText(QObject::tr("Change %1").arg(names));
+    if (materials_)
+    {
+      libraryBefore_ = editor_->model()->materials();
+    }
   }
 
-  void undo() override { apply(before_); }
-  void redo() override { apply(after_); }
+  void undo() override { apply(before_, libraryBefore_); }
+  void redo() override
+  {
+    if (materials_ && !haveAfter_)
+    {
+      // The first redo sets the values as an edit (into the edited materials) and remembers the
+      // library that made.
+      apply(after_, MaterialLibrary{});
+      libraryAfter_ = editor_->model()->materials();
+      haveAfter_ = true;
+      return;
+    }
+    apply(after_, libraryAfter_);
+  }
   int id() const override { return dragId_ == 0 ? -1 : 1; }
 
   bool mergeWith(const QUndoCommand* other) override
@@ -46,17 +91,27 @@ public:
       }
     }
     after_ = next->after_;
+    libraryAfter_ = next->libraryAfter_;
     // A drag that ends where it started changes nothing: the stack drops the command.
-    setObsolete(after_ == before_);
+    setObsolete(after_ == before_ && libraryAfter_ == libraryBefore_);
     return true;
   }
 
 private:
-  void apply(const SceneModel::Values& values)
+  void apply(const SceneModel::Values& values, const MaterialLibrary& library)
   {
     try
     {
-      editor_->model()->setValues(values);
+      SceneModel* model = editor_->model();
+      if (materials_ && !library.empty())
+      {
+        model->setParts(model->parts(), library);
+        model->setValues(sceneScope(values));
+      }
+      else
+      {
+        model->setValues(values);
+      }
     }
     catch (const Error& e)
     {
@@ -68,30 +123,85 @@ private:
   SceneModel::Values before_;
   SceneModel::Values after_;
   int dragId_;
+  bool materials_;
+  bool haveAfter_ = false;
+  MaterialLibrary libraryBefore_;
+  MaterialLibrary libraryAfter_;
+};
+
+// Replaces the parts and the library; undo restores them.
+class ChangePartsCommand : public QUndoCommand
+{
+public:
+  ChangePartsCommand(SceneEditor* editor, std::vector<ScenePart> parts, MaterialLibrary library,
+                     const QString& text)
+      : editor_(editor), partsBefore_(editor->model()->parts()),
+        libraryBefore_(editor->model()->materials()), partsAfter_(std::move(parts)),
+        libraryAfter_(std::move(library))
+  {
+    setText(text);
+  }
+
+  void undo() override { apply(partsBefore_, libraryBefore_); }
+  void redo() override { apply(partsAfter_, libraryAfter_); }
+
+private:
+  void apply(const std::vector<ScenePart>& parts, const MaterialLibrary& library)
+  {
+    try
+    {
+      editor_->model()->setParts(parts, library);
+    }
+    catch (const Error& e)
+    {
+      emit editor_->errorOccurred(QString::fromStdString(e.what()));
+    }
+  }
+
+  SceneEditor* editor_;
+  std::vector<ScenePart> partsBefore_;
+  MaterialLibrary libraryBefore_;
+  std::vector<ScenePart> partsAfter_;
+  MaterialLibrary libraryAfter_;
 };
 
 class ReplaceSceneCommand : public QUndoCommand
 {
 public:
   ReplaceSceneCommand(SceneEditor* editor, SceneModel::Values values, CameraState camera,
-                      const QString& text)
+                      std::vector<ScenePart> parts, MaterialLibrary library, const QString& text)
       : editor_(editor), beforeValues_(editor->model()->values()),
-        beforeCamera_(editor->model()->camera()), afterValues_(std::move(values)),
-        afterCamera_(camera)
+        beforeCamera_(editor->model()->camera()), beforeParts_(editor->model()->parts()),
+        beforeLibrary_(editor->model()->materials()), afterValues_(std::move(values)),
+        afterCamera_(camera), afterParts_(std::move(parts)), afterLibrary_(std::move(library))
   {
     setText(text);
   }
 
-  void undo() override { apply(beforeValues_, beforeCamera_); }
-  void redo() override { apply(afterValues_, afterCamera_); }
+  void undo() override { apply(beforeValues_, beforeCamera_, beforeParts_, beforeLibrary_); }
+  void redo() override { apply(afterValues_, afterCamera_, afterParts_, afterLibrary_); }
 
 private:
-  void apply(const SceneModel::Values& values, const CameraState& camera)
+  void apply(const SceneModel::Values& values, const CameraState& camera,
+             const std::vector<ScenePart>& parts, const MaterialLibrary& library)
   {
     try
     {
       SceneModel* model = editor_->model();
-      model->setValues(values);
+      if (parts.empty())
+      {
+        model->setValues(values); // a scene of one part (the mesh key's)
+      }
+      else
+      {
+        // The mesh key first (it makes the scene one part), then the parts and their library,
+        // then the scene-scope values (material keys follow the library).
+        SceneModel::Values mesh;
+        mesh.emplace("mesh", values.at("mesh"));
+        model->setValues(mesh);
+        model->setParts(parts, library);
+        model->setValues(sceneScope(values));
+      }
       model->setCamera(camera);
     }
     catch (const Error& e)
@@ -103,8 +213,12 @@ private:
   SceneEditor* editor_;
   SceneModel::Values beforeValues_;
   CameraState beforeCamera_;
+  std::vector<ScenePart> beforeParts_;
+  MaterialLibrary beforeLibrary_;
   SceneModel::Values afterValues_;
   CameraState afterCamera_;
+  std::vector<ScenePart> afterParts_;
+  MaterialLibrary afterLibrary_;
 };
 } // namespace
 
@@ -150,6 +264,14 @@ int SceneEditor::beginDrag()
 void SceneEditor::replaceScene(const SceneModel::Values& values, const CameraState& camera,
                                const QString& text)
 {
+  auto [parts, library] = onePartScene(values, model_->materials());
+  replaceScene(values, camera, std::move(parts), std::move(library), text);
+}
+
+void SceneEditor::replaceScene(const SceneModel::Values& values, const CameraState& camera,
+                               std::vector<ScenePart> parts, MaterialLibrary library,
+                               const QString& text)
+{
   for (const auto& [key, value] : values)
   {
     if (!(value == model_->value(key)))
@@ -161,6 +283,95 @@ void SceneEditor::replaceScene(const SceneModel::Values& values, const CameraSta
   {
     checkCameraState(camera);
   }
-  stack_->push(new ReplaceSceneCommand(this, values, camera, text));
+  if (values.find("mesh") == values.end())
+  {
+    throw errorAbout("scene", "a scene needs its mesh key");
+  }
+  SceneModel probe; // the same checks setParts makes, on a model of no consequence
+  probe.setParts(parts, library);
+  stack_->push(new ReplaceSceneCommand(this, values, camera, std::move(parts), std::move(library),
+                                       text));
+}
+
+void SceneEditor::editParts(std::vector<ScenePart> parts, MaterialLibrary library,
+                            const QString& text)
+{
+  if (parts == model_->parts() && library == model_->materials())
+  {
+    return;
+  }
+  SceneModel probe;
+  probe.setParts(parts, library); // throws the same errors, changing nothing of ours
+  stack_->push(new ChangePartsCommand(this, std::move(parts), std::move(library), text));
+}
+
+void SceneEditor::makeUnique(const std::vector<int>& parts)
+{
+  std::vector<ScenePart> next = model_->parts();
+  MaterialLibrary library = model_->materials();
+  bool any = false;
+  for (int i : parts)
+  {
+    if (i < 0 || i >= int(next.size()))
+    {
+      continue;
+    }
+    ScenePart& part = next[std::size_t(i)];
+    int users = 0;
+    for (const ScenePart& p : next)
+    {
+      users += p.material == part.material ? 1 : 0;
+    }
+    if (users < 2)
+    {
+      continue; // already its own
+    }
+    Material copy = library.at(part.material);
+    copy.name = library.uniqueName(part.material + " (" + part.name + ")");
+    library.put(copy);
+    part.material = copy.name;
+    any = true;
+  }
+  if (any)
+  {
+    editParts(std::move(next), std::move(library), tr("Make material unique"));
+  }
+}
+
+void SceneEditor::assignMaterial(const std::vector<int>& parts, const std::string& material)
+{
+  std::vector<ScenePart> next = model_->parts();
+  MaterialLibrary library = model_->materials();
+  if (!library.contains(material))
+  {
+    const Material* builtin = builtinMaterials().find(material);
+    if (!builtin)
+    {
+      throw errorAbout(material, "no such material");
+    }
+    library.put(*builtin);
+  }
+  for (int i : parts)
+  {
+    if (i >= 0 && i < int(next.size()))
+    {
+      next[std::size_t(i)].material = material;
+    }
+  }
+  editParts(std::move(next), std::move(library),
+            tr("Assign %1").arg(QString::fromStdString(material)));
+}
+
+void SceneEditor::setPartsVisible(const std::vector<int>& parts, bool visible)
+{
+  std::vector<ScenePart> next = model_->parts();
+  for (int i : parts)
+  {
+    if (i >= 0 && i < int(next.size()))
+    {
+      next[std::size_t(i)].visible = visible;
+    }
+  }
+  editParts(std::move(next), model_->materials(), visible ? tr("Show parts") : tr("Hide parts"));
 }
 } // namespace aniso

@@ -5,7 +5,9 @@
 #include "scene/SceneModel.h"
 
 #include <QObject>
+#include <string>
 #include <string_view>
+#include <vector>
 
 class QUndoStack;
 
@@ -36,6 +38,23 @@ public:
   // Checked first: throws aniso::Error and leaves the scene and the stack as they were.
   void replaceScene(const SceneModel::Values& values, const CameraState& camera,
                     const QString& text);
+  // The first makes the scene one part of the mesh key with the material of VALUES' material
+  // keys (onePartScene); the second gives the parts and their library (a session of parts).
+  void replaceScene(const SceneModel::Values& values, const CameraState& camera,
+                    std::vector<ScenePart> parts, MaterialLibrary library, const QString& text);
+
+  // Replaces the parts and the library as one undoable step named TEXT (adding files, renaming,
+  // showing and hiding, assigning). Checked as SceneModel::setParts checks: throws aniso::Error
+  // "scene: reason" and pushes nothing. Nothing is pushed when nothing changes.
+  void editParts(std::vector<ScenePart> parts, MaterialLibrary library, const QString& text);
+  // Gives each of PARTS that shares its material with another part a copy of it of its own,
+  // named "MATERIAL (PART)" (made unique), one undoable step.
+  void makeUnique(const std::vector<int>& parts);
+  // Assigns library material MATERIAL (a built-in metal not in the scene's library is added to
+  // it) to PARTS, one undoable step. Throws aniso::Error "MATERIAL: no such material".
+  void assignMaterial(const std::vector<int>& parts, const std::string& material);
+  // Shows or hides PARTS, one undoable step.
+  void setPartsVisible(const std::vector<int>& parts, bool visible);
 
 signals:
   // An undo or redo that could not be applied (an asset that no longer loads); the scene keeps

@@ -3,6 +3,7 @@
 #include "core/error.h"
 #include "scene/SceneShading.h"
 
+#include <algorithm>
 #include <cmath>
 #include <utility>
 
@@ -85,11 +86,76 @@ ParameterValue defaultValue(const SceneKey& key)
   return defaultParameterValue(key.spec);
 }
 
+ScenePart partOfMeshImpl(const std::string& mesh, const std::string& material)
+{
+  ScenePart part;
+  part.mesh = mesh;
+  part.material = material;
+  std::string name = mesh;
+  if (name.rfind("builtin:", 0) == 0)
+  {
+    name = name.substr(8);
+  }
+  else
+  {
+    const auto slash = name.find_last_of('/');
+    if (slash != std::string::npos)
+    {
+      name = name.substr(slash + 1);
+    }
+    const auto dot = name.find_last_of('.');
+    if (dot != std::string::npos && dot > 0)
+    {
+      name = name.substr(0, dot);
+    }
+  }
+  part.name = name.empty() ? std::string("part") : name;
+  return part;
+}
+
 bool finite3(const std::array<double, 3>& v)
 {
   return std::isfinite(v[0]) && std::isfinite(v[1]) && std::isfinite(v[2]);
 }
 } // namespace
+
+ScenePart partOfMesh(const std::string& mesh, const std::string& material)
+{
+  return partOfMeshImpl(mesh, material);
+}
+
+std::pair<std::vector<ScenePart>, MaterialLibrary> onePartScene(const SceneModel::Values& values,
+                                                                MaterialLibrary library)
+{
+  Material material = defaultMaterial({});
+  for (std::string_view key : materialKeys())
+  {
+    const auto it = values.find(key);
+    if (it != values.end())
+    {
+      material.values[std::string(key)] = it->second;
+    }
+  }
+  std::string name;
+  for (const Material& m : library.materials())
+  {
+    if (m.values == material.values)
+    {
+      name = m.name;
+      break;
+    }
+  }
+  if (name.empty())
+  {
+    material.name = library.uniqueName("material");
+    name = material.name;
+    library.put(material);
+  }
+  const auto mesh = values.find("mesh");
+  const std::string meshText =
+      mesh != values.end() ? mesh->second.text : std::string(sceneKey("mesh").spec.defaultText);
+  return {{partOfMeshImpl(meshText, name)}, std::move(library)};
+}
 
 const std::vector<SceneKey>& sceneKeys()
 {
@@ -171,12 +237,15 @@ void checkCameraState(const CameraState& c)
   }
 }
 
-SceneModel::SceneModel(QObject* parent) : QObject(parent), validators_(sceneKeys().size())
+SceneModel::SceneModel(QObject* parent)
+    : QObject(parent), library_(builtinMaterials()), validators_(sceneKeys().size())
 {
   for (const SceneKey& key : sceneKeys())
   {
     values_.push_back(defaultValue(key));
   }
+  // Every default material value is the default material's (brushed aluminium).
+  parts_.push_back(partOfMeshImpl(text("mesh"), std::string(kDefaultMaterialName)));
 }
 
 SceneModel::~SceneModel() = default;
@@ -268,20 +337,230 @@ void SceneModel::setValues(const Values& values)
     }
   }
   std::vector<QString> changed;
+  QStringList changedMaterials;
+  const std::vector<std::string> edited = editedMaterials();
+  bool meshChanged = false;
   for (const auto& [key, v] : values)
   {
     ParameterValue& current = values_[indexOf(key)];
+    if (isMaterialKey(key))
+    {
+      // Every edited material takes the value, also those that already held another one.
+      for (const std::string& name : edited)
+      {
+        if (!(library_.at(name).value(key) == v))
+        {
+          library_.setValue(name, key, v);
+          if (!changedMaterials.contains(QString::fromStdString(name)))
+          {
+            changedMaterials.push_back(QString::fromStdString(name));
+          }
+        }
+      }
+    }
     if (!(current == v))
     {
       current = v;
       changed.push_back(QString::fromStdString(key));
+      meshChanged = meshChanged || key == "mesh";
     }
+  }
+  const bool hadSelection = !selection_.empty();
+  if (meshChanged)
+  {
+    // A new mesh is a scene of one part, with the material edits went to.
+    parts_ = {partOfMeshImpl(text("mesh"), edited.front())};
+    selection_.clear();
   }
   // Signals go out once every value is in place, so a listener sees a consistent scene.
   for (const QString& key : changed)
   {
     emit valueChanged(key);
   }
+  if (!changedMaterials.isEmpty())
+  {
+    emit materialsChanged(changedMaterials);
+  }
+  if (meshChanged)
+  {
+    emit partsChanged();
+    if (hadSelection)
+    {
+      emit selectionChanged();
+    }
+  }
+}
+
+std::vector<QString> SceneModel::projectMaterial()
+{
+  std::vector<QString> changed;
+  const Material& material = library_.at(editedMaterials().front());
+  for (std::string_view key : materialKeys())
+  {
+    ParameterValue& current = values_[indexOf(key)];
+    const ParameterValue& v = material.value(key);
+    if (!(current == v))
+    {
+      current = v;
+      changed.push_back(QString::fromUtf8(key.data(), int(key.size())));
+    }
+  }
+  return changed;
+}
+
+void SceneModel::setParts(std::vector<ScenePart> parts, MaterialLibrary library)
+{
+  if (parts.empty())
+  {
+    throw errorAbout("scene", "a scene needs at least one part");
+  }
+  for (std::size_t i = 0; i < parts.size(); ++i)
+  {
+    const ScenePart& p = parts[i];
+    if (p.name.empty())
+    {
+      throw errorAbout("scene", "part " + std::to_string(i + 1) + " has no name");
+    }
+    for (std::size_t j = 0; j < i; ++j)
+    {
+      if (parts[j].name == p.name)
+      {
+        throw errorAbout("scene", "two parts are named \"" + p.name + "\"");
+      }
+    }
+    if (p.mesh.empty())
+    {
+      throw errorAbout("scene", "part \"" + p.name + "\" has no mesh");
+    }
+    if (!library.contains(p.material))
+    {
+      throw errorAbout("scene", "part \"" + p.name + "\": material \"" + p.material +
+                                    "\" is not in the library");
+    }
+  }
+  QStringList changedMaterials;
+  for (const Material& m : library.materials())
+  {
+    const Material* before = library_.find(m.name);
+    if (!before || *before != m)
+    {
+      changedMaterials.push_back(QString::fromStdString(m.name));
+    }
+  }
+  for (const Material& m : library_.materials())
+  {
+    if (!library.contains(m.name))
+    {
+      changedMaterials.push_back(QString::fromStdString(m.name));
+    }
+  }
+  const bool partsDiffer = parts != parts_;
+  // The selection keeps the parts still there, by name.
+  std::vector<int> selection;
+  for (int i : selection_)
+  {
+    for (std::size_t j = 0; j < parts.size(); ++j)
+    {
+      if (parts[j].name == parts_[i].name)
+      {
+        selection.push_back(int(j));
+      }
+    }
+  }
+  const bool selectionDiffers = selection != selection_;
+  parts_ = std::move(parts);
+  library_ = std::move(library);
+  selection_ = std::move(selection);
+  const std::vector<QString> changed = projectMaterial();
+  for (const QString& key : changed)
+  {
+    emit valueChanged(key);
+  }
+  if (!changedMaterials.isEmpty())
+  {
+    emit materialsChanged(changedMaterials);
+  }
+  if (partsDiffer)
+  {
+    emit partsChanged();
+  }
+  if (selectionDiffers)
+  {
+    emit selectionChanged();
+  }
+}
+
+const Material& SceneModel::partMaterial(int part) const
+{
+  return library_.at(parts_.at(std::size_t(part)).material);
+}
+
+void SceneModel::setSelection(std::vector<int> parts)
+{
+  std::vector<int> kept;
+  for (int i : parts)
+  {
+    if (i >= 0 && i < int(parts_.size()) && std::find(kept.begin(), kept.end(), i) == kept.end())
+    {
+      kept.push_back(i);
+    }
+  }
+  if (kept == selection_)
+  {
+    return;
+  }
+  selection_ = std::move(kept);
+  const std::vector<QString> changed = projectMaterial();
+  emit selectionChanged();
+  for (const QString& key : changed)
+  {
+    emit valueChanged(key);
+  }
+}
+
+std::vector<int> SceneModel::editedParts() const
+{
+  if (!selection_.empty())
+  {
+    return selection_;
+  }
+  std::vector<int> all(parts_.size());
+  for (std::size_t i = 0; i < all.size(); ++i)
+  {
+    all[i] = int(i);
+  }
+  return all;
+}
+
+std::vector<std::string> SceneModel::editedMaterials() const
+{
+  std::vector<std::string> names;
+  for (int i : editedParts())
+  {
+    const std::string& name = parts_[std::size_t(i)].material;
+    if (std::find(names.begin(), names.end(), name) == names.end())
+    {
+      names.push_back(name);
+    }
+  }
+  return names;
+}
+
+bool SceneModel::mixed(std::string_view key) const
+{
+  if (!isMaterialKey(key))
+  {
+    return false;
+  }
+  const std::vector<std::string> names = editedMaterials();
+  for (const std::string& name : names)
+  {
+    if (!(library_.at(name).value(key) == library_.at(names.front()).value(key)))
+    {
+      return true;
+    }
+  }
+  return false;
 }
 
 SceneModel::Values SceneModel::values() const
@@ -308,9 +587,33 @@ void SceneModel::reset()
       changed.push_back(QString::fromStdString(std::string(keys[i].spec.name)));
     }
   }
+  std::vector<ScenePart> parts{partOfMeshImpl(text("mesh"), std::string(kDefaultMaterialName))};
+  const bool partsDiffer = parts != parts_;
+  const bool materialsDiffer = library_ != builtinMaterials();
+  const bool hadSelection = !selection_.empty();
+  parts_ = std::move(parts);
+  library_ = builtinMaterials();
+  selection_.clear();
   for (const QString& key : changed)
   {
     emit valueChanged(key);
+  }
+  if (materialsDiffer)
+  {
+    QStringList names;
+    for (const Material& m : library_.materials())
+    {
+      names.push_back(QString::fromStdString(m.name));
+    }
+    emit materialsChanged(names);
+  }
+  if (partsDiffer)
+  {
+    emit partsChanged();
+  }
+  if (hadSelection)
+  {
+    emit selectionChanged();
   }
   if (camera_ != CameraState{})
   {

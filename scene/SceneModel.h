@@ -3,15 +3,18 @@
 // asset paths (mesh and maps) and the camera, with one signal per change. Widgets edit the
 // scene only through this model (usually through a SceneEditor, which makes edits undoable);
 // the renderer listens to it. Qt-only: no VTK, no GL.
+#include "core/parameters/material_library.h"
 #include "core/parameters/parameters.h"
 
 #include <QObject>
 #include <QString>
+#include <QStringList>
 #include <array>
 #include <functional>
 #include <map>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 namespace aniso
@@ -59,9 +62,42 @@ struct CameraState
   bool operator!=(const CameraState& o) const { return !(*this == o); }
 };
 
+// A part of the scene: one surface (a mesh file, or one block of it) with a reference to a
+// material of the scene's library. Parts are grouped by the file they came from (GROUP, shown as
+// the parent of its parts in the scene dock).
+struct ScenePart
+{
+  std::string name;     // unique in the scene
+  std::string mesh;     // a mesh text: a file path or builtin:NAME
+  std::string block;    // the block of the file (loadMeshBlocks' name); empty: the whole file
+  std::string group;    // the file (or other source) the part belongs to; empty: none
+  std::string material; // a material of the scene's library
+  bool visible = true;
+
+  bool operator==(const ScenePart& o) const
+  {
+    return name == o.name && mesh == o.mesh && block == o.block && group == o.group &&
+           material == o.material && visible == o.visible;
+  }
+  bool operator!=(const ScenePart& o) const { return !(*this == o); }
+};
+
 // Throws aniso::Error "view: reason" unless every number is finite, the view angle is in
 // (0, 180), the parallel scale positive, and position, focal point and up make a frame.
 void checkCameraState(const CameraState& camera);
+
+// The scene model. Scene-scope keys (environment, quality, display, the mesh) have one value;
+// material keys (core/parameters/material_library.h: n_u, n_v, F0, ..., the maps) are the
+// values of the materials of the edited parts: the selected parts, or every part when none is
+// selected. value(KEY) of a material key is the first edited part's material's; setting it sets
+// it in the material of every edited part (so in every part that shares one of those materials).
+// The scene always has at least one part; setting the mesh key makes it one part of that mesh
+// (the material of the first edited part kept), as opening a file does.
+class SceneModel;
+
+// The one part of a scene of MESH (a mesh text) with MATERIAL: named by the file's stem or the
+// built-in's name, in no group.
+ScenePart partOfMesh(const std::string& mesh, const std::string& material);
 
 class SceneModel : public QObject
 {
@@ -100,6 +136,31 @@ public:
 
   void setValidator(std::string_view key, Validator validator);
 
+
+  // The parts, in order, and the library their materials come from.
+  const std::vector<ScenePart>& parts() const { return parts_; }
+  const MaterialLibrary& materials() const { return library_; }
+  // Sets the parts and the library together. Throws aniso::Error "scene: reason" and changes
+  // nothing unless there is a part, part names are unique and not empty, and every part's
+  // material is in LIBRARY. The selection keeps the parts that are still there (by name); the
+  // material keys' values follow the edited parts' first material. Emits partsChanged,
+  // materialsChanged (the names of the materials that changed or went) and valueChanged of the
+  // material keys whose value changed.
+  void setParts(std::vector<ScenePart> parts, MaterialLibrary library);
+  // The material of part I (a valid index).
+  const Material& partMaterial(int part) const;
+
+  // Selected parts, by index, in the order selected (not part of the scene: not saved, not
+  // undone). Out-of-range indices are dropped.
+  const std::vector<int>& selection() const { return selection_; }
+  void setSelection(std::vector<int> parts);
+  // The parts material edits go to: the selection, or every part when none is selected.
+  std::vector<int> editedParts() const;
+  // The distinct materials of the edited parts, in part order.
+  std::vector<std::string> editedMaterials() const;
+  // Whether the edited materials differ in material key KEY (a dock shows such a value as mixed).
+  bool mixed(std::string_view key) const;
+
   const CameraState& camera() const { return camera_; }
   // Throws aniso::Error "view: reason" (checkCameraState) and keeps the previous camera.
   void setCamera(const CameraState& camera);
@@ -107,10 +168,28 @@ public:
 signals:
   void valueChanged(const QString& key);
   void cameraChanged();
+  void partsChanged();
+  // Materials of the library whose values changed (or that were added or removed).
+  void materialsChanged(const QStringList& names);
+  void selectionChanged();
 
 private:
+  // The material keys' values from the first edited part's material; emits valueChanged for
+  // those that changed.
+  std::vector<QString> projectMaterial();
+
   std::vector<ParameterValue> values_; // parallel to sceneKeys()
+  std::vector<ScenePart> parts_;
+  MaterialLibrary library_;
+  std::vector<int> selection_;
   std::vector<Validator> validators_;
   CameraState camera_;
 };
+
+// The scene of one part that VALUES (every key, as a session of the single-material version
+// held them) make: the mesh key's part with a material of the values' material keys, which is
+// LIBRARY's material of those values when there is one, else a new one named "material" (made
+// unique) added to LIBRARY.
+std::pair<std::vector<ScenePart>, MaterialLibrary>
+onePartScene(const SceneModel::Values& values, MaterialLibrary library);
 } // namespace aniso

@@ -9,6 +9,7 @@
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QSaveFile>
+#include <tuple>
 
 namespace aniso
 {
@@ -178,6 +179,70 @@ CameraState viewFromJson(const QJsonObject& view, QJsonObject& unknown, QStringL
   }
   return c;
 }
+std::string readString(const QJsonObject& object, const char* key, const std::string& subject,
+                       bool required)
+{
+  const QJsonValue value = object[key];
+  if (value.isUndefined() && !required)
+  {
+    return {};
+  }
+  if (!value.isString())
+  {
+    throw errorAbout(subject + "/" + key, "expected a text");
+  }
+  return value.toString().toStdString();
+}
+
+// The "parts" and "materials" sections into CONTENT, checked as SceneModel::setParts checks.
+void readParts(const QJsonObject& json, const QString& base, SessionContent& content)
+{
+  if (!json["materials"].isObject())
+  {
+    throw errorAbout("materials", "expected an object");
+  }
+  QJsonObject libraryDocument;
+  libraryDocument["format"] = "aniso-materials";
+  libraryDocument["version"] = 1;
+  libraryDocument["materials"] = json["materials"];
+  content.library = materialLibraryFromJson(
+      QJsonDocument(libraryDocument).toJson().toStdString(), base.toStdString(), "materials");
+  if (!json["parts"].isArray())
+  {
+    throw errorAbout("parts", "expected an array");
+  }
+  const QJsonArray parts = json["parts"].toArray();
+  for (int i = 0; i < parts.size(); ++i)
+  {
+    const std::string subject = "parts/" + std::to_string(i + 1);
+    if (!parts[i].isObject())
+    {
+      throw errorAbout(subject, "expected an object");
+    }
+    const QJsonObject p = parts[i].toObject();
+    ScenePart part;
+    part.name = readString(p, "name", subject, true);
+    part.mesh = fromJson(sceneKey("mesh"), p["mesh"], base, subject + "/mesh").text;
+    part.block = readString(p, "block", subject, false);
+    part.group = readString(p, "group", subject, false);
+    part.material = readString(p, "material", subject, true);
+    if (!p["visible"].isUndefined() && !p["visible"].isBool())
+    {
+      throw errorAbout(subject + "/visible", "expected true or false");
+    }
+    part.visible = p["visible"].toBool(true);
+    content.parts.push_back(std::move(part));
+  }
+  SceneModel probe; // the checks of setParts, with messages naming the section
+  try
+  {
+    probe.setParts(content.parts, content.library);
+  }
+  catch (const Error& e)
+  {
+    throw errorAbout("parts", e.what());
+  }
+}
 } // namespace
 
 QJsonObject sessionToJson(const SceneModel& model, const QJsonObject& unknown,
@@ -198,6 +263,22 @@ QJsonObject sessionToJson(const SceneModel& model, const QJsonObject& unknown,
   {
     json["view"] = viewToJson(model.camera());
   }
+  QJsonArray parts;
+  for (const ScenePart& part : model.parts())
+  {
+    QJsonObject p;
+    p["name"] = QString::fromStdString(part.name);
+    p["mesh"] = toJson(sceneKey("mesh"), textValue(part.mesh), baseDirectory);
+    p["block"] = QString::fromStdString(part.block);
+    p["group"] = QString::fromStdString(part.group);
+    p["material"] = QString::fromStdString(part.material);
+    p["visible"] = part.visible;
+    parts.append(p);
+  }
+  json["parts"] = parts;
+  const QJsonDocument library = QJsonDocument::fromJson(
+      QByteArray::fromStdString(materialLibraryToJson(model.materials(), baseDirectory.toStdString())));
+  json["materials"] = library.object()["materials"];
   // Keys kept from a newer session go back where they were; known keys are never overridden.
   for (auto it = unknown.begin(); it != unknown.end(); ++it)
   {
@@ -286,9 +367,18 @@ SessionContent sessionFromJson(const QJsonObject& json, const QString& baseDirec
       }
       content.camera = viewFromJson(json["view"].toObject(), content.unknown, content.unknownKeys);
     }
+    if (json.contains("parts") || json.contains("materials"))
+    {
+      readParts(json, baseDirectory, content);
+    }
+    else
+    {
+      std::tie(content.parts, content.library) = onePartScene(content.values, builtinMaterials());
+    }
     for (auto it = json.begin(); it != json.end(); ++it)
     {
-      if (!QStringList{"format", "version", "parameters", "assets", "view"}.contains(it.key()))
+      if (!QStringList{"format", "version", "parameters", "assets", "view", "parts", "materials"}
+               .contains(it.key()))
       {
         content.unknown[it.key()] = it.value();
         content.unknownKeys << it.key();
@@ -338,7 +428,7 @@ QStringList SessionFile::open(SceneEditor& editor, const QString& path)
   SessionContent content = readSessionFile(path);
   try
   {
-    editor.replaceScene(content.values, content.camera,
+    editor.replaceScene(content.values, content.camera, content.parts, content.library,
                         QObject::tr("Open session %1").arg(QFileInfo(path).fileName()));
   }
   catch (const Error& e)

@@ -6,8 +6,16 @@
 //     "parameters": {"nu": 1000, "f0": [0.913, 0.922, 0.924], "method": "exact", ...},
 //     "assets": {"mesh": "part.stl", "normal-map": "", ...},
 //     "view": {"position": [x, y, z], "focal-point": [...], "view-up": [...],
-//              "view-angle": 30, "parallel": false, "parallel-scale": 1}
+//              "view-angle": 30, "parallel": false, "parallel-scale": 1},
+//     "parts": [{"name": "shaft", "mesh": "gearbox.obj", "block": "shaft",
+//                "group": "gearbox.obj", "material": "brushed steel", "visible": true}, ...],
+//     "materials": {"brushed steel": {"nu": 800, ...}, ...}
 //   }
+//
+// "materials" is the "materials" object of a material library file (material_library.h). The
+// material keys in "parameters" are those of the first edited part's material, so a reader of
+// version 1 sees that material; this version takes the library's. A version-1 session (no
+// "parts") opens as one part of its mesh with a material of its parameters.
 //
 // Numbers are written in the shortest form that reads back to the same double, so a session
 // round-trips exactly. Paths under the session's directory are written relative to it (the
@@ -22,11 +30,14 @@
 
 namespace aniso
 {
-constexpr int kSessionVersion = 1;
+// Version 2 adds the parts and the material library; a version-1 session opens as one part.
+constexpr int kSessionVersion = 2;
 
 struct SessionContent
 {
   SceneModel::Values values; // every key
+  std::vector<ScenePart> parts; // never empty (a version-1 session: onePartScene)
+  MaterialLibrary library;
   CameraState camera;
   QJsonObject unknown;     // what this version does not know, in the session's layout
   QStringList unknownKeys; // "parameters/foo", "future-section", for the report

@@ -367,6 +367,23 @@ bool MaterialLibrary::remove(std::string_view name)
   return true;
 }
 
+bool MaterialLibrary::operator==(const MaterialLibrary& o) const
+{
+  if (materials_.size() != o.materials_.size())
+  {
+    return false;
+  }
+  for (const Material& m : materials_)
+  {
+    const Material* other = o.find(m.name);
+    if (!other || *other != m)
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
 std::string MaterialLibrary::uniqueName(std::string_view base) const
 {
   const std::string stem = base.empty() ? std::string("material") : std::string(base);

@@ -85,7 +85,8 @@ public:
   // BASE when no material has that name, else "BASE 2", "BASE 3", ...
   std::string uniqueName(std::string_view base) const;
 
-  bool operator==(const MaterialLibrary& o) const { return materials_ == o.materials_; }
+  // The same materials, in whatever order (a session's JSON object keeps them by name).
+  bool operator==(const MaterialLibrary& o) const;
   bool operator!=(const MaterialLibrary& o) const { return !(*this == o); }
 
 private:
