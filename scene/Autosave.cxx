@@ -63,6 +63,8 @@ Autosave::Autosave(const SceneModel* model, const SessionFile* session, const QS
   connect(timer_, &QTimer::timeout, this, [this] { saveNow(); });
   connect(model_, &SceneModel::valueChanged, timer_, qOverload<>(&QTimer::start));
   connect(model_, &SceneModel::cameraChanged, timer_, qOverload<>(&QTimer::start));
+  connect(model_, &SceneModel::partsChanged, timer_, qOverload<>(&QTimer::start));
+  connect(model_, &SceneModel::materialsChanged, timer_, qOverload<>(&QTimer::start));
 }
 
 Autosave::~Autosave()

@@ -495,6 +495,20 @@ const Material& SceneModel::partMaterial(int part) const
   return library_.at(parts_.at(std::size_t(part)).material);
 }
 
+ParameterSet SceneModel::partParameters(int part) const
+{
+  ParameterSet set = parameters();
+  const Material& material = partMaterial(part);
+  for (const ParameterSpec& spec : parameterSpecs())
+  {
+    if (spec.scope == ParameterScope::Material)
+    {
+      set.setValue(spec.name, material.value(spec.name));
+    }
+  }
+  return set;
+}
+
 void SceneModel::setSelection(std::vector<int> parts)
 {
   std::vector<int> kept;

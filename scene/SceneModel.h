@@ -149,6 +149,8 @@ public:
   void setParts(std::vector<ScenePart> parts, MaterialLibrary library);
   // The material of part I (a valid index).
   const Material& partMaterial(int part) const;
+  // The declared parameters as part I draws them: the scene's, with its material's over them.
+  ParameterSet partParameters(int part) const;
 
   // Selected parts, by index, in the order selected (not part of the scene: not saved, not
   // undone). Out-of-range indices are dropped.

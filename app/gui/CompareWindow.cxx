@@ -130,12 +130,11 @@ void CompareWindow::refresh()
 {
   // The view's own actor (the first one) carries the drawing frame whatever model the view
   // shows; the mesh is the surface itself (the view's mapper draws a stand-in while moving).
-  vtkActor* sceneActor = firstActorOf(view_->renderer());
   vtkPolyData* mesh = view_->drawnSurface();
   for (auto& pane : panes_)
   {
     pane->mapper->SetInputData(mesh);
-    setDrawingFrame(pane->actor, drawingFrame(sceneActor)); // the scene's mesh, point lights
+    setDrawingFrame(pane->actor, view_->drawingFrame()); // the scene's parts, point lights
   }
   camera_->DeepCopy(view_->renderer()->GetActiveCamera());
   for (auto& pane : panes_)

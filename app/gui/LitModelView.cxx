@@ -78,11 +78,6 @@ void litSceneOf(const SceneModel& model, LitModelSettings& settings)
 LitModelView::LitModelView(SceneModel* model, SceneView* view, QObject* parent)
     : QObject(parent), model_(model), view_(view), renderer_(view->renderer())
 {
-  sceneActor_ = firstActorOf(renderer_);
-  if (!sceneActor_)
-  {
-    throw errorAbout("view", "no actor to draw the lit model in place of");
-  }
   mapper_->ScalarVisibilityOff();
   actor_->SetMapper(mapper_);
   actor_->VisibilityOff();
@@ -117,7 +112,7 @@ LitModelView::~LitModelView()
     material_->detach();
   }
   renderer_->RemoveActor(actor_);
-  sceneActor_->VisibilityOn();
+  view_->setPartsShown(true);
 }
 
 bool LitModelView::active() const
@@ -145,7 +140,7 @@ void LitModelView::update()
       {
         mapper_->SetInputData(mesh);
       }
-      setDrawingFrame(actor_, drawingFrame(sceneActor_)); // the scene's mesh, its point lights
+      setDrawingFrame(actor_, view_->drawingFrame()); // the scene's parts, its point lights
       if (!material_)
       {
         material_ = std::make_unique<LitModelMaterial>(settings);
@@ -164,7 +159,7 @@ void LitModelView::update()
     return;
   }
   actor_->SetVisibility(lit);
-  sceneActor_->SetVisibility(!lit);
+  view_->setPartsShown(!lit);
   view_->requestRender();
 }
 } // namespace aniso

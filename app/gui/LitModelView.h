@@ -2,7 +2,7 @@
 // Draws the scene with the lit model the scene chooses ("model" key, SceneShading.h) instead of
 // the environment material: a second actor in the view's renderer, drawing the same mesh with a
 // LitModelMaterial under the scene's lights and sample material, shown in place of the view's
-// own actor while the model is a lit one (as `aniso render --model` does offscreen). The view's
+// parts' actors while the model is a lit one (as `aniso render --model` does offscreen). The view's
 // actor keeps its environment material, so going back to as-env costs nothing.
 #include "core/lights/light.h"
 #include "core/models/models.h"
@@ -38,7 +38,7 @@ class LitModelView : public QObject
   Q_OBJECT
 
 public:
-  // VIEW must outlive this object; its renderer's first actor is the one it replaces.
+  // VIEW must outlive this object; its parts' actors are the ones it replaces.
   LitModelView(SceneModel* model, SceneView* view, QObject* parent = nullptr);
   ~LitModelView() override;
 
@@ -55,7 +55,6 @@ private:
   SceneModel* model_;
   SceneView* view_;
   vtkRenderer* renderer_;
-  vtkActor* sceneActor_;
   vtkNew<vtkActor> actor_;
   vtkNew<vtkOpenGLPolyDataMapper> mapper_;
   std::unique_ptr<LitModelMaterial> material_;

@@ -18,6 +18,7 @@
 #include "widgets/LutView.h"
 #include "widgets/MapsDock.h"
 #include "widgets/MaterialDock.h"
+#include "widgets/SceneDock.h"
 
 #include <QAction>
 #include <QApplication>
@@ -61,6 +62,7 @@ namespace
 constexpr int kMaxRecent = 8;
 // The kinds of background loads besides the edits of a key (named by the key): no key's names.
 const char* const kMeshLoad = "open mesh";
+const char* const kAddLoad = "add mesh";
 const char* const kEnvironmentLoad = "open environment";
 const char* const kSessionLoad = "open session";
 
@@ -124,6 +126,10 @@ MainWindow::MainWindow(QWidget* parent)
   addDockWidget(Qt::RightDockWidgetArea, environmentDock_);
   addDockWidget(Qt::RightDockWidgetArea, lutDock_);
   lightsDock_ = new LightsDock(&editor_, this);
+  sceneDock_ = new SceneDock(&editor_, this);
+  addDockWidget(Qt::RightDockWidgetArea, sceneDock_);
+  sceneDock_->setTriangleCounts([this](int part) { return view_->partTriangles(part); });
+  connect(view_, &SceneView::partsDrawn, sceneDock_, &SceneDock::refreshCounts);
   // Lights sit in a short strip under the view (not in a tab), so every dock is visible at once;
   // the side columns keep the bottom corners.
   setCorner(Qt::BottomLeftCorner, Qt::LeftDockWidgetArea);
@@ -146,6 +152,7 @@ MainWindow::MainWindow(QWidget* parent)
   environmentDock_->setOpener([this](const QString& spec)
                               { openEnvironmentInBackground(spec, false); });
   connect(lightsDock_, &LightsDock::errorOccurred, this, toStatus);
+  connect(sceneDock_, &SceneDock::errorOccurred, this, toStatus);
   connect(litView_, &LitModelView::errorOccurred, this, toStatus);
   connect(surfaceView_, &SurfaceModelView::errorOccurred, this, toStatus);
   connect(&editor_, &SceneEditor::errorOccurred, this, toStatus);
@@ -220,6 +227,19 @@ void MainWindow::createMenus()
         }
       },
       QKeySequence::Open);
+  file->addAction(
+      tr("&Add Mesh…"), this,
+      [this]
+      {
+        const QStringList paths = QFileDialog::getOpenFileNames(
+            this, tr("Add meshes to the scene"), QString(),
+            tr("Meshes (%1);;All files (*)").arg(QString::fromStdString(meshFilePatterns())));
+        if (!paths.isEmpty())
+        {
+          addMeshesInBackground(paths);
+        }
+      },
+      QKeySequence(tr("Ctrl+Shift+O")));
   file->addAction(tr("Open &Environment…"), environmentDock_, &EnvironmentDock::openFile);
   file->addAction(tr("Open &Session…"), this,
                   [this]
@@ -326,15 +346,191 @@ bool MainWindow::attempt(const std::function<void()>& action)
   }
 }
 
+std::vector<ScenePart> MainWindow::partsOfFile(const QString& path, const std::string& material,
+                                               std::vector<ScenePart>& taken,
+                                               QStringList& warnings)
+{
+  const std::string mesh = path.toStdString();
+  std::vector<std::string> skipped;
+  const std::vector<std::string> blocks = assets_.blockNames(mesh, &skipped);
+  for (const std::string& w : skipped)
+  {
+    warnings << QString::fromStdString(w);
+  }
+  std::vector<ScenePart> parts;
+  for (const std::string& block : blocks)
+  {
+    ScenePart part = partOfMesh(mesh, material);
+    part.block = blocks.size() > 1 ? block : std::string();
+    part.group = blocks.size() > 1 ? QFileInfo(path).fileName().toStdString() : std::string();
+    std::string name = blocks.size() > 1 ? block : part.name;
+    // Unique in the scene: "shaft", "shaft 2", ...
+    const auto used = [&](const std::string& n)
+    {
+      return std::any_of(taken.begin(), taken.end(),
+                         [&](const ScenePart& p) { return p.name == n; });
+    };
+    std::string unique = name;
+    for (int i = 2; used(unique); ++i)
+    {
+      unique = name + " " + std::to_string(i);
+    }
+    part.name = unique;
+    taken.push_back(part);
+    parts.push_back(part);
+  }
+  return parts;
+}
+
 bool MainWindow::openMesh(const QString& path)
 {
   return attempt(
       [&]
       {
-        editor_.edit("mesh", textValue(path.toStdString()));
+        // Everything that can fail first (the file loads, its blocks), so a failure leaves no
+        // step on the undo stack.
+        const ParameterValue mesh = textValue(path.toStdString());
+        if (!(mesh == model_.value("mesh")))
+        {
+          model_.check("mesh", mesh);
+        }
+        QStringList warnings;
+        std::vector<ScenePart> taken;
+        // The new part keeps the material edits go to (as setting the mesh key does).
+        const std::string material = model_.editedMaterials().front();
+        const std::vector<ScenePart> parts = partsOfFile(path, material, taken, warnings);
+        const bool same = mesh == model_.value("mesh") &&
+                          (parts.size() > 1 ? parts == model_.parts() : model_.parts().size() == 1);
+        if (!same)
+        {
+          // One step: the mesh key (the scene one part of it), then the file's blocks as parts.
+          editor_.undoStack()->beginMacro(tr("Open %1").arg(QFileInfo(path).fileName()));
+          editor_.edit("mesh", mesh);
+          if (parts.size() > 1)
+          {
+            editor_.editParts(parts, model_.materials(), tr("Parts of %1").arg(path));
+          }
+          editor_.undoStack()->endMacro();
+        }
+        for (const QString& w : warnings)
+        {
+          reportError(w, false);
+        }
         view_->resetCamera();
         addRecent(path);
       });
+}
+
+bool MainWindow::addMeshes(const QStringList& paths)
+{
+  std::vector<ScenePart> parts = model_.parts();
+  MaterialLibrary library = model_.materials();
+  std::string material(kDefaultMaterialName);
+  if (!library.contains(material))
+  {
+    library.put(*builtinMaterials().find(material));
+  }
+  QStringList warnings;
+  bool added = false;
+  for (const QString& path : paths)
+  {
+    try
+    {
+      std::vector<ScenePart> taken = parts;
+      const std::vector<ScenePart> more = partsOfFile(path, material, taken, warnings);
+      parts.insert(parts.end(), more.begin(), more.end());
+      added = true;
+    }
+    catch (const Error& e)
+    {
+      reportError(QString::fromStdString(e.what()), true);
+    }
+  }
+  for (const QString& w : warnings)
+  {
+    reportError(w, false);
+  }
+  if (!added)
+  {
+    return false;
+  }
+  return attempt(
+      [&]
+      {
+        editor_.editParts(parts, library,
+                          paths.size() == 1 ? tr("Add %1").arg(QFileInfo(paths.front()).fileName())
+                                            : tr("Add %1 meshes").arg(paths.size()));
+        for (const QString& path : paths)
+        {
+          addRecent(path);
+        }
+      });
+}
+
+namespace
+{
+// Reads the blocks of each file and prepares them with TANGENTS, each file on its own: one that
+// fails does not keep the others from being read (the failures are reported as they are added).
+void prefetchMeshes(SceneAssets& staged, const std::vector<std::string>& files,
+                    const std::string& tangents)
+{
+  for (const std::string& file : files)
+  {
+    try
+    {
+      const std::vector<std::string> blocks = staged.blockNames(file, nullptr);
+      for (const std::string& block : blocks)
+      {
+        staged.surface(file, blocks.size() > 1 ? block : std::string(), tangents);
+      }
+    }
+    catch (const Error&)
+    {
+    }
+  }
+}
+} // namespace
+
+void MainWindow::openMeshesInBackground(const QStringList& paths)
+{
+  if (paths.isEmpty())
+  {
+    return;
+  }
+  std::vector<std::string> files;
+  for (const QString& p : paths)
+  {
+    files.push_back(p.toStdString());
+  }
+  const std::string tangents = model_.text("tangents");
+  loader_->load(
+      kMeshLoad, paths.front(),
+      [files, tangents](SceneAssets& staged)
+      {
+        staged.surface(files.front(), tangents); // the first opens: its failure is the load's
+        prefetchMeshes(staged, files, tangents);
+      },
+      [this, paths]
+      {
+        if (openMesh(paths.front()) && paths.size() > 1)
+        {
+          addMeshes(paths.mid(1));
+        }
+      });
+}
+
+void MainWindow::addMeshesInBackground(const QStringList& paths)
+{
+  std::vector<std::string> files;
+  for (const QString& p : paths)
+  {
+    files.push_back(p.toStdString());
+  }
+  const std::string tangents = builtinMaterials().at(kDefaultMaterialName).value("tangents").text;
+  loader_->load(
+      kAddLoad, paths.size() == 1 ? paths.front() : tr("%1 meshes").arg(paths.size()),
+      [files, tangents](SceneAssets& staged) { prefetchMeshes(staged, files, tangents); },
+      [this, paths] { addMeshes(paths); }, true);
 }
 
 bool MainWindow::meshLoading() const
@@ -362,7 +558,20 @@ void MainWindow::openMeshInBackground(const QString& path)
   const std::string mesh = path.toStdString();
   const std::string tangents = model_.text("tangents");
   loader_->load(
-      kMeshLoad, path, [mesh, tangents](SceneAssets& staged) { staged.surface(mesh, tangents); },
+      kMeshLoad, path,
+      [mesh, tangents](SceneAssets& staged)
+      {
+        staged.surface(mesh, tangents);
+        // Its blocks too, when it has several (they become its parts).
+        const std::vector<std::string> blocks = staged.blockNames(mesh, nullptr);
+        for (const std::string& block : blocks)
+        {
+          if (blocks.size() > 1)
+          {
+            staged.surface(mesh, block, tangents);
+          }
+        }
+      },
       // In the assets now: opening it (the model's validation, the view) reads nothing again,
       // unless the tangents changed meanwhile.
       [this, path] { openMesh(path); });
@@ -432,9 +641,20 @@ void MainWindow::openSessionInBackground(const QString& path)
         };
         ahead([&] { staged.surface(text("mesh"), text("tangents")); });
         ahead([&] { staged.environment(text("env")); });
-        for (const char* key : SceneAssets::kMapKeys)
+        // Every part's surface with its material's tangents, and its material's maps.
+        for (const ScenePart& part : content.parts)
         {
-          ahead([&] { staged.map(key, text(key)); });
+          const Material* material = content.library.find(part.material);
+          if (!material)
+          {
+            continue;
+          }
+          ahead([&]
+                { staged.surface(part.mesh, part.block, material->value("tangents").text); });
+          for (const char* key : SceneAssets::kMapKeys)
+          {
+            ahead([&] { staged.map(key, material->value(key).text); });
+          }
         }
       },
       [this, path] { openSession(path); }, true);

@@ -33,6 +33,7 @@ class SurfaceModelView;
 class LutScheduler;
 class MapsDock;
 class MaterialDock;
+class SceneDock;
 class SceneView;
 
 // What enableAutosave does with the autosave of an earlier run that did not exit normally.
@@ -63,6 +64,7 @@ public:
   SurfaceModelView* surfaceView() const { return surfaceView_; }
   LitModelView* litView() const { return litView_; }
   LightsDock* lightsDock() const { return lightsDock_; }
+  SceneDock* sceneDock() const { return sceneDock_; }
   // The comparison view (View > Compare models), made when first opened.
   CompareWindow* compareWindow() const { return compareWindow_; }
   void showCompareWindow();
@@ -79,7 +81,19 @@ public:
   Autosave* autosave() const { return autosave_; }
 
   // Each returns false after reporting a failure (the scene is unchanged then).
+  // A mesh file replaces the scene: one part per block of the file (OBJ groups, .vtm blocks,
+  // glTF nodes), one undoable step.
   bool openMesh(const QString& path);
+  // Adds the blocks of each mesh file as parts (grouped under the file's name, named by the
+  // block, made unique in the scene), one undoable step. A file that fails as a whole is
+  // reported with its name and adds nothing; the others are added; a block that fails is
+  // skipped with a warning naming the file and the part.
+  bool addMeshes(const QStringList& paths);
+  // The same after reading and preparing the files on a worker (File > Add Mesh).
+  void addMeshesInBackground(const QStringList& paths);
+  // Opens the first of PATHS and adds the others, after reading them all on a worker (the
+  // command line's MESH...).
+  void openMeshesInBackground(const QStringList& paths);
   bool openEnvironment(const QString& path);
   bool openSession(const QString& path);
   bool saveSession(const QString& path);
@@ -133,6 +147,10 @@ private:
   void showSamples(int samples, int target);
   void setInteractiveResolution(bool interacting);
   void chooseAndExportScreenshot();
+  // The parts of the blocks of PATH (loaded into assets_ already), named uniquely beside TAKEN,
+  // with MATERIAL; the blocks skipped go to WARNINGS.
+  std::vector<ScenePart> partsOfFile(const QString& path, const std::string& material,
+                                     std::vector<ScenePart>& taken, QStringList& warnings);
   // PATH as the normal map (and bump quaternion when bump was none).
   bool openNormalMap(const QString& path);
   // An image dropped or reopened: read on a worker, then an environment (an .exr twice as wide
@@ -153,6 +171,7 @@ private:
   EnvironmentDock* environmentDock_;
   QDockWidget* lutDock_;
   LightsDock* lightsDock_;
+  SceneDock* sceneDock_;
   LitModelView* litView_ = nullptr;
   SurfaceModelView* surfaceView_ = nullptr;
   CompareWindow* compareWindow_ = nullptr;

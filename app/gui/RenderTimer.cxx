@@ -9,9 +9,9 @@
 
 namespace aniso
 {
-RenderTimer::RenderTimer(vtkRenderWindow* window, vtkMapper* mapper, RefinementPlanner* planner,
-                         Describe drawStarts, Describe renderEnds)
-    : window_(window), mapper_(mapper), planner_(planner), drawStarts_(std::move(drawStarts)),
+RenderTimer::RenderTimer(vtkRenderWindow* window, RefinementPlanner* planner, Describe drawStarts,
+                         Describe renderEnds)
+    : window_(window), planner_(planner), drawStarts_(std::move(drawStarts)),
       renderEnds_(std::move(renderEnds))
 {
   clock_.start();
@@ -20,13 +20,25 @@ RenderTimer::RenderTimer(vtkRenderWindow* window, vtkMapper* mapper, RefinementP
                          { static_cast<RenderTimer*>(self)->event(caller, event); });
   window_->AddObserver(vtkCommand::StartEvent, observer_);
   window_->AddObserver(vtkCommand::EndEvent, observer_);
-  mapper_->AddObserver(vtkCommand::StartEvent, observer_);
 }
 
 RenderTimer::~RenderTimer()
 {
   window_->RemoveObserver(observer_);
-  mapper_->RemoveObserver(observer_);
+  setMappers({});
+}
+
+void RenderTimer::setMappers(const std::vector<vtkMapper*>& mappers)
+{
+  for (vtkMapper* mapper : mappers_)
+  {
+    mapper->RemoveObserver(observer_);
+  }
+  mappers_ = mappers;
+  for (vtkMapper* mapper : mappers_)
+  {
+    mapper->AddObserver(vtkCommand::StartEvent, observer_);
+  }
 }
 
 void RenderTimer::event(vtkObject* caller, unsigned long event)
@@ -40,9 +52,12 @@ void RenderTimer::event(vtkObject* caller, unsigned long event)
   }
   if (caller != window_)
   {
-    // The surface's mapper starts drawing: this render adds (a band of) a frame to the mean.
-    drewSurface_ = true;
-    drawStarts_(drawn_);
+    // A surface's mapper starts drawing: this render adds (a band of) a frame to the mean.
+    if (!drewSurface_)
+    {
+      drewSurface_ = true;
+      drawStarts_(drawn_);
+    }
     return;
   }
   if (startNs_ < 0)

@@ -6,6 +6,7 @@
 
 #include <QElapsedTimer>
 #include <functional>
+#include <vector>
 #include <vtkNew.h>
 
 class vtkCallbackCommand;
@@ -22,8 +23,11 @@ public:
   // band and whether it is the stand-in), RENDER_ENDS once the render is done (whether it
   // measures the load); the timer adds the window's pixels and the seconds.
   using Describe = std::function<void(MeasuredRender&)>;
-  RenderTimer(vtkRenderWindow* window, vtkMapper* mapper, RefinementPlanner* planner,
-              Describe drawStarts, Describe renderEnds);
+  RenderTimer(vtkRenderWindow* window, RefinementPlanner* planner, Describe drawStarts,
+              Describe renderEnds);
+  // The mappers of the surfaces (a scene's parts): a render in which one of them draws is one
+  // the planner learns from.
+  void setMappers(const std::vector<vtkMapper*>& mappers);
   ~RenderTimer();
   RenderTimer(const RenderTimer&) = delete;
   RenderTimer& operator=(const RenderTimer&) = delete;
@@ -33,7 +37,7 @@ private:
   void event(vtkObject* caller, unsigned long event);
 
   vtkRenderWindow* window_;
-  vtkMapper* mapper_;
+  std::vector<vtkMapper*> mappers_;
   RefinementPlanner* planner_;
   Describe drawStarts_;
   Describe renderEnds_;

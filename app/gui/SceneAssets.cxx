@@ -46,39 +46,97 @@ SceneAssets::SceneAssets(SceneModel* model) : model_(model)
   }
 }
 
-std::shared_ptr<const SceneAssets::Surface> SceneAssets::surfaceEntry(const std::string& mesh,
-                                                                      const std::string& tangents)
+std::shared_ptr<const LoadedBlocks> SceneAssets::blocks(const std::string& mesh)
 {
-  return surfaces_.get(mesh + "\n" + tangents,
-                       [&]
+  return blocks_.get(mesh,
+                     [&]
+                     {
+                       auto loaded = std::make_shared<LoadedBlocks>();
+                       if (mesh.rfind(kBuiltinPrefix, 0) == 0)
                        {
-                         const std::shared_ptr<LoadedMesh> loaded =
-                             meshes_.get(mesh,
-                                         [&]
-                                         {
-                                           if (mesh.rfind(kBuiltinPrefix, 0) == 0)
-                                           {
-                                             return std::make_shared<LoadedMesh>(makeBuiltinMesh(
-                                                 parseBuiltinMesh(mesh.substr(8), "mesh")));
-                                           }
-                                           return std::make_shared<LoadedMesh>(loadMesh(mesh));
-                                         });
-                         auto entry = std::make_shared<Surface>();
-                         entry->prepared =
-                             prepareSurface(loaded->polyData, surfaceOptions(tangents), mesh);
-                         entry->interactive = interactiveLevelOfDetail(entry->prepared.polyData);
-                         entry->notes = loaded->report.notes();
-                         for (const std::string& note : entry->prepared.report.notes())
-                         {
-                           entry->notes.push_back(note);
-                         }
-                         return std::shared_ptr<const Surface>(std::move(entry));
-                       });
+                         MeshBlock block;
+                         block.name = mesh.substr(8);
+                         block.mesh = makeBuiltinMesh(parseBuiltinMesh(mesh.substr(8), "mesh"));
+                         loaded->blocks.push_back(std::move(block));
+                       }
+                       else
+                       {
+                         *loaded = loadMeshBlocks(mesh);
+                       }
+                       return std::shared_ptr<const LoadedBlocks>(std::move(loaded));
+                     });
+}
+
+std::vector<std::string> SceneAssets::blockNames(const std::string& mesh,
+                                                 std::vector<std::string>* warnings)
+{
+  const std::shared_ptr<const LoadedBlocks> loaded = blocks(mesh);
+  std::vector<std::string> names;
+  for (const MeshBlock& block : loaded->blocks)
+  {
+    names.push_back(block.name);
+  }
+  if (warnings)
+  {
+    *warnings = loaded->warnings;
+  }
+  return names;
+}
+
+std::shared_ptr<const SceneAssets::Surface>
+SceneAssets::surfaceEntry(const std::string& mesh, const std::string& block,
+                          const std::string& tangents)
+{
+  return surfaces_.get(
+      mesh + "\n" + block + "\n" + tangents,
+      [&]
+      {
+        std::shared_ptr<const LoadedMesh> loaded;
+        if (!block.empty())
+        {
+          const std::shared_ptr<const LoadedBlocks> all = blocks(mesh);
+          for (const MeshBlock& b : all->blocks)
+          {
+            if (b.name == block)
+            {
+              loaded = std::shared_ptr<const LoadedMesh>(all, &b.mesh);
+            }
+          }
+          if (!loaded)
+          {
+            throw errorAbout(mesh, "no part \"" + block + "\"");
+          }
+        }
+        else
+        {
+          loaded = meshes_.get(mesh,
+                               [&]
+                               {
+                                 if (mesh.rfind(kBuiltinPrefix, 0) == 0)
+                                 {
+                                   return std::make_shared<LoadedMesh>(
+                                       makeBuiltinMesh(parseBuiltinMesh(mesh.substr(8), "mesh")));
+                                 }
+                                 return std::make_shared<LoadedMesh>(loadMesh(mesh));
+                               });
+        }
+        auto entry = std::make_shared<Surface>();
+        entry->prepared = prepareSurface(loaded->polyData, surfaceOptions(tangents),
+                                         block.empty() ? mesh : mesh + ": part " + block);
+        entry->interactive = interactiveLevelOfDetail(entry->prepared.polyData);
+        entry->notes = loaded->report.notes();
+        for (const std::string& note : entry->prepared.report.notes())
+        {
+          entry->notes.push_back(note);
+        }
+        return std::shared_ptr<const Surface>(std::move(entry));
+      });
 }
 
 void SceneAssets::adopt(SceneAssets& staged)
 {
   meshes_.mergeFrom(staged.meshes_);
+  blocks_.mergeFrom(staged.blocks_);
   surfaces_.mergeFrom(staged.surfaces_);
   environments_.mergeFrom(staged.environments_);
   images_.mergeFrom(staged.images_);
@@ -88,20 +146,41 @@ void SceneAssets::adopt(SceneAssets& staged)
 std::shared_ptr<const PreparedSurface> SceneAssets::surface(const std::string& mesh,
                                                             const std::string& tangents)
 {
-  std::shared_ptr<const Surface> entry = surfaceEntry(mesh, tangents);
+  return surface(mesh, {}, tangents);
+}
+
+std::shared_ptr<const PreparedSurface> SceneAssets::surface(const std::string& mesh,
+                                                            const std::string& block,
+                                                            const std::string& tangents)
+{
+  std::shared_ptr<const Surface> entry = surfaceEntry(mesh, block, tangents);
   return std::shared_ptr<const PreparedSurface>(entry, &entry->prepared);
 }
 
 vtkSmartPointer<vtkPolyData> SceneAssets::interactiveSurface(const std::string& mesh,
                                                              const std::string& tangents)
 {
-  return surfaceEntry(mesh, tangents)->interactive;
+  return interactiveSurface(mesh, {}, tangents);
+}
+
+vtkSmartPointer<vtkPolyData> SceneAssets::interactiveSurface(const std::string& mesh,
+                                                             const std::string& block,
+                                                             const std::string& tangents)
+{
+  return surfaceEntry(mesh, block, tangents)->interactive;
 }
 
 std::vector<std::string> SceneAssets::surfaceNotes(const std::string& mesh,
                                                    const std::string& tangents)
 {
-  return surfaceEntry(mesh, tangents)->notes;
+  return surfaceNotes(mesh, {}, tangents);
+}
+
+std::vector<std::string> SceneAssets::surfaceNotes(const std::string& mesh,
+                                                   const std::string& block,
+                                                   const std::string& tangents)
+{
+  return surfaceEntry(mesh, block, tangents)->notes;
 }
 
 std::shared_ptr<const Environment> SceneAssets::environment(const std::string& spec)
@@ -168,9 +247,21 @@ std::shared_ptr<const Image> SceneAssets::map(const std::string& key, const std:
 
 void SceneAssets::addMaps(const SceneModel& model, MaterialSettings& settings)
 {
-  const BumpMapping bump = parseBumpMapping(model.text("bump"));
-  const std::string& normals = model.text("normal-map");
-  const std::string& quaternions = model.text("quaternion-map");
+  addMaps([&](const char* key) -> const std::string& { return model.text(key); }, settings);
+}
+
+void SceneAssets::addMaps(const Material& material, MaterialSettings& settings)
+{
+  addMaps([&](const char* key) -> const std::string& { return material.value(key).text; },
+          settings);
+}
+
+void SceneAssets::addMaps(const std::function<const std::string&(const char*)>& text,
+                          MaterialSettings& settings)
+{
+  const BumpMapping bump = parseBumpMapping(text("bump"));
+  const std::string& normals = text("normal-map");
+  const std::string& quaternions = text("quaternion-map");
   settings.normalMap = nullptr;
   settings.quaternionMap = nullptr;
   if (bump == BumpMapping::Normal)
@@ -191,10 +282,10 @@ void SceneAssets::addMaps(const SceneModel& model, MaterialSettings& settings)
                                              *raw.image, raw.info.integerFormat, nullptr));
                                        });
   }
-  settings.tprMap = map("tpr", model.text("tpr"));
-  settings.heightMap = map("height-map", model.text("height-map"));
-  settings.albedoMap = map("albedo-map", model.text("albedo-map"));
-  settings.occlusionMap = map("ao-map", model.text("ao-map"));
-  settings.metallicMap = map("metallic-map", model.text("metallic-map"));
+  settings.tprMap = map("tpr", text("tpr"));
+  settings.heightMap = map("height-map", text("height-map"));
+  settings.albedoMap = map("albedo-map", text("albedo-map"));
+  settings.occlusionMap = map("ao-map", text("ao-map"));
+  settings.metallicMap = map("metallic-map", text("metallic-map"));
 }
 } // namespace aniso

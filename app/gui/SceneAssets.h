@@ -9,6 +9,7 @@
 #include "vtkpasses/mesh/SurfacePreparation.h"
 #include "vtkpasses/render/MaterialSettings.h"
 
+#include <functional>
 #include <list>
 #include <memory>
 #include <string>
@@ -94,18 +95,31 @@ public:
   // ("auto" or BrushingModel.h's syntax). Throws aniso::Error "SUBJECT: reason".
   std::shared_ptr<const PreparedSurface> surface(const std::string& mesh,
                                                  const std::string& tangents);
+  // The same for one block of the mesh file (loadMeshBlocks' name; empty: the whole file). A
+  // block the file does not have throws aniso::Error "MESH: no part BLOCK".
+  std::shared_ptr<const PreparedSurface> surface(const std::string& mesh, const std::string& block,
+                                                 const std::string& tangents);
+  // The blocks of a mesh file (a built-in mesh: one, named by it), loaded once and kept; what
+  // was skipped in WARNINGS. Throws aniso::Error "PATH: reason" for a file that fails as a whole.
+  std::vector<std::string> blockNames(const std::string& mesh, std::vector<std::string>* warnings);
   // Its stand-in while the view moves (LevelOfDetail.h), null when it is drawn as it is. Made
   // with the surface, so a surface prepared on a worker brings it along.
   vtkSmartPointer<vtkPolyData> interactiveSurface(const std::string& mesh,
                                                   const std::string& tangents);
+  vtkSmartPointer<vtkPolyData> interactiveSurface(const std::string& mesh, const std::string& block,
+                                                  const std::string& tangents);
   // What loading and preparing that surface had to say (dropped faces, computed normals...).
   std::vector<std::string> surfaceNotes(const std::string& mesh, const std::string& tangents);
+  std::vector<std::string> surfaceNotes(const std::string& mesh, const std::string& block,
+                                        const std::string& tangents);
 
   std::shared_ptr<const Environment> environment(const std::string& spec);
   // The maps the model's values ask for, as the material takes them (bump none: no normal or
   // quaternion map; quaternion: the quaternion map, else baked from the normal map).
   // Throws aniso::Error "PATH: reason".
   void addMaps(const SceneModel& model, MaterialSettings& settings);
+  // The same from a library material's maps.
+  void addMaps(const Material& material, MaterialSettings& settings);
 
   // Map loading by key, as addMaps does it (normal-map and quaternion-map decoded to signed
   // vectors, tpr from a pattern or a file).
@@ -125,7 +139,12 @@ private:
     vtkSmartPointer<vtkPolyData> interactive;
     std::vector<std::string> notes; // the mesh report's, then the preparation's
   };
-  std::shared_ptr<const Surface> surfaceEntry(const std::string& mesh, const std::string& tangents);
+  std::shared_ptr<const Surface> surfaceEntry(const std::string& mesh, const std::string& block,
+                                              const std::string& tangents);
+  std::shared_ptr<const LoadedBlocks> blocks(const std::string& mesh);
+  // Maps by key as TEXT gives them.
+  void addMaps(const std::function<const std::string&(const char*)>& text,
+               MaterialSettings& settings);
   struct LoadedImage
   {
     std::shared_ptr<const Image> image;
@@ -136,7 +155,9 @@ private:
   SceneModel* model_ = nullptr;
   int maxTextureSide_ = kDefaultMaxTextureSide;
   RecentCache<std::shared_ptr<LoadedMesh>> meshes_{3};
-  RecentCache<std::shared_ptr<const Surface>> surfaces_{3};
+  RecentCache<std::shared_ptr<const LoadedBlocks>> blocks_{8};
+  // One entry per part of a scene of many (each with its tangents), so a scene's parts stay.
+  RecentCache<std::shared_ptr<const Surface>> surfaces_{1024};
   RecentCache<std::shared_ptr<const Environment>> environments_{3};
   RecentCache<LoadedImage> images_{8};
   RecentCache<std::shared_ptr<const Image>> maps_{8};

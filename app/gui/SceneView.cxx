@@ -9,10 +9,17 @@
 #include "vtkpasses/render/EnvironmentLighting.h"
 #include "vtkpasses/render/vtkAnisoAccumulationPass.h"
 
+#include <QStringList>
 #include <QTimer>
 #include <algorithm>
+#include <cstdlib>
 #include <functional>
 #include <vtkActor.h>
+#include <vtkAppendPolyData.h>
+#include <vtkOutlineSource.h>
+#include <vtkPolyDataMapper.h>
+#include <vtkPropPicker.h>
+#include <vtkProperty.h>
 #include <vtkCallbackCommand.h>
 #include <vtkCommand.h>
 #include <vtkInteractorObserver.h>
@@ -29,7 +36,8 @@ namespace aniso
 {
 namespace
 {
-bool isMaterialKey(const std::string& key)
+// Keys the materials' settings follow.
+bool isShadingKey(const std::string& key)
 {
   return sceneKeyAffects(key, Affects::Uniforms | Affects::Variant | Affects::Luts);
 }
@@ -49,7 +57,44 @@ bool needsLuts(const MaterialSettings& s)
 {
   return s.method == SpecularMethod::SplitSum || s.halfVectors == HalfVectorSource::Lut;
 }
+
+// The surfaces together, as one polydata (SURFACES has at least one).
+vtkSmartPointer<vtkPolyData> appended(const std::vector<vtkPolyData*>& surfaces)
+{
+  if (surfaces.size() == 1)
+  {
+    return surfaces.front();
+  }
+  vtkNew<vtkAppendPolyData> append;
+  for (vtkPolyData* surface : surfaces)
+  {
+    append->AddInputData(surface);
+  }
+  append->Update();
+  return append->GetOutput();
+}
 } // namespace
+
+// One part as drawn: its actor, mapper and material, and its surface in the mesh's coordinates
+// and in the drawing frame.
+struct SceneView::PartView
+{
+  std::string surfaceKey; // mesh, block and tangents the surface was made of
+  std::string name;
+  std::string material; // its library material
+  bool visible = false; // the part's visibility
+  bool loaded = false;  // its surface loaded and prepared
+  bool inRenderer = false;
+  vtkNew<vtkActor> actor;
+  vtkNew<vtkOpenGLPolyDataMapper> mapper;
+  std::unique_ptr<AnisoMaterial> shading;
+  MaterialSettings full;
+  vtkSmartPointer<vtkPolyData> surface;          // in the mesh's coordinates
+  vtkSmartPointer<vtkPolyData> drawn;            // in the drawing frame
+  vtkSmartPointer<vtkPolyData> drawnInteractive; // its stand-in while moving, or null
+
+  bool drawnNow() const { return visible && loaded; }
+};
 
 SceneView::SceneView(SceneModel* model, SceneAssets* assets, LutScheduler* luts,
                      vtkRenderWindow* window, QObject* parent)
@@ -65,9 +110,6 @@ SceneView::SceneView(SceneModel* model, SceneAssets* assets, LutScheduler* luts,
           }),
       lightingLoader_(new LightingLoader(model, assets, window, &errors_, this))
 {
-  mapper_->ScalarVisibilityOff();
-  actor_->SetMapper(mapper_);
-  renderer_->AddActor(actor_);
   pass_->SetDelegatePass(steps_);
   renderer_->SetPass(pass_);
   window_->AddRenderer(renderer_);
@@ -111,16 +153,52 @@ SceneView::SceneView(SceneModel* model, SceneAssets* assets, LutScheduler* luts,
         style->AddObserver(event, interactionObserver_);
       }
     }
+    // A click (press and release in one place, the camera not moved) picks a part: it becomes
+    // the selection, or with Ctrl or Shift joins it (or leaves it); a click on nothing clears it.
+    clickObserver_->SetClientData(this);
+    clickObserver_->SetCallback(
+        [](vtkObject* caller, unsigned long event, void* self, void*)
+        {
+          auto* view = static_cast<SceneView*>(self);
+          auto* interactor = static_cast<vtkRenderWindowInteractor*>(caller);
+          const int* at = interactor->GetEventPosition();
+          if (event == vtkCommand::LeftButtonPressEvent)
+          {
+            view->pressAt_[0] = at[0];
+            view->pressAt_[1] = at[1];
+            view->pressed_ = true;
+            return;
+          }
+          if (!view->pressed_)
+          {
+            return;
+          }
+          view->pressed_ = false;
+          if (std::abs(at[0] - view->pressAt_[0]) > 3 || std::abs(at[1] - view->pressAt_[1]) > 3)
+          {
+            return; // a drag: the camera moved
+          }
+          const bool extend = interactor->GetControlKey() || interactor->GetShiftKey();
+          view->clickedAt(at[0], at[1], extend);
+        });
+    // Before the interactor style (higher priority): the style still rotates on a drag.
+    interactor->AddObserver(vtkCommand::LeftButtonPressEvent, clickObserver_, 1.0f);
+    interactor->AddObserver(vtkCommand::LeftButtonReleaseEvent, clickObserver_, 1.0f);
   }
 
   // Every frame the window draws is timed (progressive ones and the interactor's own); those
   // that drew the surface are what the frame budget learns from.
   renderTimer_ = std::make_unique<RenderTimer>(
-      window_, mapper_, &planner_,
+      window_, &planner_,
       [this](MeasuredRender& drawn)
       {
-        drawn.standIn = drawnInteractive_ && mapper_->GetInput() == drawnInteractive_;
-        drawn.samples = material_ ? material_->settings().samples : 1;
+        drawn.standIn = false;
+        for (const auto& part : parts_)
+        {
+          drawn.standIn = drawn.standIn || (part->drawnInteractive && part->inRenderer &&
+                                            part->mapper->GetInput() == part->drawnInteractive);
+        }
+        drawn.samples = full_.samples;
         drawn.bands = pass_->GetCurrentFrameBands();
         drawn.band = pass_->GetNextBand(); // the band being drawn (counted up after it)
       },
@@ -131,6 +209,24 @@ SceneView::SceneView(SceneModel* model, SceneAssets* assets, LutScheduler* luts,
 
   connect(model_, &SceneModel::valueChanged, this, &SceneView::modelChanged);
   connect(model_, &SceneModel::cameraChanged, this, &SceneView::applyCameraFromModel);
+  connect(model_, &SceneModel::partsChanged, this,
+          [this]
+          {
+            attempt(
+                [this]
+                {
+                  if (syncParts())
+                  {
+                    applySurfaces();
+                  }
+                  beginInteraction();
+                  applyMaterial();
+                  applySelection();
+                });
+            requestRender();
+          });
+  connect(model_, &SceneModel::materialsChanged, this, &SceneView::materialsChanged);
+  connect(model_, &SceneModel::selectionChanged, this, [this] { applySelection(); });
   connect(luts_, &LutScheduler::lutsReady, this, [this] { applyMaterial(); });
   connect(lightingLoader_, &LightingLoader::shown, this, &SceneView::lightingShown);
   connect(lightingLoader_, &LightingLoader::busyChanged, this, &SceneView::lightingBusyChanged);
@@ -138,11 +234,15 @@ SceneView::SceneView(SceneModel* model, SceneAssets* assets, LutScheduler* luts,
 
   lightingLoader_->loadNow();
   pass_->SetLighting(lighting());
-  applySurface();
+  outline_->VisibilityOff();
+  outline_->PickableOff();
+  outline_->GetProperty()->SetColor(1.0, 0.8, 0.2);
+  outline_->GetProperty()->SetLineWidth(2.0);
+  outline_->GetProperty()->LightingOff();
+  syncParts();
+  applySurfaces();
   applyDisplay();
-  material_ = std::make_unique<AnisoMaterial>(lighting());
   applyMaterial();
-  material_->apply(actor_, renderer_);
   luts_->requestNow();
   requestRender();
 }
@@ -157,9 +257,10 @@ SceneView::~SceneView()
     {
       style->RemoveObserver(interactionObserver_);
     }
+    interactor->RemoveObserver(clickObserver_);
   }
   renderTimer_.reset();
-  material_.reset();
+  parts_.clear();
   window_->RemoveRenderer(renderer_);
 }
 
@@ -219,18 +320,32 @@ RunShape SceneView::runShape() const
   shape.total = targetSamples();
   shape.pixels = windowPixels();
   shape.materialSamples = full_.samples;
-  shape.triangles = drawnSurface_ ? drawnSurface_->GetNumberOfPolys() : 0;
+  shape.triangles = 0;
+  for (const auto& part : parts_)
+  {
+    shape.triangles += part->drawnNow() && part->drawn ? part->drawn->GetNumberOfPolys() : 0;
+  }
   return shape;
 }
 
 void SceneView::modelChanged(const QString& qkey)
 {
   const std::string key = qkey.toStdString();
+  if (isMaterialKey(key))
+  {
+    // The edited parts' materials: materialsChanged brings what changed (a new selection only
+    // shows another material in the docks).
+    return;
+  }
   try
   {
-    if (key == "mesh" || key == "tangents")
+    if (key == "mesh")
     {
-      applySurface();
+      // The parts follow (partsChanged); the mesh key is the first part's file.
+      if (syncParts())
+      {
+        applySurfaces();
+      }
     }
     else if (key == "env" || key == "cube-size")
     {
@@ -263,7 +378,7 @@ void SceneView::modelChanged(const QString& qkey)
     {
       beginInteraction();
     }
-    if (isMaterialKey(key) || qualityKey || key == "env-sampling")
+    if (isShadingKey(key) || qualityKey || key == "env-sampling")
     {
       applyMaterial();
     }
@@ -275,23 +390,167 @@ void SceneView::modelChanged(const QString& qkey)
   requestRender();
 }
 
-void SceneView::applySurface()
+void SceneView::materialsChanged(const QStringList& names)
 {
-  const std::string& mesh = model_->text("mesh");
-  const std::string& tangents = model_->text("tangents");
-  const std::shared_ptr<const PreparedSurface> surface = assets_->surface(mesh, tangents);
-  surface_ = surface->polyData;
-  drawing_ = drawingFrameOf(surface_);
-  drawnSurface_ = inDrawingFrame(surface_, drawing_);
-  // The stand-in in the surface's own drawing frame: the view does not jump when it is swapped.
-  const vtkSmartPointer<vtkPolyData> standIn = assets_->interactiveSurface(mesh, tangents);
-  drawnInteractive_ = standIn ? inDrawingFrame(standIn, drawing_) : nullptr;
-  showDrawnSurface();
-  setDrawingFrame(actor_, drawing_);
-  for (const std::string& note : assets_->surfaceNotes(mesh, tangents))
+  attempt(
+      [&]
+      {
+        // A material's tangent model is part of its parts' surfaces.
+        if (syncParts())
+        {
+          applySurfaces();
+        }
+        bool frameCost = false;
+        for (const auto& part : parts_)
+        {
+          frameCost = frameCost || names.contains(QString::fromStdString(part->material));
+        }
+        if (frameCost)
+        {
+          planner_.forgetCosts();
+          beginInteraction();
+          applyMaterial();
+        }
+      });
+  requestRender();
+}
+
+bool SceneView::syncParts()
+{
+  const std::vector<ScenePart>& parts = model_->parts();
+  bool changed = false;
+  if (parts_.size() > parts.size())
   {
-    emit noteAdded(QString::fromStdString(note));
+    renderTimer_->setMappers({}); // the mappers about to go (applySurfaces sets them anew)
   }
+  while (parts_.size() > parts.size())
+  {
+    PartView& gone = *parts_.back();
+    if (gone.inRenderer)
+    {
+      renderer_->RemoveActor(gone.actor);
+    }
+    parts_.pop_back();
+    changed = true;
+  }
+  while (parts_.size() < parts.size())
+  {
+    auto part = std::make_unique<PartView>();
+    part->mapper->ScalarVisibilityOff();
+    part->actor->SetMapper(part->mapper);
+    parts_.push_back(std::move(part));
+  }
+  for (std::size_t i = 0; i < parts.size(); ++i)
+  {
+    const ScenePart& wanted = parts[i];
+    PartView& part = *parts_[i];
+    const std::string tangents = model_->partMaterial(int(i)).value("tangents").text;
+    const std::string key = wanted.mesh + "\n" + wanted.block + "\n" + tangents;
+    part.name = wanted.name;
+    part.material = wanted.material;
+    if (part.surfaceKey != key)
+    {
+      part.surfaceKey = key;
+      part.loaded = false;
+      changed = true;
+      try
+      {
+        part.surface = assets_->surface(wanted.mesh, wanted.block, tangents)->polyData;
+        part.loaded = true;
+        for (const std::string& note : assets_->surfaceNotes(wanted.mesh, wanted.block, tangents))
+        {
+          emit noteAdded(QString::fromStdString(note));
+        }
+      }
+      catch (const Error& e)
+      {
+        // Skipped with one warning; the other parts are drawn.
+        part.surface = nullptr;
+        emit errorOccurred(tr("Part %1 skipped: %2")
+                               .arg(QString::fromStdString(wanted.name),
+                                    QString::fromStdString(e.what())));
+      }
+    }
+    if (part.visible != wanted.visible)
+    {
+      part.visible = wanted.visible;
+      changed = true;
+    }
+  }
+  return changed;
+}
+
+void SceneView::applySurfaces()
+{
+  std::vector<vtkPolyData*> surfaces;
+  for (const auto& part : parts_)
+  {
+    if (part->drawnNow())
+    {
+      surfaces.push_back(part->surface);
+    }
+  }
+  if (!surfaces.empty())
+  {
+    // The visible parts' common bounding sphere: framing fits them, hidden parts do not count.
+    drawing_ = drawingFrameOf(appended(surfaces));
+  }
+  std::vector<vtkPolyData*> drawn;
+  std::vector<vtkPolyData*> interactive;
+  bool anyStandIn = false;
+  for (std::size_t i = 0; i < parts_.size(); ++i)
+  {
+    PartView& part = *parts_[i];
+    const bool draw = part.drawnNow();
+    if (draw)
+    {
+      const ScenePart& p = model_->parts()[i];
+      const std::string tangents = model_->partMaterial(int(i)).value("tangents").text;
+      part.drawn = inDrawingFrame(part.surface, drawing_);
+      // The stand-in in the scene's drawing frame: the view does not jump when it is swapped.
+      const vtkSmartPointer<vtkPolyData> standIn =
+          assets_->interactiveSurface(p.mesh, p.block, tangents);
+      part.drawnInteractive = standIn ? inDrawingFrame(standIn, drawing_) : nullptr;
+      setDrawingFrame(part.actor, drawing_);
+      if (!part.shading)
+      {
+        part.shading = std::make_unique<AnisoMaterial>(lighting(), part.full);
+        part.shading->apply(part.actor, renderer_);
+      }
+      drawn.push_back(part.drawn);
+      interactive.push_back(part.drawnInteractive ? part.drawnInteractive.Get() : part.drawn.Get());
+      anyStandIn = anyStandIn || part.drawnInteractive;
+    }
+    else
+    {
+      part.drawn = nullptr;
+      part.drawnInteractive = nullptr;
+    }
+    // Hidden parts are not in the renderer: they cost nothing.
+    if (draw && !part.inRenderer)
+    {
+      renderer_->AddActor(part.actor);
+      part.inRenderer = true;
+    }
+    else if (!draw && part.inRenderer)
+    {
+      renderer_->RemoveActor(part.actor);
+      part.inRenderer = false;
+    }
+    part.actor->SetVisibility(partsShown_);
+  }
+  drawnSurface_ = drawn.empty() ? nullptr : appended(drawn);
+  drawnInteractive_ = anyStandIn ? appended(interactive) : nullptr;
+  showDrawnSurface();
+  std::vector<vtkMapper*> mappers;
+  for (auto& part : parts_)
+  {
+    if (part->inRenderer)
+    {
+      mappers.push_back(part->mapper);
+    }
+  }
+  renderTimer_->setMappers(mappers);
   if (model_->camera().set)
   {
     applyCameraFromModel();
@@ -300,6 +559,8 @@ void SceneView::applySurface()
   {
     resetCamera();
   }
+  applySelection();
+  emit partsDrawn();
 }
 
 vtkPolyData* SceneView::surfaceToDraw() const
@@ -309,12 +570,20 @@ vtkPolyData* SceneView::surfaceToDraw() const
 
 void SceneView::showDrawnSurface()
 {
-  vtkPolyData* drawn = surfaceToDraw();
-  if (drawn && mapper_->GetInput() != drawn)
+  for (auto& part : parts_)
   {
-    // A new input: the mapper builds its buffers for it in the next render (a few ms even for
-    // the largest surfaces; both stay in memory, so swapping reads nothing).
-    mapper_->SetInputData(drawn);
+    if (!part->inRenderer)
+    {
+      continue;
+    }
+    vtkPolyData* drawn =
+        interacting_ && part->drawnInteractive ? part->drawnInteractive.Get() : part->drawn.Get();
+    if (drawn && part->mapper->GetInput() != drawn)
+    {
+      // A new input: the mapper builds its buffers for it in the next render (a few ms even for
+      // the largest surfaces; both stay in memory, so swapping reads nothing).
+      part->mapper->SetInputData(drawn);
+    }
   }
 }
 
@@ -325,14 +594,133 @@ vtkPolyData* SceneView::drawnSurface() const
 
 long long SceneView::drawnTriangles() const
 {
-  vtkPolyData* drawn = vtkPolyData::SafeDownCast(mapper_->GetInput());
-  return drawn ? static_cast<long long>(drawn->GetNumberOfPolys()) : 0;
+  long long triangles = 0;
+  for (const auto& part : parts_)
+  {
+    vtkPolyData* drawn = vtkPolyData::SafeDownCast(part->mapper->GetInput());
+    triangles += part->inRenderer && drawn ? drawn->GetNumberOfPolys() : 0;
+  }
+  return triangles;
+}
+
+vtkActor* SceneView::partActor(int part) const
+{
+  return parts_.at(std::size_t(part))->actor;
+}
+
+bool SceneView::partDrawn(int part) const
+{
+  return parts_.at(std::size_t(part))->inRenderer;
+}
+
+long long SceneView::partTriangles(int part) const
+{
+  const PartView& p = *parts_.at(std::size_t(part));
+  return p.surface ? p.surface->GetNumberOfPolys() : -1;
+}
+
+int SceneView::partAt(int x, int y)
+{
+  // VTK's hardware picker (a selection render of the props, not of the accumulated image).
+  vtkNew<vtkPropPicker> picker;
+  if (!picker->Pick(x, y, 0.0, renderer_))
+  {
+    return -1;
+  }
+  vtkActor* actor = picker->GetActor();
+  for (std::size_t i = 0; i < parts_.size(); ++i)
+  {
+    if (parts_[i]->actor.Get() == actor)
+    {
+      return int(i);
+    }
+  }
+  return -1;
+}
+
+void SceneView::clickedAt(int x, int y, bool extend)
+{
+  const int part = partAt(x, y);
+  std::vector<int> selection = extend ? model_->selection() : std::vector<int>{};
+  if (part >= 0)
+  {
+    const auto it = std::find(selection.begin(), selection.end(), part);
+    if (extend && it != selection.end())
+    {
+      selection.erase(it);
+    }
+    else if (it == selection.end())
+    {
+      selection.push_back(part);
+    }
+  }
+  model_->setSelection(selection);
+}
+
+void SceneView::setPartsShown(bool shown)
+{
+  partsShown_ = shown;
+  for (auto& part : parts_)
+  {
+    part->actor->SetVisibility(shown);
+  }
+  applySelection();
+}
+
+void SceneView::applySelection()
+{
+  // The selected parts' bounding boxes in the drawing frame, drawn over the surfaces; a scene of
+  // one part shows none (there is nothing to tell apart).
+  const std::vector<int>& selection = model_->selection();
+  double bounds[6] = {1.0, -1.0, 1.0, -1.0, 1.0, -1.0};
+  for (int i : selection)
+  {
+    if (i < 0 || i >= int(parts_.size()) || !parts_[std::size_t(i)]->inRenderer)
+    {
+      continue;
+    }
+    double b[6];
+    parts_[std::size_t(i)]->drawn->GetBounds(b);
+    for (int axis = 0; axis < 3; ++axis)
+    {
+      bounds[2 * axis] = bounds[2 * axis] <= bounds[2 * axis + 1]
+                             ? std::min(bounds[2 * axis], b[2 * axis])
+                             : b[2 * axis];
+      bounds[2 * axis + 1] = std::max(bounds[2 * axis + 1], b[2 * axis + 1]);
+    }
+  }
+  const bool show = partsShown_ && parts_.size() > 1 && bounds[0] <= bounds[1];
+  if (show)
+  {
+    vtkNew<vtkOutlineSource> box;
+    box->SetBounds(bounds);
+    box->Update();
+    vtkNew<vtkPolyDataMapper> mapper;
+    mapper->SetInputData(box->GetOutput());
+    outline_->SetMapper(mapper);
+    if (!renderer_->HasViewProp(outline_))
+    {
+      renderer_->AddActor(outline_);
+    }
+  }
+  else if (renderer_->HasViewProp(outline_))
+  {
+    renderer_->RemoveActor(outline_);
+  }
+  outline_->SetVisibility(show);
+  requestRender();
 }
 
 void SceneView::lightingShown()
 {
   pass_->SetLighting(lighting());
-  material_->setLighting(lighting());
+  for (auto& part : parts_)
+  {
+    if (part->shading)
+    {
+      part->shading->setLighting(lighting());
+    }
+  }
   // Frames with another lighting (and with environment sampling, another shader variant) cost
   // what they cost: measured anew.
   planner_.forgetCosts();
@@ -346,67 +734,103 @@ void SceneView::lightingShown()
 
 void SceneView::applyMaterial()
 {
-  if (!material_)
+  if (parts_.empty())
   {
     return;
   }
-  MaterialSettings wanted = materialFromParameters(model_->parameters(), full_);
-  assets_->addMaps(*model_, wanted);
-  // Tables the variant reads must be baked already (by the scheduler, off the UI thread).
-  // Until they are, a variant that needs none stays as it was, or a variant that needs them
-  // keeps the exponents whose tables it has.
+  // The LUT scheduler bakes the tables of the edited material (the docks' n_u, n_v): its parts
+  // keep the exponents whose tables they have until the new ones are ready, so a slider drag
+  // never bakes on the UI thread. Parts of other materials take their tables from the cache
+  // (LutCache: shared by every part of the same lobe, read from disk or baked when missing).
   const LutResult& ready = luts_->current();
-  const bool baked = ready.halfVector && ready.request.lobe.nu == wanted.lobe.nu &&
-                     ready.request.lobe.nv == wanted.lobe.nv &&
-                     ready.request.size == wanted.lutSize &&
-                     ready.request.samples == wanted.brdfLutSamples;
-  if (needsLuts(wanted) && !baked)
+  const std::vector<std::string> edited = model_->editedMaterials();
+  int frames = 1;
+  bool first = true;
+  bool mapsDropped = false;
+  for (std::size_t i = 0; i < parts_.size(); ++i)
   {
-    if (needsLuts(full_))
+    PartView& part = *parts_[i];
+    if (!part.inRenderer || !part.shading)
     {
-      wanted.lobe = full_.lobe;
-      wanted.lutSize = full_.lutSize;
-      wanted.brdfLutSamples = full_.brdfLutSamples;
+      continue;
+    }
+    MaterialSettings wanted = materialFromParameters(model_->partParameters(int(i)), part.full);
+    assets_->addMaps(model_->partMaterial(int(i)), wanted);
+    const bool baked = ready.halfVector && ready.request.lobe.nu == wanted.lobe.nu &&
+                       ready.request.lobe.nv == wanted.lobe.nv &&
+                       ready.request.size == wanted.lutSize &&
+                       ready.request.samples == wanted.brdfLutSamples;
+    const bool editedPart =
+        std::find(edited.begin(), edited.end(), part.material) != edited.end();
+    if (editedPart && needsLuts(wanted) && !baked)
+    {
+      if (needsLuts(part.full))
+      {
+        wanted.lobe = part.full.lobe;
+        wanted.lutSize = part.full.lutSize;
+        wanted.brdfLutSamples = part.full.brdfLutSamples;
+      }
+      else
+      {
+        wanted.method = part.full.method;
+        wanted.halfVectors = part.full.halfVectors;
+      }
+    }
+    if (wanted.environmentSampling != EnvironmentSampling::Off && !lightingSampled())
+    {
+      // Its distribution is being baked on the worker (LightingLoader); the lobe alone until then.
+      wanted.environmentSampling = EnvironmentSampling::Off;
+    }
+    part.full = wanted;
+    if (first)
+    {
+      // What the planner and the quality follow: the first drawn part's settings (the samples
+      // per frame and the quality are the scene's, the same for every part).
+      full_ = wanted;
+    }
+    MaterialSettings shown = part.full;
+    if (interacting_)
+    {
+      shown.samples = std::min(shown.samples, kInteractiveSamples);
+      if (first)
+      {
+        // Shown as drawn: whole frames.
+        pass_->SetFrameBands(1);
+      }
     }
     else
     {
-      wanted.method = full_.method;
-      wanted.halfVectors = full_.halfVectors;
+      if (first)
+      {
+        const FramePlan plan = planner_.plan(runShape());
+        if (planner_.beginRun(plan))
+        {
+          // Frames of another sample count: the run starts over, every frame with the same
+          // weight.
+          pass_->Reset();
+        }
+        frames = targetSamples() / planner_.runSamples();
+        // Bands split a frame's drawing, not its samples: the mean is the same, so no restart
+        // (the frame in progress keeps its bands).
+        pass_->SetFrameBands(plan.bands);
+      }
+      shown.samples = planner_.runSamples();
     }
-  }
-  if (wanted.environmentSampling != EnvironmentSampling::Off && !lightingSampled())
-  {
-    // Its distribution is being baked on the worker (LightingLoader); the lobe alone until then.
-    wanted.environmentSampling = EnvironmentSampling::Off;
-  }
-  full_ = wanted;
-  MaterialSettings shown = full_;
-  int frames = 1;
-  if (interacting_)
-  {
-    shown.samples = std::min(shown.samples, kInteractiveSamples);
-    // Shown as drawn: whole frames.
-    pass_->SetFrameBands(1);
-  }
-  else
-  {
-    const FramePlan plan = planner_.plan(runShape());
-    if (planner_.beginRun(plan))
+    first = false;
+    // The scheduler's tables when they are this part's: nothing is read or baked here for the
+    // edited parts, even when the cache has dropped them from memory since.
+    if (baked)
     {
-      // Frames of another sample count: the run starts over, every frame with the same weight.
-      pass_->Reset();
+      part.shading->setSettings(shown, ready.halfVector, ready.brdf);
     }
-    shown.samples = planner_.runSamples();
-    frames = targetSamples() / planner_.runSamples();
-    // Bands split a frame's drawing, not its samples: the mean is the same, so no restart (the
-    // frame in progress keeps its bands).
-    pass_->SetFrameBands(plan.bands);
+    else
+    {
+      part.shading->setSettings(shown);
+    }
+    mapsDropped = mapsDropped || part.shading->mapsDropped();
   }
-  // The scheduler's tables as its worker delivered them: nothing is read or baked here, even
-  // when the cache has dropped them from memory since.
-  material_->setSettings(shown, ready.halfVector, ready.brdf);
   pass_->SetTargetFrames(std::max(frames, 1));
-  if (material_->mapsDropped())
+  if (mapsDropped)
   {
     emit noteAdded(tr("The mesh has no texture coordinates: its maps are not used."));
   }
@@ -451,7 +875,22 @@ CameraState SceneView::currentCamera() const
 RenderSettings SceneView::renderSettings(int width, int height) const
 {
   RenderSettings s;
-  s.surface = surface_;
+  if (parts_.size() == 1)
+  {
+    s.surface = parts_.front()->surface;
+  }
+  else
+  {
+    for (const auto& part : parts_)
+    {
+      RenderPart p;
+      p.name = part->name;
+      p.surface = part->surface;
+      p.material = part->full;
+      p.visible = part->inRenderer;
+      s.parts.push_back(std::move(p));
+    }
+  }
   s.environment = assets_->environment(model_->text("env"));
   s.cubeSize = model_->integer("cube-size");
   s.environmentRotationDegrees = model_->real("env-rotation");

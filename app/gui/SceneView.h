@@ -36,9 +36,11 @@
 #include <functional>
 #include <memory>
 #include <string>
+#include <vector>
 #include <vtkNew.h>
 #include <vtkSmartPointer.h>
 
+class QStringList;
 class QTimer;
 class vtkActor;
 class vtkAnisoAccumulationPass;
@@ -75,6 +77,28 @@ public:
   ~SceneView() override;
 
   vtkOpenGLRenderer* renderer() const;
+
+  // The scene's parts as drawn: one actor each, with its own material (the part's library
+  // material over the scene's parameters). Parts whose surface did not load or prepare are
+  // skipped (reported once with the file and the part) and, like hidden parts, are not in the
+  // renderer at all.
+  int partCount() const { return int(parts_.size()); }
+  // Part I's actor (a valid index), in the renderer when the part is drawn.
+  vtkActor* partActor(int part) const;
+  // Whether part I is drawn (visible and loaded).
+  bool partDrawn(int part) const;
+  // Triangles of part I's surface (-1 when it did not load).
+  long long partTriangles(int part) const;
+  // The part drawn at display position (X, Y) (VTK's convention: origin bottom left), or -1.
+  int partAt(int x, int y);
+  // What a click at (X, Y) does: selects the part there (EXTEND: adds it to the selection, or
+  // takes it out), or clears the selection on nothing.
+  void clickedAt(int x, int y, bool extend);
+  // Shows or hides the parts' actors together (the other models' views draw in their place).
+  void setPartsShown(bool shown);
+  bool partsShown() const { return partsShown_; }
+  // The frame the visible parts are drawn in (their common bounding sphere).
+  const DrawingFrame& drawingFrame() const { return drawing_; }
   // Everything renderOffscreen needs to redraw the current view at WIDTH x HEIGHT with the full
   // quality (the target sample count).
   RenderSettings renderSettings(int width, int height) const;
@@ -142,10 +166,19 @@ signals:
   void lightingBusyChanged(bool busy);
   // Something started moving (cheap frames from now on) or settled (refinement).
   void interactionChanged(bool interacting);
+  // The drawn parts changed (a part added, removed, shown, hidden, or its surface replaced).
+  void partsDrawn();
 
 private:
   void modelChanged(const QString& key);
-  void applySurface();
+  // Brings the part actors in line with the model's parts (surfaces loaded for new meshes,
+  // blocks or tangents, visibility); returns whether what is drawn changed.
+  bool syncParts();
+  // The drawing frame, the surfaces in it and the camera after the drawn parts changed.
+  void applySurfaces();
+  void materialsChanged(const QStringList& names);
+  // The selected parts' outline.
+  void applySelection();
   // The mapper's input: the stand-in while things move (when there is one), else the surface.
   void showDrawnSurface();
   // The loader's new lighting to the pass and the material, drawn with a cheap frame.
@@ -172,19 +205,24 @@ private:
   LutScheduler* luts_;
   vtkRenderWindow* window_;
   vtkNew<vtkOpenGLRenderer> renderer_;
-  vtkNew<vtkActor> actor_;
-  vtkNew<vtkOpenGLPolyDataMapper> mapper_;
+  struct PartView;
+  std::vector<std::unique_ptr<PartView>> parts_; // parallel to the model's parts
+  bool partsShown_ = true;
+  vtkNew<vtkActor> outline_; // the selected parts' bounding boxes
   vtkNew<vtkRenderStepsPass> steps_;
   vtkNew<vtkAnisoAccumulationPass> pass_;
   vtkNew<vtkCallbackCommand> interactionObserver_;
-  std::unique_ptr<AnisoMaterial> material_;
-  MaterialSettings full_; // what the model asks for, LUT inputs held back until baked
+  vtkNew<vtkCallbackCommand> clickObserver_;
+  int pressAt_[2] = {0, 0};
+  bool pressed_ = false;
+  MaterialSettings full_; // the first drawn part's settings, LUT inputs held back until baked
   // The surface is drawn in the frame of its unit bounding sphere (DrawingFrame.h), so the
   // renderer's camera lives there too; the model's camera stays in the mesh's coordinates.
   DrawingFrame drawing_;
-  vtkSmartPointer<vtkPolyData> surface_;      // in the mesh's coordinates, for offscreen renders
-  vtkSmartPointer<vtkPolyData> drawnSurface_; // the surface in the drawing frame
-  vtkSmartPointer<vtkPolyData> drawnInteractive_; // its stand-in while moving, or null
+  // The drawn parts together in the drawing frame (the other models' views and the comparison
+  // window draw it), and their stand-ins while moving (null when no part has one).
+  vtkSmartPointer<vtkPolyData> drawnSurface_;
+  vtkSmartPointer<vtkPolyData> drawnInteractive_;
   QTimer* settle_;
   QTimer* frame_;
   bool interacting_ = false;

@@ -57,11 +57,6 @@ SurfaceModelView::SurfaceModelView(SceneModel* model, SceneAssets* assets, Scene
                                    QObject* parent)
     : QObject(parent), model_(model), assets_(assets), view_(view), renderer_(view->renderer())
 {
-  sceneActor_ = firstActorOf(renderer_);
-  if (!sceneActor_)
-  {
-    throw errorAbout("view", "no actor to draw the surface model in place of");
-  }
   // Connected after the view and the lit model's view, so their changes are in place first.
   connect(model_, &SceneModel::valueChanged, this, &SurfaceModelView::keyChanged);
   // A new environment: LEADR's material draws with the lighting it was made with.
@@ -132,7 +127,7 @@ void SurfaceModelView::show(bool on)
   }
   if (on)
   {
-    sceneActor_->VisibilityOff();
+    view_->setPartsShown(false);
   }
 }
 
@@ -164,8 +159,7 @@ void SurfaceModelView::update()
     mapper->SetInputData(view_->surfaceToDraw());
     auto actor = vtkSmartPointer<vtkActor>::New();
     actor->SetMapper(mapper);
-    actor->SetUserMatrix(sceneActor_->GetUserMatrix());
-    setDrawingFrame(actor, drawingFrame(sceneActor_)); // the scene's mesh, its point lights
+    setDrawingFrame(actor, view_->drawingFrame()); // the scene's parts, its point lights
     std::shared_ptr<void> material = install(actor, renderer_, lighting);
     if (actor_)
     {

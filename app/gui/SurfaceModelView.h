@@ -56,7 +56,6 @@ private:
   SceneAssets* assets_;
   SceneView* view_;
   vtkRenderer* renderer_;
-  vtkActor* sceneActor_;
   vtkSmartPointer<vtkActor> actor_;
   std::shared_ptr<void> material_;                // owned by the actor it was applied to
   std::shared_ptr<EnvironmentLighting> lighting_; // what material_ draws with

@@ -12,6 +12,7 @@
 #include <QVTKOpenGLNativeWidget.h>
 #include <cstdlib>
 #include <filesystem>
+#include <QStringList>
 #include <iostream>
 #include <memory>
 
@@ -21,7 +22,8 @@ namespace
 {
 struct GuiArguments
 {
-  std::string mesh;
+  std::string mesh;               // the first MESH: it opens
+  std::vector<std::string> added; // the others: added as parts
   std::string session;
   std::string screenshot;
   std::string windowScreenshot;
@@ -74,7 +76,7 @@ GuiArguments parse(const std::vector<std::string>& args)
     }
     else
     {
-      throw cli::usageError(arg, "only one MESH can be opened");
+      a.added.push_back(arg);
     }
   }
   if (a.quit && a.screenshot.empty() && a.windowScreenshot.empty())
@@ -118,7 +120,7 @@ bool isGuiCommandLine(const std::vector<std::string>& args)
 
 std::string guiUsage()
 {
-  return "aniso [MESH] [--session FILE] [--screenshot FILE [--quit]]";
+  return "aniso [MESH...] [--session FILE] [--screenshot FILE [--quit]]";
 }
 
 int runGui(const std::vector<std::string>& args)
@@ -154,14 +156,34 @@ int runGui(const std::vector<std::string>& args)
     window.enableAutosave(QString(), a.mesh.empty() && a.session.empty() ? AutosaveRestore::Ask
                                                                         : AutosaveRestore::Keep);
   }
+  QStringList added;
+  for (const std::string& path : a.added)
+  {
+    added << QString::fromStdString(path);
+  }
   if (!a.mesh.empty() && !scripted && a.session.empty())
   {
-    // The window answers while the mesh loads (the default scene until then).
-    window.openMeshInBackground(QString::fromStdString(a.mesh));
+    // The window answers while the meshes load (the default scene until then); the others
+    // join the first as parts.
+    if (added.isEmpty())
+    {
+      window.openMeshInBackground(QString::fromStdString(a.mesh));
+    }
+    else
+    {
+      window.openMeshesInBackground(QStringList{QString::fromStdString(a.mesh)} + added);
+    }
   }
-  else if (!a.mesh.empty() && !window.openMesh(QString::fromStdString(a.mesh)) && scripted)
+  else if (!a.mesh.empty())
   {
-    throw Error(failure);
+    if (!window.openMesh(QString::fromStdString(a.mesh)) && scripted)
+    {
+      throw Error(failure);
+    }
+    if (!added.isEmpty() && !window.addMeshes(added) && scripted)
+    {
+      throw Error(failure);
+    }
   }
   if (!a.session.empty() && !window.openSession(QString::fromStdString(a.session)) && scripted)
   {

@@ -1,0 +1,236 @@
+// A scene of several parts in the window (needs an X server: Xvfb, serially). Two spheres side by
+// side, written by VTK's PLY writer (an independent writer), are opened and added as two parts:
+// the scene dock lists them with the triangle counts of the written spheres; a click on the right
+// sphere (VTK's hardware picker) selects that part in the model and the dock; a library material
+// assigned to the selection reaches only that part (its pixels turn gold, the left part's pixels
+// stay as they were, pixel checks against the image before the edit); hiding a part takes its
+// pixels away (the background shows there) and frames the visible part alone; undo brings the
+// part back; a session of the scene reopens with the same parts and materials.
+#include "app/gui/MainWindow.h"
+#include "app/gui/SceneView.h"
+#include "scene/LutScheduler.h"
+#include "widgets/SceneDock.h"
+
+#include <QListWidget>
+#include <QSignalSpy>
+#include <QStandardPaths>
+#include <QTemporaryDir>
+#include <QTreeWidget>
+#include <QUndoStack>
+#include <QtTest>
+#include <array>
+#include <vtkActor.h>
+#include <vtkCamera.h>
+#include <vtkNew.h>
+#include <vtkOpenGLRenderer.h>
+#include <vtkPLYWriter.h>
+#include <vtkPolyData.h>
+#include <vtkRenderWindow.h>
+#include <vtkSphereSource.h>
+#include <vtkUnsignedCharArray.h>
+
+using aniso::numberValue;
+using aniso::textValue;
+
+namespace
+{
+// A sphere of radius 1 at (X, 0, 0) written as binary PLY; returns its triangle count.
+long long writeSphere(const QString& path, double x)
+{
+  vtkNew<vtkSphereSource> sphere;
+  sphere->SetCenter(x, 0.0, 0.0);
+  sphere->SetRadius(1.0);
+  sphere->SetThetaResolution(32);
+  sphere->SetPhiResolution(16);
+  sphere->Update();
+  vtkNew<vtkPLYWriter> writer;
+  writer->SetFileName(path.toStdString().c_str());
+  writer->SetInputData(sphere->GetOutput());
+  writer->SetFileTypeToBinary();
+  writer->Write();
+  return sphere->GetOutput()->GetNumberOfPolys();
+}
+
+// Where the mesh-space point P is shown, in display coordinates (origin bottom left).
+std::array<int, 2> displayOf(aniso::SceneView* view, std::array<double, 3> p)
+{
+  const aniso::DrawingFrame& frame = view->drawingFrame();
+  const glm::dvec3 d = frame.pointToDrawing(glm::dvec3(p[0], p[1], p[2]));
+  vtkRenderer* renderer = view->renderer();
+  renderer->SetWorldPoint(d.x, d.y, d.z, 1.0);
+  renderer->WorldToDisplay();
+  const double* shown = renderer->GetDisplayPoint();
+  return {int(shown[0] + 0.5), int(shown[1] + 0.5)};
+}
+
+// Mean RGB (0-255) over a 7x7 square around display position AT.
+std::array<double, 3> meanAround(aniso::SceneView* view, std::array<int, 2> at)
+{
+  vtkRenderWindow* window = view->renderer()->GetRenderWindow();
+  vtkNew<vtkUnsignedCharArray> pixels;
+  window->GetRGBACharPixelData(at[0] - 3, at[1] - 3, at[0] + 3, at[1] + 3, 0, pixels);
+  std::array<double, 3> mean{0.0, 0.0, 0.0};
+  for (vtkIdType i = 0; i < pixels->GetNumberOfTuples(); ++i)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      mean[std::size_t(c)] += pixels->GetComponent(i, c);
+    }
+  }
+  for (double& m : mean)
+  {
+    m /= double(pixels->GetNumberOfTuples());
+  }
+  return mean;
+}
+
+bool settled(aniso::MainWindow& window)
+{
+  return window.view()->converged() && !window.lutScheduler()->busy();
+}
+} // namespace
+
+class TestScenePartsWindow : public QObject
+{
+  Q_OBJECT
+
+private slots:
+  void initTestCase() { QStandardPaths::setTestModeEnabled(true); }
+
+  void partsAreListedPickedEditedAndHidden()
+  {
+    QTemporaryDir dir;
+    const QString left = dir.filePath("left.ply");
+    const QString right = dir.filePath("right.ply");
+    const long long leftTriangles = writeSphere(left, -1.5);
+    const long long rightTriangles = writeSphere(right, 1.5);
+
+    aniso::MainWindow window;
+    window.setErrorDialogs(false);
+    window.view()->setSettleMs(30);
+    window.model()->setValues({{"samples", numberValue(4.0)},
+                               {"target-samples", numberValue(4.0)},
+                               {"background", textValue("color")},
+                               {"background-color", aniso::colorValue(0.0, 0.0, 0.0)}});
+    window.resize(900, 600);
+    window.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&window));
+    QSignalSpy errors(&window, &aniso::MainWindow::errorReported);
+    QVERIFY(window.openMesh(left));
+    QVERIFY(window.addMeshes({right}));
+    QCOMPARE(errors.count(), 0);
+    aniso::SceneModel* model = window.model();
+    QCOMPARE(model->parts().size(), std::size_t(2));
+    QCOMPARE(model->parts()[0].name, std::string("left"));
+    QCOMPARE(model->parts()[1].name, std::string("right"));
+
+    // The dock lists both with the triangles of the spheres written.
+    aniso::SceneDock* dock = window.sceneDock();
+    QCOMPARE(dock->partItem(0)->text(0), QString("left"));
+    QCOMPARE(dock->partItem(1)->text(2), QString::number(rightTriangles));
+    QCOMPARE(dock->partItem(0)->text(2), QString::number(leftTriangles));
+
+    aniso::SceneView* view = window.view();
+    QTRY_VERIFY_WITH_TIMEOUT(settled(window), 60000);
+    const auto leftAt = displayOf(view, {-1.5, 0.0, 0.0});
+    const auto rightAt = displayOf(view, {1.5, 0.0, 0.0});
+    const auto leftBefore = meanAround(view, leftAt);
+    const auto rightBefore = meanAround(view, rightAt);
+    QVERIFY2(leftBefore[0] + leftBefore[1] > 20.0, "the left sphere is not drawn");
+    QVERIFY2(rightBefore[0] + rightBefore[1] > 20.0, "the right sphere is not drawn");
+
+    // A click on the right sphere selects it, in the model and in the dock.
+    view->clickedAt(rightAt[0], rightAt[1], false);
+    QCOMPARE(model->selection(), std::vector<int>{1});
+    QVERIFY(dock->partItem(1)->isSelected());
+    QVERIFY(!dock->partItem(0)->isSelected());
+    // A click beside both clears it.
+    view->clickedAt(5, 5, false);
+    QVERIFY(model->selection().empty());
+    view->clickedAt(rightAt[0], rightAt[1], false);
+
+    // Gold for the selected part only.
+    dock->assignToSelection("satin gold");
+    QCOMPARE(model->parts()[1].material, std::string("satin gold"));
+    QCOMPARE(model->parts()[0].material, std::string(aniso::kDefaultMaterialName));
+    QTRY_VERIFY_WITH_TIMEOUT(settled(window), 60000);
+    const auto leftAfter = meanAround(view, leftAt);
+    const auto rightAfter = meanAround(view, rightAt);
+    // Aluminium is nearly neutral, gold (F0 1, 0.78, 0.34) has far less blue than red.
+    QVERIFY2(rightAfter[2] < 0.75 * rightAfter[0],
+             qPrintable(QString("right %1 %2 %3").arg(rightAfter[0]).arg(rightAfter[1]).arg(rightAfter[2])));
+    for (int c = 0; c < 3; ++c)
+    {
+      QVERIFY2(std::abs(leftAfter[std::size_t(c)] - leftBefore[std::size_t(c)]) < 6.0,
+               "the left part changed with the right part's material");
+    }
+
+    // An edit of the selection reaches only the right part's material.
+    const double leftNu = model->materials().at(model->parts()[0].material).value("nu").number[0];
+    window.editor()->edit("nu", numberValue(20.0));
+    QCOMPARE(model->materials().at("satin gold").value("nu").number[0], 20.0);
+    QCOMPARE(model->materials().at(model->parts()[0].material).value("nu").number[0], leftNu);
+
+    // Hidden, the right part leaves the renderer and the camera frames the left one alone.
+    window.view()->resetCamera();
+    window.editor()->setPartsVisible({1}, false);
+    QVERIFY(!view->partDrawn(1));
+    QVERIFY(!view->renderer()->HasViewProp(view->partActor(1)));
+    QCOMPARE(view->drawnTriangles(), leftTriangles);
+    const aniso::DrawingFrame& frame = view->drawingFrame();
+    QVERIFY(std::abs(frame.centre.x + 1.5) < 0.05);
+    window.editor()->undoStack()->undo();
+    QVERIFY(view->partDrawn(1));
+
+    // A session of the scene opens with the same parts and materials.
+    const QString session = dir.filePath("scene.json");
+    QVERIFY(window.saveSession(session));
+    aniso::MainWindow other;
+    other.setErrorDialogs(false);
+    QVERIFY(other.openSession(session));
+    QCOMPARE(other.model()->parts(), model->parts());
+    QVERIFY(other.model()->materials() == model->materials());
+    QCOMPARE(other.view()->partCount(), 2);
+  }
+
+  // A part whose file is gone is skipped with a warning naming the part and the file; the other
+  // part is drawn.
+  void aMissingPartIsSkipped()
+  {
+    QTemporaryDir dir;
+    const QString left = dir.filePath("left.ply");
+    const QString right = dir.filePath("right.ply");
+    writeSphere(left, -1.5);
+    writeSphere(right, 1.5);
+    aniso::MainWindow window;
+    window.setErrorDialogs(false);
+    QVERIFY(window.openMesh(left));
+    QVERIFY(window.addMeshes({right}));
+    const QString session = dir.filePath("scene.json");
+    QVERIFY(window.saveSession(session));
+    QVERIFY(QFile::remove(right));
+
+    aniso::MainWindow other;
+    other.setErrorDialogs(false);
+    QSignalSpy errors(&other, &aniso::MainWindow::errorReported);
+    QVERIFY(other.openSession(session));
+    QCOMPARE(other.model()->parts().size(), std::size_t(2));
+    QVERIFY(other.view()->partDrawn(0));
+    QVERIFY(!other.view()->partDrawn(1));
+    bool named = false;
+    for (const auto& e : errors)
+    {
+      const QString text = e.at(0).toString();
+      named = named || (text.contains("right") && text.contains("right.ply"));
+    }
+    QVERIFY(named);
+
+    // A file that fails as a whole adds nothing.
+    const auto before = other.model()->parts();
+    QVERIFY(!other.addMeshes({dir.filePath("absent.obj")}));
+    QCOMPARE(other.model()->parts(), before);
+  }
+};
+
+QTEST_MAIN(TestScenePartsWindow)
+#include "test_scene_parts_window.moc"
