@@ -45,8 +45,13 @@ CameraPlacement DrawingFrame::cameraToDrawing(const CameraPlacement& camera) con
 
 DrawingFrame drawingFrameOf(vtkPolyData* surface)
 {
+  return drawingFrameOf(std::vector<vtkPolyData*>{surface});
+}
+
+DrawingFrame drawingFrameOf(const std::vector<vtkPolyData*>& surfaces)
+{
   DrawingFrame frame;
-  boundingSphere(surface, frame.centre, frame.radius);
+  boundingSphere(surfaces, frame.centre, frame.radius);
   if (!(frame.radius > 0.0) || !std::isfinite(frame.radius))
   {
     throw errorAbout("view", "the object has no extent");

@@ -11,6 +11,7 @@
 #include "vtkpasses/render/ViewSettings.h"
 
 #include <glm/vec3.hpp>
+#include <vector>
 #include <vtkSmartPointer.h>
 
 class vtkActor;
@@ -34,6 +35,9 @@ struct DrawingFrame
 // The frame of SURFACE's bounding sphere (boundingSphere in ViewSettings.h). Throws
 // aniso::Error "view: the object has no extent" for a surface without a positive finite radius.
 DrawingFrame drawingFrameOf(vtkPolyData* surface);
+// The frame of several surfaces' joint bounding sphere (the visible parts of a scene, drawn
+// together in one frame); the same error when they have no extent together.
+DrawingFrame drawingFrameOf(const std::vector<vtkPolyData*>& surfaces);
 
 // A shallow copy of SURFACE (cells and point attributes shared: directions do not change under
 // the map) with its points mapped to FRAME, as floats.

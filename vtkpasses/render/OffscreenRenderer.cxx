@@ -32,11 +32,38 @@ namespace
 constexpr int kMaxImageSide = 16384;
 constexpr int kMaxFrames = 1 << 20;
 
-void validate(const RenderSettings& s)
+// "part NAME" (or "part 3" for an unnamed one), for messages about one of several parts.
+std::string partSubject(const RenderPart& part, std::size_t index)
 {
-  if (!s.surface || s.surface->GetNumberOfPoints() == 0 || s.surface->GetNumberOfCells() == 0)
+  return "part " + (part.name.empty() ? std::to_string(index + 1) : "'" + part.name + "'");
+}
+
+void validate(const RenderSettings& s, const std::vector<RenderPart>& parts)
+{
+  if (!s.parts.empty() && s.surface)
   {
-    throw errorAbout("mesh", "no surface to render");
+    throw errorAbout("mesh", "give either a surface or parts, not both");
+  }
+  const bool several = !s.parts.empty();
+  bool anyVisible = false;
+  for (std::size_t i = 0; i < parts.size(); ++i)
+  {
+    const RenderPart& part = parts[i];
+    if (!part.visible)
+    {
+      continue;
+    }
+    anyVisible = true;
+    if (!part.surface || part.surface->GetNumberOfPoints() == 0 ||
+        part.surface->GetNumberOfCells() == 0)
+    {
+      throw several ? errorAbout(partSubject(part, i), "no surface to render")
+                    : errorAbout("mesh", "no surface to render");
+    }
+  }
+  if (!anyVisible)
+  {
+    throw errorAbout("mesh", "no surface to render (every part is hidden)");
   }
   if (!s.environment)
   {
@@ -55,9 +82,26 @@ void validate(const RenderSettings& s)
   {
     throw errorAbout("exposure", "not a finite number");
   }
-  AnisoMaterial::validate(s.material);
+  for (std::size_t i = 0; i < parts.size(); ++i)
+  {
+    if (!parts[i].visible)
+    {
+      continue;
+    }
+    try
+    {
+      AnisoMaterial::validate(parts[i].material);
+    }
+    catch (const Error& e)
+    {
+      if (!several)
+      {
+        throw;
+      }
+      throw errorAbout(partSubject(parts[i], i), e.what());
+    }
+  }
 }
-
 } // namespace
 
 // VTK's X window aborts the process when it cannot reach a display: check first. The check's
@@ -98,32 +142,63 @@ double medianSeconds(std::vector<double> seconds)
   return n % 2 ? seconds[n / 2] : 0.5 * (seconds[n / 2 - 1] + seconds[n / 2]);
 }
 
+std::vector<RenderPart> sceneParts(const RenderSettings& s)
+{
+  if (!s.parts.empty())
+  {
+    return s.parts;
+  }
+  RenderPart part;
+  part.surface = s.surface;
+  part.material = s.material;
+  return {part};
+}
+
 RenderResult renderOffscreen(const RenderSettings& s)
 {
-  validate(s);
+  const std::vector<RenderPart> parts = sceneParts(s);
+  validate(s, parts);
   requireXDisplay();
 
   auto lighting = std::make_shared<EnvironmentLighting>(s.environment, s.cubeSize);
   lighting->setRotationDegrees(s.environmentRotationDegrees);
 
-  // Drawn in the frame of the surface's bounding sphere (DrawingFrame.h): any size or distance
-  // from the origin draws like a unit mesh at the origin.
-  const DrawingFrame drawing = drawingFrameOf(s.surface);
-  vtkNew<vtkOpenGLPolyDataMapper> mapper;
-  mapper->SetInputData(inDrawingFrame(s.surface, drawing));
-  mapper->ScalarVisibilityOff();
-  vtkNew<vtkActor> actor;
-  actor->SetMapper(mapper);
-  setDrawingFrame(actor, drawing); // for the point lights of the materials installed on it
+  // Drawn in the frame of the visible surfaces' joint bounding sphere (DrawingFrame.h): any size
+  // or distance from the origin draws like a unit mesh at the origin.
+  std::vector<vtkPolyData*> visible;
+  for (const RenderPart& part : parts)
+  {
+    if (part.visible)
+    {
+      visible.push_back(part.surface);
+    }
+  }
+  const DrawingFrame drawing = drawingFrameOf(visible);
 
   vtkNew<vtkOpenGLRenderer> renderer;
-  renderer->AddActor(actor);
   vtkNew<vtkRenderWindow> window;
   window->SetOffScreenRendering(1);
   window->SetMultiSamples(0); // pixels are sampled at their centres (or jittered) only
   window->SetAlphaBitPlanes(1);
   window->SetSize(s.width, s.height);
   window->AddRenderer(renderer);
+
+  // One actor a visible part; hidden parts are not added at all.
+  std::vector<vtkSmartPointer<vtkActor>> actors(parts.size());
+  for (std::size_t i = 0; i < parts.size(); ++i)
+  {
+    if (!parts[i].visible)
+    {
+      continue;
+    }
+    vtkNew<vtkOpenGLPolyDataMapper> mapper;
+    mapper->SetInputData(inDrawingFrame(parts[i].surface, drawing));
+    mapper->ScalarVisibilityOff();
+    actors[i] = vtkSmartPointer<vtkActor>::New();
+    actors[i]->SetMapper(mapper);
+    setDrawingFrame(actors[i], drawing); // for the point lights of the materials installed on it
+    renderer->AddActor(actors[i]);
+  }
 
   // A given camera is in the mesh's coordinates, like the surface: mapped the same way.
   applyCamera(renderer, s.camera ? drawing.cameraToDrawing(*s.camera)
@@ -138,16 +213,23 @@ RenderResult renderOffscreen(const RenderSettings& s)
   pass->SetTargetFrames(s.frames);
   renderer->SetPass(pass);
 
-  std::unique_ptr<AnisoMaterial> material;
-  std::shared_ptr<void> otherMaterial;
-  if (s.installMaterial)
+  std::vector<std::unique_ptr<AnisoMaterial>> materials(parts.size());
+  std::vector<std::shared_ptr<void>> otherMaterials;
+  for (std::size_t i = 0; i < parts.size(); ++i)
   {
-    otherMaterial = s.installMaterial(actor, renderer, lighting);
-  }
-  else
-  {
-    material = std::make_unique<AnisoMaterial>(lighting, s.material);
-    material->apply(actor, renderer);
+    if (!actors[i])
+    {
+      continue;
+    }
+    if (s.installMaterial)
+    {
+      otherMaterials.push_back(s.installMaterial(actors[i], renderer, lighting));
+    }
+    else
+    {
+      materials[i] = std::make_unique<AnisoMaterial>(lighting, parts[i].material);
+      materials[i]->apply(actors[i], renderer);
+    }
   }
 
   RenderResult result;
@@ -199,10 +281,24 @@ RenderResult renderOffscreen(const RenderSettings& s)
       result.coveredPixels += result.linear.at(x, y, 3) > 0.0f ? 1 : 0;
     }
   }
-  if (material)
+  bool first = true;
+  for (std::size_t i = 0; i < parts.size(); ++i)
   {
-    result.variant = material->variant();
-    result.mapsDropped = material->mapsDropped();
+    RenderedPart drawn;
+    drawn.name = parts[i].name;
+    drawn.visible = parts[i].visible;
+    if (materials[i])
+    {
+      drawn.variant = materials[i]->variant();
+      drawn.mapsDropped = materials[i]->mapsDropped();
+      if (first)
+      {
+        result.variant = drawn.variant;
+        first = false;
+      }
+      result.mapsDropped = result.mapsDropped || drawn.mapsDropped;
+    }
+    result.parts.push_back(std::move(drawn));
   }
   return result;
 }

@@ -1,8 +1,17 @@
 #pragma once
-// Headless rendering of one object with an anisotropic material: a plain off-screen
-// vtkRenderWindow (an X display is needed, e.g. under xvfb-run), progressive accumulation for
-// the requested number of frames, and the results read back: the linear float image (EXR) and
-// the display-transformed 8-bit one (PNG).
+// Headless rendering of a scene of parts, each with its own anisotropic material (one object with
+// one material being the scene of one part): a plain off-screen vtkRenderWindow (an X display is
+// needed, e.g. under xvfb-run), progressive accumulation for the requested number of frames over
+// the whole scene, and the results read back: the linear float image (EXR) and the
+// display-transformed 8-bit one (PNG).
+//
+// Each visible part is an actor of its own with its own AnisoMaterial; every part shares the one
+// EnvironmentLighting (the environment's textures are uploaded once per render) and, through
+// LutCache::shared(), the lookup tables of equal inputs (parts of one lobe use one table in
+// memory; each material uploads its own copy as a texture). Hidden parts are not added to the
+// renderer: they cost nothing and play no part in where the camera goes. The scene is drawn in
+// the frame of the visible parts' joint bounding sphere (DrawingFrame.h), so the camera placed by
+// `view` fits them together.
 #include "core/env/environment.h"
 #include "core/image/image.h"
 #include "vtkpasses/render/DisplaySettings.h"
@@ -32,15 +41,29 @@ class EnvironmentLighting;
 using MaterialInstaller = std::function<std::shared_ptr<void>(
     vtkActor*, vtkRenderer*, const std::shared_ptr<EnvironmentLighting>&)>;
 
-struct RenderSettings
+// One part of a scene: a surface with its own material.
+struct RenderPart
 {
+  std::string name; // for messages and RenderResult::parts
   // A prepared surface (SurfacePreparation.h): triangles with "Normals", and "Tangents",
   // "TCoords" when available.
+  vtkSmartPointer<vtkPolyData> surface;
+  MaterialSettings material;
+  bool visible = true; // a hidden part is not drawn at all (and may have no surface)
+};
+
+struct RenderSettings
+{
+  // The scene of one part: a prepared surface (as RenderPart::surface) drawn with `material`.
+  // Used when `parts` is empty.
   vtkSmartPointer<vtkPolyData> surface;
   std::shared_ptr<const Environment> environment;
   int cubeSize = 256; // level-0 face of the environment cubemap
   double environmentRotationDegrees = 0.0;
   MaterialSettings material;
+  // A scene of several parts, drawn together instead of `surface` with `material` (`surface`
+  // must then be unset; `material` is not drawn, though installers may read it).
+  std::vector<RenderPart> parts;
   DisplaySettings display;
   ViewSettings view;
   // When set, this camera is used as it is instead of one placed by `view` (the application's
@@ -50,8 +73,22 @@ struct RenderSettings
   int height = 512;
   int frames = 1;     // progressive frames accumulated (each with its own sample shift)
   bool jitter = true; // sub-pixel camera jitter between frames (anti-aliasing)
-  // When set, the object is shaded by this instead of `material` (which is then unused).
+  // When set, the object is shaded by this instead of `material` (which is then unused). In a
+  // scene of parts it is installed on every visible part (called once for each part's actor),
+  // in place of the parts' own materials: one shading model and material for the scene.
   MaterialInstaller installMaterial;
+};
+
+// The parts SETTINGS draws: `parts`, or the one part made of `surface` and `material`.
+std::vector<RenderPart> sceneParts(const RenderSettings& settings);
+
+// What was drawn of a part.
+struct RenderedPart
+{
+  std::string name;
+  bool visible = true;
+  MaterialVariant variant; // the anisotropic material's compiled variant (visible parts)
+  bool mapsDropped = false;
 };
 
 struct RenderResult
@@ -60,13 +97,15 @@ struct RenderResult
   Image display; // RGBA in [0, 1] holding the 8-bit values / 255 of the displayed frame
   std::vector<double> frameSeconds; // wall time of each frame, GPU work included
   int64_t coveredPixels = 0;        // pixels with coverage > 0
-  MaterialVariant variant;          // the shader variant that was compiled
-  bool mapsDropped = false;         // maps given but the mesh has no texture coordinates
+  MaterialVariant variant;          // the shader variant of the first visible part
+  bool mapsDropped = false;         // maps given but a visible mesh has no texture coordinates
   std::string renderer;             // the OpenGL renderer string (e.g. "llvmpipe ...")
+  std::vector<RenderedPart> parts;  // every part of sceneParts(), in order
 };
 
-// Throws aniso::Error "SUBJECT: reason" for invalid settings, a missing display or a failed
-// OpenGL context.
+// Throws aniso::Error "SUBJECT: reason" for invalid settings (a visible part's invalid material
+// names the part: "part NAME: SUBJECT: reason"), a scene with nothing visible, a missing display
+// or a failed OpenGL context.
 RenderResult renderOffscreen(const RenderSettings& settings);
 
 // Opens this process's connection to the X display named by DISPLAY, once, and keeps it open

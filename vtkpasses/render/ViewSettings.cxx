@@ -41,18 +41,42 @@ glm::dvec3 viewDirectionFromAngles(double azimuthDegrees, double elevationDegree
 
 void boundingSphere(vtkPolyData* surface, glm::dvec3& centre, double& radius)
 {
-  double bounds[6];
-  surface->GetBounds(bounds);
+  boundingSphere(std::vector<vtkPolyData*>{surface}, centre, radius);
+}
+
+void boundingSphere(const std::vector<vtkPolyData*>& surfaces, glm::dvec3& centre, double& radius)
+{
+  double bounds[6] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
+  bool first = true;
+  for (vtkPolyData* surface : surfaces)
+  {
+    if (!surface || surface->GetNumberOfPoints() == 0)
+    {
+      continue;
+    }
+    double b[6];
+    surface->GetBounds(b);
+    for (int axis = 0; axis < 3; ++axis)
+    {
+      bounds[2 * axis] = first ? b[2 * axis] : std::min(bounds[2 * axis], b[2 * axis]);
+      bounds[2 * axis + 1] =
+          first ? b[2 * axis + 1] : std::max(bounds[2 * axis + 1], b[2 * axis + 1]);
+    }
+    first = false;
+  }
   centre = {0.5 * (bounds[0] + bounds[1]), 0.5 * (bounds[2] + bounds[3]),
             0.5 * (bounds[4] + bounds[5])};
   double r2 = 0.0;
-  vtkPoints* points = surface->GetPoints();
-  for (vtkIdType i = 0; points && i < points->GetNumberOfPoints(); ++i)
+  for (vtkPolyData* surface : surfaces)
   {
-    double p[3];
-    points->GetPoint(i, p);
-    const glm::dvec3 d = glm::dvec3(p[0], p[1], p[2]) - centre;
-    r2 = std::max(r2, glm::dot(d, d));
+    vtkPoints* points = surface ? surface->GetPoints() : nullptr;
+    for (vtkIdType i = 0; points && i < points->GetNumberOfPoints(); ++i)
+    {
+      double p[3];
+      points->GetPoint(i, p);
+      const glm::dvec3 d = glm::dvec3(p[0], p[1], p[2]) - centre;
+      r2 = std::max(r2, glm::dot(d, d));
+    }
   }
   radius = std::sqrt(r2);
 }

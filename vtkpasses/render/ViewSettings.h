@@ -3,6 +3,7 @@
 // bounding sphere from a direction, far enough for the sphere to fit the view.
 #include <glm/vec3.hpp>
 #include <string>
+#include <vector>
 
 class vtkPolyData;
 class vtkRenderer;
@@ -37,6 +38,10 @@ struct CameraPlacement
 // A sphere around every point of SURFACE: the bounding box's centre and the distance to the
 // farthest point.
 void boundingSphere(vtkPolyData* surface, glm::dvec3& centre, double& radius);
+// The sphere around several surfaces together (a scene of parts; null ones are skipped): the
+// centre of their joint bounding box and the distance to the farthest point of any. For one
+// surface, the same sphere as above.
+void boundingSphere(const std::vector<vtkPolyData*>& surfaces, glm::dvec3& centre, double& radius);
 
 // The camera for an object with bounding sphere (centre, radius > 0).
 CameraPlacement placeCamera(const ViewSettings& view, const glm::dvec3& centre, double radius);
