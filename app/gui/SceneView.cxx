@@ -18,7 +18,7 @@
 #include <vtkAppendPolyData.h>
 #include <vtkOutlineSource.h>
 #include <vtkPolyDataMapper.h>
-#include <vtkPropPicker.h>
+#include <vtkCellPicker.h>
 #include <vtkProperty.h>
 #include <vtkCallbackCommand.h>
 #include <vtkCommand.h>
@@ -160,8 +160,8 @@ SceneView::SceneView(SceneModel* model, SceneAssets* assets, LutScheduler* luts,
         [](vtkObject* caller, unsigned long event, void* self, void*)
         {
           auto* view = static_cast<SceneView*>(self);
-          auto* interactor = static_cast<vtkRenderWindowInteractor*>(caller);
-          const int* at = interactor->GetEventPosition();
+          auto* source = static_cast<vtkRenderWindowInteractor*>(caller);
+          const int* at = source->GetEventPosition();
           if (event == vtkCommand::LeftButtonPressEvent)
           {
             view->pressAt_[0] = at[0];
@@ -178,7 +178,7 @@ SceneView::SceneView(SceneModel* model, SceneAssets* assets, LutScheduler* luts,
           {
             return; // a drag: the camera moved
           }
-          const bool extend = interactor->GetControlKey() || interactor->GetShiftKey();
+          const bool extend = source->GetControlKey() || source->GetShiftKey();
           view->clickedAt(at[0], at[1], extend);
         });
     // Before the interactor style (higher priority): the style still rotates on a drag.
@@ -493,7 +493,7 @@ void SceneView::applySurfaces()
   if (!surfaces.empty())
   {
     // The visible parts' common bounding sphere: framing fits them, hidden parts do not count.
-    drawing_ = drawingFrameOf(appended(surfaces));
+    drawing_ = drawingFrameOf(surfaces);
   }
   std::vector<vtkPolyData*> drawn;
   std::vector<vtkPolyData*> interactive;
@@ -621,8 +621,19 @@ long long SceneView::partTriangles(int part) const
 
 int SceneView::partAt(int x, int y)
 {
-  // VTK's hardware picker (a selection render of the props, not of the accumulated image).
-  vtkNew<vtkPropPicker> picker;
+  // A ray cast through the parts' triangles (vtkCellPicker): nothing is rendered, so a
+  // converged image stays as it is. (VTK's hardware picker, vtkPropPicker, renders a selection
+  // pass, and under the accumulation pass finds nothing.)
+  vtkNew<vtkCellPicker> picker;
+  picker->SetTolerance(0.0);
+  picker->PickFromListOn();
+  for (const auto& part : parts_)
+  {
+    if (part->inRenderer && part->actor->GetVisibility())
+    {
+      picker->AddPickList(part->actor);
+    }
+  }
   if (!picker->Pick(x, y, 0.0, renderer_))
   {
     return -1;
