@@ -16,6 +16,32 @@ ParameterPanel::ParameterPanel(SceneEditor* editor, QWidget* parent)
 {
   form_->setFieldGrowthPolicy(QFormLayout::AllNonFixedFieldsGrow);
   connect(model(), &SceneModel::valueChanged, this, &ParameterPanel::modelChanged);
+  // Several parts of different materials selected: their differing values are marked mixed.
+  connect(model(), &SceneModel::selectionChanged, this, &ParameterPanel::markMixed);
+  connect(model(), &SceneModel::materialsChanged, this, &ParameterPanel::markMixed);
+  connect(model(), &SceneModel::partsChanged, this, &ParameterPanel::markMixed);
+}
+
+void ParameterPanel::markMixed()
+{
+  for (const auto& [key, control] : controls_)
+  {
+    auto* label = qobject_cast<QLabel*>(form_->labelForField(control));
+    if (!label || !isMaterialKey(key))
+    {
+      continue;
+    }
+    const QString base = QString::fromStdString(std::string(sceneKey(key).spec.label));
+    const bool mixed = model()->mixed(key);
+    // The control shows the first selected part's value; the label says the others differ.
+    label->setText(mixed ? tr("%1 (mixed)").arg(base) : base);
+    QFont font = label->font();
+    font.setItalic(mixed);
+    label->setFont(font);
+    control->setToolTip(mixed ? tr("The selected parts' materials differ here; the value shown "
+                                   "is the first part's, an edit sets it on all of them")
+                              : parameterToolTip(control->spec()));
+  }
 }
 
 ParameterControl* ParameterPanel::addParameter(std::string_view key)
@@ -50,6 +76,7 @@ ParameterControl* ParameterPanel::addParameter(std::string_view key)
   label->setBuddy(c);
   form_->addRow(label, c);
   controls_.emplace(name, c);
+  markMixed();
   return c;
 }
 

@@ -45,6 +45,9 @@ signals:
   void errorOccurred(const QString& message);
 
 private:
+  // The label of each material key's control says "(mixed)" when the edited parts' materials
+  // differ in it (SceneModel::mixed).
+  void markMixed();
   void modelChanged(const QString& key);
 
   SceneEditor* editor_;

@@ -113,6 +113,11 @@ SceneView::SceneView(SceneModel* model, SceneAssets* assets, LutScheduler* luts,
   pass_->SetDelegatePass(steps_);
   renderer_->SetPass(pass_);
   window_->AddRenderer(renderer_);
+  window_->SetNumberOfLayers(std::max(2, window_->GetNumberOfLayers()));
+  overlay_->SetLayer(1);
+  overlay_->InteractiveOff();
+  overlay_->SetActiveCamera(renderer_->GetActiveCamera());
+  window_->AddRenderer(overlay_);
 
   settle_->setObjectName("settle");
   frame_->setObjectName("frame");
@@ -227,7 +232,18 @@ SceneView::SceneView(SceneModel* model, SceneAssets* assets, LutScheduler* luts,
           });
   connect(model_, &SceneModel::materialsChanged, this, &SceneView::materialsChanged);
   connect(model_, &SceneModel::selectionChanged, this, [this] { applySelection(); });
-  connect(luts_, &LutScheduler::lutsReady, this, [this] { applyMaterial(); });
+  // New tables reach the parts that waited for them, and those draw anew (a still view may
+  // have converged with the tables it had).
+  connect(luts_, &LutScheduler::lutsReady, this,
+          [this]
+          {
+            changedSettings_ = false;
+            attempt([this] { applyMaterial(); });
+            if (changedSettings_)
+            {
+              requestRender();
+            }
+          });
   connect(lightingLoader_, &LightingLoader::shown, this, &SceneView::lightingShown);
   connect(lightingLoader_, &LightingLoader::busyChanged, this, &SceneView::lightingBusyChanged);
   connect(lightingLoader_, &LightingLoader::failed, this, &SceneView::errorOccurred);
@@ -261,6 +277,7 @@ SceneView::~SceneView()
   }
   renderTimer_.reset();
   parts_.clear();
+  window_->RemoveRenderer(overlay_);
   window_->RemoveRenderer(renderer_);
 }
 
@@ -608,6 +625,11 @@ vtkActor* SceneView::partActor(int part) const
   return parts_.at(std::size_t(part))->actor;
 }
 
+const AnisoMaterial* SceneView::partMaterial(int part) const
+{
+  return parts_.at(std::size_t(part))->shading.get();
+}
+
 bool SceneView::partDrawn(int part) const
 {
   return parts_.at(std::size_t(part))->inRenderer;
@@ -709,14 +731,14 @@ void SceneView::applySelection()
     vtkNew<vtkPolyDataMapper> mapper;
     mapper->SetInputData(box->GetOutput());
     outline_->SetMapper(mapper);
-    if (!renderer_->HasViewProp(outline_))
+    if (!overlay_->HasViewProp(outline_))
     {
-      renderer_->AddActor(outline_);
+      overlay_->AddActor(outline_);
     }
   }
-  else if (renderer_->HasViewProp(outline_))
+  else if (overlay_->HasViewProp(outline_))
   {
-    renderer_->RemoveActor(outline_);
+    overlay_->RemoveActor(outline_);
   }
   outline_->SetVisibility(show);
   requestRender();
@@ -830,6 +852,7 @@ void SceneView::applyMaterial()
     first = false;
     // The scheduler's tables when they are this part's: nothing is read or baked here for the
     // edited parts, even when the cache has dropped them from memory since.
+    changedSettings_ = changedSettings_ || shown != part.shading->settings();
     if (baked)
     {
       part.shading->setSettings(shown, ready.halfVector, ready.brdf);

@@ -48,6 +48,7 @@ class vtkOpenGLPolyDataMapper;
 class vtkOpenGLRenderer;
 class vtkRenderStepsPass;
 class vtkRenderWindow;
+class vtkRenderer;
 class vtkCallbackCommand;
 
 namespace aniso
@@ -85,6 +86,8 @@ public:
   int partCount() const { return int(parts_.size()); }
   // Part I's actor (a valid index), in the renderer when the part is drawn.
   vtkActor* partActor(int part) const;
+  // Part I's material (null until the part was first drawn).
+  const AnisoMaterial* partMaterial(int part) const;
   // Whether part I is drawn (visible and loaded).
   bool partDrawn(int part) const;
   // Triangles of part I's surface (-1 when it did not load).
@@ -208,7 +211,10 @@ private:
   struct PartView;
   std::vector<std::unique_ptr<PartView>> parts_; // parallel to the model's parts
   bool partsShown_ = true;
-  vtkNew<vtkActor> outline_; // the selected parts' bounding boxes
+  // The selected parts' bounding boxes, drawn by a renderer of their own over the scene's (its
+  // layer 1, sharing its camera): selecting a part leaves the accumulated image as it is.
+  vtkNew<vtkRenderer> overlay_;
+  vtkNew<vtkActor> outline_;
   vtkNew<vtkRenderStepsPass> steps_;
   vtkNew<vtkAnisoAccumulationPass> pass_;
   vtkNew<vtkCallbackCommand> interactionObserver_;
@@ -235,6 +241,7 @@ private:
   QElapsedTimer presentClock_;  // since a frame last reached the screen
   bool presentPending_ = false; // presentFrame is queued
   bool maxTextureSideKnown_ = false;
+  bool changedSettings_ = false; // applyMaterial gave a part other settings
   // Errors of the renderer (VTK's error output while drawing, glGetError after a frame), each
   // distinct message reported once, queued as errorOccurred.
   RenderErrorOutput errors_;

@@ -114,6 +114,8 @@ public:
   MaterialVariant installed; // while hook.installed()
   MeshArrays mesh;
   bool dropped = false;
+  bool adopted = false; // settings taken at least once
+  Counters counters;
 
   std::shared_ptr<const HalfVectorLut> halfVectorLut;
   std::shared_ptr<const BrdfLut> brdfLut;
@@ -164,6 +166,7 @@ public:
     halfVectorLut = std::move(halfVectors);
     brdfLut = std::move(brdf);
     settings = s;
+    adopted = true;
   }
 
   // The mesh the mapper is about to draw chooses the variant.
@@ -196,6 +199,7 @@ public:
     hooked.uniform = "anisoSampleCount";
     hook.install(hooked);
     installed = v;
+    ++counters.shaderInstalls;
   }
 
   // (Re)creates the textures whose source changed, in WINDOW's context.
@@ -209,7 +213,7 @@ public:
       }
       textureWindow = window;
     }
-    auto refresh = [](Texture& texture, std::shared_ptr<const void> source, auto&& make)
+    auto refresh = [this](Texture& texture, std::shared_ptr<const void> source, auto&& make)
     {
       if (!source)
       {
@@ -222,6 +226,7 @@ public:
         // is gone; binding it would bind target 0 (GL_INVALID_ENUM) and leave it active.
         texture.object = make();
         texture.source = source;
+        ++counters.textureUploads;
       }
     };
     refresh(halfVectorTexture, halfVectorLut,
@@ -413,6 +418,10 @@ void AnisoMaterial::setSettings(const MaterialSettings& settings,
                                 std::shared_ptr<const BrdfLut> brdf)
 {
   validate(settings);
+  if (impl_->adopted && settings == impl_->settings)
+  {
+    return; // its tables are the ones held: nothing to upload, nothing to draw anew
+  }
   impl_->adopt(settings, halfVector, brdf);
   if (impl_->hook.installed())
   {
@@ -450,5 +459,10 @@ MaterialVariant AnisoMaterial::variant() const
 bool AnisoMaterial::mapsDropped() const
 {
   return impl_->dropped;
+}
+
+const AnisoMaterial::Counters& AnisoMaterial::counters() const
+{
+  return impl_->counters;
 }
 } // namespace aniso

@@ -57,6 +57,16 @@ public:
   // True when maps were asked for but the mesh has no texture coordinates to read them with.
   bool mapsDropped() const;
 
+  // What the material has done to the GPU so far: shader variants installed (each compiles once
+  // drawn) and textures uploaded (lookup tables and maps). Settings equal to the current ones
+  // change nothing (not even the accumulation: the image stays converged).
+  struct Counters
+  {
+    int shaderInstalls = 0;
+    int textureUploads = 0;
+  };
+  const Counters& counters() const;
+
   // Throws aniso::Error "name: reason" unless SETTINGS can be rendered.
   static void validate(const MaterialSettings& settings);
 

@@ -52,6 +52,21 @@ struct MaterialSettings
   std::shared_ptr<const Image> occlusionMap;  // R = ambient occlusion
   std::shared_ptr<const Image> metallicMap;   // R = metalness (1: F0, no diffuse; 0: F0 = 0.04)
 
+  // Every field equal, maps by identity (the same images).
+  bool operator==(const MaterialSettings& o) const
+  {
+    return lobe.nu == o.lobe.nu && lobe.nv == o.lobe.nv && f0 == o.f0 && albedo == o.albedo &&
+           samples == o.samples && heightScale == o.heightScale &&
+           pixelDecorrelation == o.pixelDecorrelation && misLobeShare == o.misLobeShare &&
+           method == o.method && filtered == o.filtered && halfVectors == o.halfVectors &&
+           lutSize == o.lutSize && brdfLutSamples == o.brdfLutSamples &&
+           environmentSampling == o.environmentSampling && normalMap == o.normalMap &&
+           quaternionMap == o.quaternionMap && tprMap == o.tprMap && heightMap == o.heightMap &&
+           albedoMap == o.albedoMap && occlusionMap == o.occlusionMap &&
+           metallicMap == o.metallicMap;
+  }
+  bool operator!=(const MaterialSettings& o) const { return !(*this == o); }
+
   bool usesMaps() const
   {
     return normalMap || quaternionMap || tprMap || heightMap || albedoMap || occlusionMap ||

@@ -8,9 +8,12 @@
 // part back; a session of the scene reopens with the same parts and materials.
 #include "app/gui/MainWindow.h"
 #include "app/gui/SceneView.h"
+#include "core/lut/lut_cache.h"
+#include "vtkpasses/render/AnisoMaterial.h"
 #include "scene/LutScheduler.h"
 #include "widgets/SceneDock.h"
 
+#include <QFile>
 #include <QListWidget>
 #include <QSignalSpy>
 #include <QStandardPaths>
@@ -21,7 +24,11 @@
 #include <array>
 #include <vtkActor.h>
 #include <vtkCamera.h>
+#include <vtkCompositeDataSet.h>
+#include <vtkInformation.h>
+#include <vtkMultiBlockDataSet.h>
 #include <vtkNew.h>
+#include <vtkXMLMultiBlockDataWriter.h>
 #include <vtkOpenGLRenderer.h>
 #include <vtkPLYWriter.h>
 #include <vtkPolyData.h>
@@ -165,6 +172,32 @@ private slots:
                "the left part changed with the right part's material");
     }
 
+    // Selecting a part compiles, uploads and bakes nothing; an edit of one part's material
+    // uploads only that part's new table (the materials' counters, the LUT cache's bakes).
+    QTRY_VERIFY_WITH_TIMEOUT(settled(window), 60000);
+    const auto counters = [&](int part) { return view->partMaterial(part)->counters(); };
+    const auto left0 = counters(0);
+    const auto right0 = counters(1);
+    const auto bakes0 = window.lutScheduler()->cache().stats().bakes;
+    model->setSelection({0});
+    QTRY_VERIFY_WITH_TIMEOUT(settled(window), 60000);
+    model->setSelection({1});
+    QTRY_VERIFY_WITH_TIMEOUT(settled(window), 60000);
+    QCOMPARE(counters(0).shaderInstalls, left0.shaderInstalls);
+    QCOMPARE(counters(0).textureUploads, left0.textureUploads);
+    QCOMPARE(counters(1).shaderInstalls, right0.shaderInstalls);
+    QCOMPARE(counters(1).textureUploads, right0.textureUploads);
+    QCOMPARE(window.lutScheduler()->cache().stats().bakes, bakes0);
+    window.editor()->edit("f0", aniso::colorValue(1.0, 0.5, 0.2));
+    window.editor()->edit("nu", numberValue(37.0));
+    QTRY_VERIFY_WITH_TIMEOUT(settled(window), 60000);
+    QCOMPARE(counters(0).shaderInstalls, left0.shaderInstalls);
+    QCOMPARE(counters(0).textureUploads, left0.textureUploads);
+    QCOMPARE(counters(1).shaderInstalls, right0.shaderInstalls); // n_u and F0 are uniforms
+    QVERIFY(counters(1).textureUploads > right0.textureUploads);  // the new half-vector table
+    QCOMPARE(model->materials().at(model->parts()[0].material).value("f0").number[0],
+             aniso::builtinMaterials().at(aniso::kDefaultMaterialName).value("f0").number[0]);
+
     // An edit of the selection reaches only the right part's material.
     const double leftNu = model->materials().at(model->parts()[0].material).value("nu").number[0];
     window.editor()->edit("nu", numberValue(20.0));
@@ -191,6 +224,64 @@ private slots:
     QCOMPARE(other.model()->parts(), model->parts());
     QVERIFY(other.model()->materials() == model->materials());
     QCOMPARE(other.view()->partCount(), 2);
+  }
+
+  // A file's blocks become its parts, grouped under the file: an OBJ's groups (written here) and
+  // a VTM's blocks (written by VTK's multiblock writer); undo of the add takes them away.
+  void aFilesBlocksBecomeItsParts()
+  {
+    QTemporaryDir dir;
+    const QString obj = dir.filePath("pair.obj");
+    {
+      QFile f(obj);
+      QVERIFY(f.open(QIODevice::WriteOnly));
+      f.write("v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nv 1 0 1\nv 0 1 1\n"
+              "g lower\nf 1 2 3\ng upper\nf 4 5 6\n");
+    }
+    const QString vtm = dir.filePath("blocks.vtm");
+    {
+      vtkNew<vtkMultiBlockDataSet> blocks;
+      vtkNew<vtkSphereSource> sphere;
+      sphere->SetCenter(3.0, 0.0, 0.0);
+      sphere->Update();
+      vtkNew<vtkSphereSource> other;
+      other->SetCenter(-3.0, 0.0, 0.0);
+      other->SetThetaResolution(12);
+      other->Update();
+      blocks->SetNumberOfBlocks(2);
+      blocks->SetBlock(0, sphere->GetOutput());
+      blocks->GetMetaData(0u)->Set(vtkCompositeDataSet::NAME(), "ball");
+      blocks->SetBlock(1, other->GetOutput());
+      blocks->GetMetaData(1u)->Set(vtkCompositeDataSet::NAME(), "lower");
+      vtkNew<vtkXMLMultiBlockDataWriter> writer;
+      writer->SetFileName(vtm.toStdString().c_str());
+      writer->SetInputData(blocks);
+      QVERIFY(writer->Write() == 1);
+    }
+    aniso::MainWindow window;
+    window.setErrorDialogs(false);
+    QVERIFY(window.openMesh(obj));
+    aniso::SceneModel* model = window.model();
+    QCOMPARE(model->parts().size(), std::size_t(2));
+    QCOMPARE(model->parts()[0].name, std::string("lower"));
+    QCOMPARE(model->parts()[1].block, std::string("upper"));
+    QCOMPARE(model->parts()[1].group, std::string("pair.obj"));
+    QCOMPARE(window.view()->partTriangles(0), 1LL);
+    QVERIFY(window.addMeshes({vtm}));
+    QCOMPARE(model->parts().size(), std::size_t(4));
+    QCOMPARE(model->parts()[2].name, std::string("ball"));
+    QCOMPARE(model->parts()[3].name, std::string("lower 2")); // unique in the scene
+    QCOMPARE(model->parts()[3].block, std::string("lower"));
+    QCOMPARE(model->parts()[3].group, std::string("blocks.vtm"));
+    QVERIFY(window.view()->partTriangles(3) > 0);
+    // The dock shows the two files as groups of two parts each.
+    QTreeWidget* tree = window.sceneDock()->tree();
+    QCOMPARE(tree->topLevelItemCount(), 2);
+    QCOMPARE(tree->topLevelItem(1)->text(0), QString("blocks.vtm"));
+    QCOMPARE(tree->topLevelItem(1)->childCount(), 2);
+    window.editor()->undoStack()->undo();
+    QCOMPARE(model->parts().size(), std::size_t(2));
+    QCOMPARE(window.view()->partCount(), 2);
   }
 
   // A part whose file is gone is skipped with a warning naming the part and the file; the other
