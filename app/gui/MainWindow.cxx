@@ -128,7 +128,10 @@ MainWindow::MainWindow(QWidget* parent)
   lightsDock_ = new LightsDock(&editor_, this);
   sceneDock_ = new SceneDock(&editor_, this);
   addDockWidget(Qt::RightDockWidgetArea, sceneDock_);
-  sceneDock_->setTriangleCounts([this](int part) { return view_->partTriangles(part); });
+  // The view may hear of new parts before the dock does: a part it does not have yet is not
+  // loaded yet.
+  sceneDock_->setTriangleCounts(
+      [this](int part) { return part < view_->partCount() ? view_->partTriangles(part) : -1; });
   connect(view_, &SceneView::partsDrawn, sceneDock_, &SceneDock::refreshCounts);
   // Lights sit in a short strip under the view (not in a tab), so every dock is visible at once;
   // the side columns keep the bottom corners.
