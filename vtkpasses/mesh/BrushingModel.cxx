@@ -2,6 +2,7 @@
 
 #include "core/error.h"
 #include "core/frame.h"
+#include "core/parameters/parameters.h"
 #include "vtkpasses/mesh/GeometryAccess.h"
 
 #include <algorithm>
@@ -86,12 +87,10 @@ glm::dvec3 unitAxis(const glm::dvec3& axis, const std::string& subject, const st
   return scaled / scaledLength;
 }
 
+// The shortest spelling of each number that reads back to it ("0.9", not 0.90000000000000002).
 std::string formatTriple(const glm::dvec3& v)
 {
-  std::ostringstream out;
-  out.precision(17);
-  out << v.x << ',' << v.y << ',' << v.z;
-  return out.str();
+  return formatNumber(v.x) + ',' + formatNumber(v.y) + ',' + formatNumber(v.z);
 }
 
 using geometry::tupleAt;
