@@ -12,8 +12,12 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <functional>
 #include <glm/gtc/type_ptr.hpp>
+#include <map>
+#include <memory>
 #include <string>
+#include <tuple>
 #include <vtkInformation.h>
 #include <vtkInformationDoubleVectorKey.h>
 #include <vtkInformationIntegerKey.h>
@@ -97,6 +101,58 @@ Image asRgb(const Image& image)
   return rgb;
 }
 } // namespace
+
+// Textures made from the same data in the same window, shared by every material that draws
+// with them: the parts of a scene that share a lobe share its lookup tables' textures, and maps
+// read once are uploaded once. Weak: a texture lives while a material uses it.
+class SharedTextures
+{
+public:
+  using Make = std::function<vtkSmartPointer<vtkTextureObject>()>;
+  // The texture of SOURCE's data as KIND (a material uploads a map as one kind only) in WINDOW:
+  // one alive already, else MAKE's (counted in UPLOADS).
+  vtkSmartPointer<vtkTextureObject> get(vtkOpenGLRenderWindow* window,
+                                        const std::shared_ptr<const void>& source,
+                                        const char* kind, const Make& make, int& uploads)
+  {
+    const Key key{window, source.get(), kind};
+    auto it = textures_.find(key);
+    // The data must be the same object, not a new one at the address of a freed one: the
+    // entry's source is still alive.
+    if (it != textures_.end() && !it->second.source.expired())
+    {
+      vtkSmartPointer<vtkTextureObject> alive = it->second.texture.Get();
+      if (alive && alive->GetHandle() != 0)
+      {
+        return alive;
+      }
+    }
+    vtkSmartPointer<vtkTextureObject> made = make();
+    ++uploads;
+    textures_[key] = Entry{made.Get(), source};
+    // Entries whose texture or data died go, so the map stays as small as what is in use.
+    for (auto e = textures_.begin(); e != textures_.end();)
+    {
+      e = e->second.texture && !e->second.source.expired() ? std::next(e) : textures_.erase(e);
+    }
+    return made;
+  }
+
+  static SharedTextures& instance()
+  {
+    static SharedTextures shared;
+    return shared;
+  }
+
+private:
+  using Key = std::tuple<const void*, const void*, std::string>;
+  struct Entry
+  {
+    vtkWeakPointer<vtkTextureObject> texture;
+    std::weak_ptr<const void> source;
+  };
+  std::map<Key, Entry> textures_;
+};
 
 class AnisoMaterial::Impl
 {
@@ -213,7 +269,9 @@ public:
       }
       textureWindow = window;
     }
-    auto refresh = [this](Texture& texture, std::shared_ptr<const void> source, auto&& make)
+    const char* kind = nullptr;
+    auto refresh = [this, window, &kind](Texture& texture, std::shared_ptr<const void> source,
+                                         auto&& make)
     {
       if (!source)
       {
@@ -224,11 +282,12 @@ public:
         // A handle of 0: released with the window's context (QVTKOpenGLNativeWidget makes a
         // new one when it is shown or moved), so the window is the same object but the texture
         // is gone; binding it would bind target 0 (GL_INVALID_ENUM) and leave it active.
-        texture.object = make();
+        texture.object =
+            SharedTextures::instance().get(window, source, kind, make, counters.textureUploads);
         texture.source = source;
-        ++counters.textureUploads;
       }
     };
+    kind = "half-vector LUT";
     refresh(halfVectorTexture, halfVectorLut,
             [&]
             {
@@ -236,6 +295,7 @@ public:
                                         halfVectorLut->rgba.data(), TextureFiltering::Nearest,
                                         TextureWrap::Clamp, "half-vector LUT");
             });
+    kind = "BRDF LUT";
     refresh(brdfTexture, brdfLut,
             [&]
             {
@@ -246,6 +306,7 @@ public:
     auto mapTexture = [&](Texture& texture, bool used, const std::shared_ptr<const Image>& image,
                           int channels, const char* name)
     {
+      kind = name;
       refresh(texture, used ? image : nullptr,
               [&] { return uploadMapTexture(window, *image, channels, name); });
     };
@@ -255,6 +316,7 @@ public:
     mapTexture(heightTexture, v.heightMap, settings.heightMap, 1, "height map");
     mapTexture(occlusionTexture, v.occlusionMap, settings.occlusionMap, 1, "occlusion map");
     mapTexture(metallicTexture, v.metallicMap, settings.metallicMap, 1, "metallic map");
+    kind = "albedo map";
     refresh(albedoTexture, v.albedoMap ? settings.albedoMap : nullptr,
             [&] { return uploadMapTexture(window, asRgb(*settings.albedoMap), 3, "albedo map"); });
   }

@@ -58,7 +58,9 @@ public:
   bool mapsDropped() const;
 
   // What the material has done to the GPU so far: shader variants installed (each compiles once
-  // drawn) and textures uploaded (lookup tables and maps). Settings equal to the current ones
+  // drawn) and textures uploaded (lookup tables and maps; a texture another material made of the
+  // same data in the same window is shared, not uploaded again: parts of one lobe share their
+  // tables' textures). Settings equal to the current ones
   // change nothing (not even the accumulation: the image stays converged).
   struct Counters
   {
