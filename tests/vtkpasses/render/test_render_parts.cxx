@@ -11,6 +11,8 @@
 //    discs of radius 1 over the view's (2 x 2.5 x margin)^2, within 2% (the faceted sphere's
 //    outline is a polygon), none on the image's border, as many left as right; with the right
 //    one hidden, the image is the left sphere's rendered alone (the camera fits it);
+//  - 225 parts, more than a draw has texture units, of two lobes in turn render the image of
+//    each lobe's spheres merged into one part (an identity: each part reads its own table);
 //  - parts of one lobe share one half-vector table: LutCache::shared() makes (bakes or reads)
 //    one table per distinct lobe and serves every further part of that lobe from memory;
 //  - invalid scenes are refused before any drawing, naming the part.
