@@ -14,8 +14,10 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <mutex>
 #include <new>
+#include <set>
 #include <system_error>
 #include <vector>
 #include <vtkDataArray.h>
@@ -27,7 +29,8 @@ namespace aniso
 {
 namespace
 {
-const char* const kExtensions[] = {".obj", ".ply", ".stl", ".off", ".vtk", ".vtp", ".gltf", ".glb"};
+const char* const kExtensions[] = {".obj", ".ply", ".stl",  ".off", ".vtk",
+                                   ".vtp", ".vtm", ".gltf", ".glb"};
 
 std::mutex& loadMutex()
 {
@@ -41,6 +44,40 @@ std::string lowerExtension(const std::filesystem::path& path)
   std::transform(ext.begin(), ext.end(), ext.begin(),
                  [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
   return ext;
+}
+
+// A .vtm is a small index of the files that hold its data (file="..." attributes, relative to
+// its folder): the reader program's memory budget counts those files too. Indexes beyond 16 MiB
+// are not looked into (they count as themselves).
+uintmax_t readingSize(const std::filesystem::path& file, const std::string& ext, uintmax_t size)
+{
+  constexpr uintmax_t kMaxIndexBytes = 16u << 20;
+  if (ext != ".vtm" || size > kMaxIndexBytes)
+  {
+    return size;
+  }
+  std::ifstream in(file, std::ios::binary);
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  uintmax_t total = size;
+  const std::string key = "file=\"";
+  for (size_t at = text.find(key); at != std::string::npos; at = text.find(key, at))
+  {
+    at += key.size();
+    const size_t end = text.find('"', at);
+    if (end == std::string::npos)
+    {
+      break;
+    }
+    std::error_code ec;
+    const std::filesystem::path part = file.parent_path() / text.substr(at, end - at);
+    const uintmax_t partSize = std::filesystem::file_size(part, ec);
+    if (!ec)
+    {
+      total += partSize;
+    }
+    at = end;
+  }
+  return total;
 }
 
 vtkSmartPointer<vtkPolyData> readByExtension(const std::string& path, const std::string& ext,
@@ -169,11 +206,26 @@ void removeActiveArray(vtkDataSetAttributes* data, vtkDataArray* array)
     data->RemoveArray(array->GetName());
   }
 }
-} // namespace
 
-LoadedMesh loadMesh(const std::string& path)
+// The file's texture coordinates or normals go when one of its vt or vn lines is NaN or Inf.
+void dropObjNonFiniteArrays(vtkPolyData* raw, const ObjNonFiniteEntries& counts)
 {
-  const std::filesystem::path file(path);
+  vtkPointData* pd = raw->GetPointData();
+  if (counts.tcoords > 0)
+  {
+    removeActiveArray(pd, pd->GetTCoords());
+    pd->RemoveArray("TCoords");
+  }
+  if (counts.normals > 0)
+  {
+    removeActiveArray(pd, pd->GetNormals());
+    pd->RemoveArray("Normals");
+  }
+}
+
+// The lower-case extension of PATH, one of kExtensions; else an error naming the file.
+std::string knownExtension(const std::filesystem::path& file, const std::string& path)
+{
   const std::string ext = lowerExtension(file);
   if (std::find(std::begin(kExtensions), std::end(kExtensions), ext) == std::end(kExtensions))
   {
@@ -181,17 +233,16 @@ LoadedMesh loadMesh(const std::string& path)
         ext.empty() ? "no file extension" : "unknown mesh format '" + ext + "'";
     throw errorAbout(path, what + " (expected " + meshFilePatterns() + ")");
   }
-  const uintmax_t fileSize = checkFile(file, path);
+  return ext;
+}
 
-  std::lock_guard<std::mutex> lock(loadMutex());
-  LoadedMesh mesh;
-  mesh.report.source = path;
-  // The validation's own VTK calls (polygon triangulation) stay quiet too.
-  VtkMessageCapture capture;
-  vtkSmartPointer<vtkPolyData> raw;
+// READ's errors as aniso::Error "PATH: reason".
+template <typename Read>
+auto readingErrorsNamed(const std::string& path, Read&& read)
+{
   try
   {
-    raw = readByExtension(path, ext, fileSize, mesh.report.readerWarnings);
+    return read();
   }
   catch (const Error&)
   {
@@ -205,25 +256,123 @@ LoadedMesh loadMesh(const std::string& path)
   {
     throw errorAbout(path, std::string("the reader failed: ") + e.what());
   }
+}
+
+// The parts' names: the file's, the stem where it gives none, " 2", " 3", ... on repeats.
+std::vector<std::string> uniqueNames(const std::vector<ReaderBlock>& blocks,
+                                     const std::string& stem)
+{
+  std::set<std::string> used;
+  std::vector<std::string> names;
+  for (const ReaderBlock& block : blocks)
+  {
+    const std::string base = block.name.empty() ? stem : block.name;
+    std::string name = base;
+    for (int repeat = 2; used.count(name) > 0; ++repeat)
+    {
+      name = base + " " + std::to_string(repeat);
+    }
+    used.insert(name);
+    names.push_back(name);
+  }
+  return names;
+}
+} // namespace
+
+LoadedMesh loadMesh(const std::string& path)
+{
+  const std::filesystem::path file(path);
+  const std::string ext = knownExtension(file, path);
+  const uintmax_t fileSize = readingSize(file, ext, checkFile(file, path));
+
+  std::lock_guard<std::mutex> lock(loadMutex());
+  LoadedMesh mesh;
+  mesh.report.source = path;
+  // The validation's own VTK calls (polygon triangulation) stay quiet too.
+  VtkMessageCapture capture;
+  vtkSmartPointer<vtkPolyData> raw = readingErrorsNamed(
+      path, [&] { return readByExtension(path, ext, fileSize, mesh.report.readerWarnings); });
   ObjNonFiniteEntries objNonFinite;
   if (ext == ".obj")
   {
     objNonFinite = countObjNonFiniteEntries(path);
-    vtkPointData* pd = raw->GetPointData();
-    if (objNonFinite.tcoords > 0)
-    {
-      removeActiveArray(pd, pd->GetTCoords());
-      pd->RemoveArray("TCoords");
-    }
-    if (objNonFinite.normals > 0)
-    {
-      removeActiveArray(pd, pd->GetNormals());
-      pd->RemoveArray("Normals");
-    }
+    dropObjNonFiniteArrays(raw, objNonFinite);
   }
   mesh.polyData = sanitizeSurface(raw, path, mesh.report);
   mesh.report.invalidTCoords += objNonFinite.tcoords;
   mesh.report.invalidNormals += objNonFinite.normals;
   return mesh;
+}
+
+LoadedBlocks loadMeshBlocks(const std::string& path)
+{
+  const std::filesystem::path file(path);
+  const std::string ext = knownExtension(file, path);
+  const std::string stem = file.stem().string();
+  LoadedBlocks loaded;
+  if (ext != ".obj" && ext != ".vtm" && ext != ".gltf" && ext != ".glb")
+  {
+    loaded.blocks.push_back({stem, loadMesh(path)});
+    return loaded;
+  }
+  const uintmax_t fileSize = readingSize(file, ext, checkFile(file, path));
+
+  std::lock_guard<std::mutex> lock(loadMutex());
+  VtkMessageCapture capture;
+  std::vector<std::string> readerWarnings;
+  std::vector<ReaderBlock> raw = readingErrorsNamed(
+      path, [&] { return readBlocksInReaderProcess(path, ext, fileSize, readerWarnings); });
+  ObjNonFiniteEntries objNonFinite;
+  if (ext == ".obj")
+  {
+    objNonFinite = countObjNonFiniteEntries(path);
+  }
+  const std::vector<std::string> names = uniqueNames(raw, stem);
+  std::vector<std::string> reasons; // "part NAME: reason" of each part skipped
+  for (size_t b = 0; b < raw.size(); ++b)
+  {
+    MeshBlock block;
+    block.name = names[b];
+    block.mesh.report.source = path;
+    block.mesh.report.readerWarnings = readerWarnings;
+    const std::string subject = path + ": part " + block.name;
+    try
+    {
+      dropObjNonFiniteArrays(raw[b].polyData, objNonFinite);
+      block.mesh.polyData = sanitizeSurface(raw[b].polyData, subject, block.mesh.report);
+    }
+    catch (const Error& e)
+    {
+      loaded.warnings.push_back(e.what());
+      reasons.push_back(std::string(e.what()).substr(path.size() + 2));
+      continue;
+    }
+    raw[b].polyData = nullptr;
+    block.mesh.report.invalidTCoords += objNonFinite.tcoords;
+    block.mesh.report.invalidNormals += objNonFinite.normals;
+    loaded.blocks.push_back(std::move(block));
+  }
+  if (loaded.blocks.empty())
+  {
+    if (reasons.size() == 1)
+    {
+      // One part: the file's own reason, as loadMesh gives it.
+      const std::string prefix = "part " + names.front() + ": ";
+      throw errorAbout(path, reasons.front().substr(prefix.size()));
+    }
+    constexpr size_t kReasonsTold = 3;
+    std::string told;
+    for (size_t r = 0; r < reasons.size() && r < kReasonsTold; ++r)
+    {
+      told += (r == 0 ? "" : "; ") + reasons[r];
+    }
+    if (reasons.size() > kReasonsTold)
+    {
+      told += "; " + std::to_string(reasons.size() - kReasonsTold) + " more";
+    }
+    throw errorAbout(path, "none of its " + std::to_string(reasons.size()) + " parts is usable (" +
+                               told + ")");
+  }
+  return loaded;
 }
 } // namespace aniso

@@ -3,10 +3,12 @@
 //
 // Formats, chosen by the file extension (case-insensitive):
 //   .obj (vtkOBJReader), .ply (PlyReader), .stl (StlReader), .off (OffReader), .vtk (legacy, any
-//   dataset: non-polygonal ones are reduced to their outer surface), .vtp (XML polydata),
-//   .gltf/.glb (vtkGLTFReader: every mesh of the default scene with its node transforms
-//   applied, merged into one polydata). PLY, STL and OFF have their own readers: VTK has none
-//   for OFF, and its PLY and STL readers are not safe on hostile files.
+//   dataset: non-polygonal ones are reduced to their outer surface), .vtp (XML polydata), .vtm
+//   (XML multiblock, vtkXMLMultiBlockDataReader: every leaf dataset, non-polygonal ones reduced
+//   to their surface like .vtk), .gltf/.glb (vtkGLTFReader: every mesh of the default scene
+//   with its node transforms applied). PLY, STL and OFF have their own readers: VTK has none
+//   for OFF, and its PLY and STL readers are not safe on hostile files. loadMesh merges a file's
+//   parts into one surface; loadMeshBlocks keeps them apart.
 // glTF is Y-up by specification; the loader turns it into the Z-up world the way Blender's
 // importer does, (x, y, z) -> (x, -z, y), normals and tangents included; its texture origin is
 // the image's top left, so v becomes 1 - v (VTK's origin is the bottom left), as in Blender.
@@ -23,15 +25,17 @@
 // so that such entries count as NaN vertices, texture coordinates and normals, as in the other
 // formats. OBJ positions are stored as float by that reader (the other readers keep doubles).
 // Hostile input (truncated, garbage, out-of-range indices) gives an error or a smaller mesh,
-// never a crash: VTK's readers (OBJ, VTK, VTP, glTF) run in a program of their own,
+// never a crash: VTK's readers (OBJ, VTK, VTP, VTM, glTF) run in a program of their own,
 // aniso-mesh-reader, started for each file (posix_spawn, never a fork of this process;
-// MeshReaderProcess.h), with a memory limit and a time limit, which hands the surface back as
-// VTK XML; a crash there becomes "PATH: the reader crashed on this file ...". loadMesh serialises itself, since
-// VTK's message output is process-wide; while it runs, VTK messages from other threads are
-// captured too, so call it where no rendering runs concurrently (the GUI thread does).
+// MeshReaderProcess.h), with a memory limit (a .vtm's budget counts the files it names) and a
+// time limit, which hands the surface or the parts back as VTK XML; a crash there becomes
+// "PATH: the reader crashed on this file ...". loadMesh and loadMeshBlocks serialise themselves,
+// since VTK's message output is process-wide; while one runs, VTK messages from other threads
+// are captured too, so call them where no rendering runs concurrently (the GUI thread does).
 #include "vtkpasses/mesh/MeshValidation.h"
 
 #include <string>
+#include <vector>
 #include <vtkSmartPointer.h>
 
 class vtkPolyData;
@@ -46,6 +50,40 @@ struct LoadedMesh
 
 LoadedMesh loadMesh(const std::string& path);
 
-// The extensions loadMesh accepts, for help texts and file dialogs: "*.obj *.ply ...".
+// A file as the parts (blocks) it holds, each with its name, instead of one merged surface:
+//   .obj: one part per g or o statement, named by its words (faces before any g or o, or after
+//     one without words: named by the file's stem); a statement followed by no face, line or
+//     point before the next g or o makes no part. Each part has the vertices its faces use.
+//   .vtm: one part per leaf dataset, depth first, named by the NAME metadata of each level from
+//     the top joined by "/" ("outer/inner"), "block I" for a level without a name (I its index
+//     among its siblings, as in the file's index attributes).
+//   .gltf/.glb: one part per node of the default scene that instances a mesh (its primitives
+//     merged), with its node transform applied and turned Z-up like loadMesh's, named by the
+//     node's name, else its mesh's, else "node I" (I the node's index in the file).
+//   every other format: one part named by the file's stem, exactly loadMesh's result.
+// Names are unique within the file: a repeat gets " 2", " 3", ... Each part is sanitised like
+// loadMesh's result (MeshValidation.h), with its own report (its source the file's path; what
+// the reader printed goes into every part's readerWarnings, since it was about the file; a point
+// attribute without one value per vertex is dropped by the reader program and told there, not
+// counted in malformedArraysDropped). A part that fails sanitising (no faces left, ...) is
+// skipped with the warning "PATH: part NAME: reason"; the others load. Throws aniso::Error
+// "PATH: reason" when the file fails as a whole, or when no part is usable (with one part, its
+// reason as loadMesh gives it).
+struct MeshBlock
+{
+  std::string name; // unique within the file (suffix " 2", " 3" on repeats)
+  LoadedMesh mesh;  // sanitised like loadMesh's result (MeshValidation), with its report
+};
+
+struct LoadedBlocks
+{
+  std::vector<MeshBlock> blocks;     // in file order; never empty on success
+  std::vector<std::string> warnings; // "PATH: part NAME: reason" for each block skipped
+};
+
+LoadedBlocks loadMeshBlocks(const std::string& path);
+
+// The extensions loadMesh and loadMeshBlocks accept, for help texts and file dialogs:
+// "*.obj *.ply ...".
 std::string meshFilePatterns();
 } // namespace aniso

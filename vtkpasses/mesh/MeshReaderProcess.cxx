@@ -38,6 +38,7 @@ enum class Record : char
 {
   Error = 'E',
   Warning = 'W',
+  Name = 'N', // the name of the part whose Data comes next
   Data = 'D'
 };
 
@@ -193,8 +194,12 @@ std::string meshReaderProgram()
               looked + ")");
 }
 
-int runMeshReader(int fd, const std::string& path, const std::string& ext, uintmax_t fileSize,
-                  const VtkRead& read)
+namespace
+{
+// Standard output and error to /dev/null, the memory limit, then SEND (which reads and sends the
+// records) with every error it throws sent as an Error record.
+int serveRead(int fd, const std::string& path, uintmax_t fileSize,
+              const std::function<void(const VtkMessageCapture&)>& send)
 {
   // Nothing the readers print may reach the terminal.
   const int devNull = ::open("/dev/null", O_WRONLY);
@@ -207,15 +212,7 @@ int runMeshReader(int fd, const std::string& path, const std::string& ext, uintm
   try
   {
     VtkMessageCapture capture;
-    vtkSmartPointer<vtkPolyData> polyData = read(path, ext, capture);
-    for (const VtkErrorText& warning : capture.warnings())
-    {
-      if (!warning.text.empty())
-      {
-        sendRecord(fd, Record::Warning, warning.text);
-      }
-    }
-    sendRecord(fd, Record::Data, toXml(polyData));
+    send(capture);
   }
   catch (const Error& e)
   {
@@ -233,9 +230,59 @@ int runMeshReader(int fd, const std::string& path, const std::string& ext, uintm
   return 0;
 }
 
-vtkSmartPointer<vtkPolyData> readInReaderProcess(const std::string& path, const std::string& ext,
-                                                 uintmax_t fileSize,
-                                                 std::vector<std::string>& warnings)
+void sendWarnings(int fd, const VtkMessageCapture& capture)
+{
+  for (const VtkErrorText& warning : capture.warnings())
+  {
+    if (!warning.text.empty())
+    {
+      sendRecord(fd, Record::Warning, warning.text);
+    }
+  }
+}
+} // namespace
+
+int runMeshReader(int fd, const std::string& path, const std::string& ext, uintmax_t fileSize,
+                  const VtkRead& read)
+{
+  return serveRead(fd, path, fileSize,
+                   [&](const VtkMessageCapture& capture)
+                   {
+                     vtkSmartPointer<vtkPolyData> polyData = read(path, ext, capture);
+                     sendWarnings(fd, capture);
+                     sendRecord(fd, Record::Data, toXml(polyData));
+                   });
+}
+
+int runMeshReaderBlocks(int fd, const std::string& path, const std::string& ext, uintmax_t fileSize,
+                        const VtkReadBlocks& read)
+{
+  return serveRead(fd, path, fileSize,
+                   [&](const VtkMessageCapture& capture)
+                   {
+                     std::vector<std::string> warnings;
+                     std::vector<ReaderBlock> blocks = read(path, ext, capture, warnings);
+                     sendWarnings(fd, capture);
+                     for (const std::string& warning : warnings)
+                     {
+                       sendRecord(fd, Record::Warning, warning);
+                     }
+                     for (ReaderBlock& block : blocks)
+                     {
+                       sendRecord(fd, Record::Name, block.name);
+                       sendRecord(fd, Record::Data, toXml(block.polyData));
+                       block.polyData = nullptr; // each part's memory goes once it is sent
+                     }
+                   });
+}
+
+namespace
+{
+// Runs the reader program on PATH (its parts when BLOCKS) and returns what it sent: one entry
+// per Data record, with the Name record before it. Throws as readInReaderProcess says.
+std::vector<ReaderBlock> runReaderProgram(const std::string& path, const std::string& ext,
+                                          uintmax_t fileSize, bool blocks,
+                                          std::vector<std::string>& warnings)
 {
   std::string program;
   try
@@ -261,8 +308,12 @@ vtkSmartPointer<vtkPolyData> readInReaderProcess(const std::string& path, const 
   posix_spawn_file_actions_addopen(&actions, STDERR_FILENO, "/dev/null", O_WRONLY, 0);
   const std::string sizeText = std::to_string(fileSize);
   std::vector<char*> argv = {const_cast<char*>(program.c_str()), const_cast<char*>(path.c_str()),
-                             const_cast<char*>(ext.c_str()), const_cast<char*>(sizeText.c_str()),
-                             nullptr};
+                             const_cast<char*>(ext.c_str()), const_cast<char*>(sizeText.c_str())};
+  if (blocks)
+  {
+    argv.push_back(const_cast<char*>(kReaderBlocksArgument));
+  }
+  argv.push_back(nullptr);
   pid_t child = -1;
   const int spawned = ::posix_spawn(&child, program.c_str(), &actions, nullptr, argv.data(), environ);
   posix_spawn_file_actions_destroy(&actions);
@@ -294,7 +345,8 @@ vtkSmartPointer<vtkPolyData> readInReaderProcess(const std::string& path, const 
     throw errorAbout(path, "the reader crashed on this file (corrupt or unsupported content)");
   }
 
-  vtkSmartPointer<vtkPolyData> polyData;
+  std::vector<ReaderBlock> results;
+  std::string name;
   size_t position = 0;
   while (position < received.size())
   {
@@ -319,15 +371,34 @@ vtkSmartPointer<vtkPolyData> readInReaderProcess(const std::string& path, const 
     case Record::Warning:
       warnings.push_back(payload);
       break;
+    case Record::Name:
+      name = payload;
+      break;
     case Record::Data:
-      polyData = fromXml(payload, path);
+      results.push_back({name, fromXml(payload, path)});
+      name.clear();
       break;
     }
   }
-  if (!polyData)
+  if (results.empty())
   {
     throw errorAbout(path, "the reader process ended without a result (corrupt file?)");
   }
-  return polyData;
+  return results;
+}
+} // namespace
+
+vtkSmartPointer<vtkPolyData> readInReaderProcess(const std::string& path, const std::string& ext,
+                                                 uintmax_t fileSize,
+                                                 std::vector<std::string>& warnings)
+{
+  return runReaderProgram(path, ext, fileSize, false, warnings).back().polyData;
+}
+
+std::vector<ReaderBlock> readBlocksInReaderProcess(const std::string& path, const std::string& ext,
+                                                   uintmax_t fileSize,
+                                                   std::vector<std::string>& warnings)
+{
+  return runReaderProgram(path, ext, fileSize, true, warnings);
 }
 } // namespace aniso

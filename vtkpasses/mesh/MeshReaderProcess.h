@@ -4,9 +4,10 @@
 // process, not the application. It is never a fork of the application, whose other threads
 // (LUT and environment bakes, background loads) may hold locks that a forked child would wait
 // for forever. The reader bounds its own address space (what it starts with plus a budget of
-// 64 times the file, at least 512 MiB), prints nothing, and sends back its messages and the
-// surface as VTK XML (VTK's own output, read back safely) through a pipe; it is killed after
-// kReaderTimeoutSeconds.
+// 64 times FILE_SIZE, at least 512 MiB; the loader counts a .vtm's files in it), prints nothing,
+// and sends back its messages and the surface as VTK XML (VTK's own output, read back safely)
+// through a pipe; it is killed after kReaderTimeoutSeconds. Asked for the file's parts (a fourth
+// argument, "blocks"), it sends each part's name and surface in turn, the same way.
 #include <cstdint>
 #include <functional>
 #include <string>
@@ -20,6 +21,8 @@ namespace aniso
 class VtkMessageCapture;
 
 constexpr int kReaderTimeoutSeconds = 120;
+// The reader program's fourth argument that asks for the file's parts.
+constexpr const char* kReaderBlocksArgument = "blocks";
 
 // The application's side: reads PATH (lower-case extension EXT, FILE_SIZE bytes) in the reader
 // program; its warnings are appended to WARNINGS. Throws aniso::Error "PATH: reason" (the
@@ -27,6 +30,20 @@ constexpr int kReaderTimeoutSeconds = 120;
 vtkSmartPointer<vtkPolyData> readInReaderProcess(const std::string& path, const std::string& ext,
                                                  uintmax_t fileSize,
                                                  std::vector<std::string>& warnings);
+
+// One part of a file as the reader program hands it back: the name the file gives it (empty
+// when it gives none; not necessarily unique) and its surface, unsanitised (never null, possibly
+// without cells).
+struct ReaderBlock
+{
+  std::string name;
+  vtkSmartPointer<vtkPolyData> polyData;
+};
+
+// The same for the file's parts (VtkReaders.h, readBlocksWithVtk), in file order, at least one.
+std::vector<ReaderBlock> readBlocksInReaderProcess(const std::string& path, const std::string& ext,
+                                                   uintmax_t fileSize,
+                                                   std::vector<std::string>& warnings);
 
 // Where the reader program is: $ANISO_MESH_READER when set, else beside the running executable,
 // else in ../lib/aniso/ from it (the installed layout), else where this build made it. Throws
@@ -39,4 +56,11 @@ using VtkRead = std::function<vtkSmartPointer<vtkPolyData>(
     const std::string& path, const std::string& ext, const VtkMessageCapture& capture)>;
 int runMeshReader(int fd, const std::string& path, const std::string& ext, uintmax_t fileSize,
                   const VtkRead& read);
+
+// The same for the file's parts; READ's WARNINGS are sent with VTK's.
+using VtkReadBlocks = std::function<std::vector<ReaderBlock>(
+    const std::string& path, const std::string& ext, const VtkMessageCapture& capture,
+    std::vector<std::string>& warnings)>;
+int runMeshReaderBlocks(int fd, const std::string& path, const std::string& ext, uintmax_t fileSize,
+                        const VtkReadBlocks& read);
 } // namespace aniso

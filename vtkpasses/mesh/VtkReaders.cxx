@@ -1,30 +1,44 @@
 #include "vtkpasses/mesh/VtkReaders.h"
 
 #include "core/error.h"
+#include "vtkpasses/mesh/GeometryAccess.h"
 
 #include <algorithm>
+#include <array>
+#include <cctype>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <limits>
+#include <memory>
 #include <optional>
 #include <system_error>
 #include <unistd.h>
 #include <vector>
 #include <vtkAppendPolyData.h>
+#include <vtkCellArray.h>
+#include <vtkCellData.h>
+#include <vtkCompositeDataSet.h>
 #include <vtkDataArray.h>
 #include <vtkDataObjectTreeIterator.h>
 #include <vtkDataSet.h>
 #include <vtkDataSetReader.h>
 #include <vtkDataSetSurfaceFilter.h>
+#include <vtkGLTFDocumentLoader.h>
 #include <vtkGLTFReader.h>
+#include <vtkInformation.h>
 #include <vtkMultiBlockDataSet.h>
 #include <vtkNew.h>
 #include <vtkOBJReader.h>
+#include <vtkObjectFactory.h>
+#include <vtkPartitionedDataSet.h>
 #include <vtkPointData.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
+#include <vtkXMLMultiBlockDataReader.h>
 #include <vtkXMLPolyDataReader.h>
 
 namespace aniso
@@ -136,6 +150,22 @@ vtkSmartPointer<vtkPolyData> readPolyData(const std::string& path, const VtkMess
   return output;
 }
 
+// Polydata as it is; volumes and grids are shown by their outer surface.
+vtkSmartPointer<vtkPolyData> surfaceOf(vtkDataSet* data, const std::string& path,
+                                       const VtkMessageCapture& capture)
+{
+  if (auto* polyData = vtkPolyData::SafeDownCast(data))
+  {
+    return polyData;
+  }
+  vtkNew<vtkDataSetSurfaceFilter> surface;
+  surface->SetInputData(data);
+  surface->Update();
+  throwIfReaderFailed(path, surface, capture);
+  vtkSmartPointer<vtkPolyData> output = surface->GetOutput();
+  return output;
+}
+
 vtkSmartPointer<vtkPolyData> readLegacy(const std::string& path, const VtkMessageCapture& capture)
 {
   vtkNew<vtkDataSetReader> reader;
@@ -147,17 +177,7 @@ vtkSmartPointer<vtkPolyData> readLegacy(const std::string& path, const VtkMessag
   {
     throw errorAbout(path, "not a VTK legacy dataset");
   }
-  if (auto* polyData = vtkPolyData::SafeDownCast(data))
-  {
-    return polyData;
-  }
-  // Volumes and grids are shown by their outer surface.
-  vtkNew<vtkDataSetSurfaceFilter> surface;
-  surface->SetInputData(data);
-  surface->Update();
-  throwIfReaderFailed(path, surface, capture);
-  vtkSmartPointer<vtkPolyData> output = surface->GetOutput();
-  return output;
+  return surfaceOf(data, path, capture);
 }
 
 // vtkOBJReader reads vertex coordinates as floats through an input stream: "nan", "inf" or a
@@ -245,6 +265,480 @@ vtkSmartPointer<vtkPolyData> readObj(const std::string& path, const VtkMessageCa
   return output;
 }
 
+// Where each g/o statement's block begins and which block each f, l and p statement belongs to.
+struct ObjStatements
+{
+  std::vector<std::string> names;   // one per block: its g/o statement's words ("" before any)
+  std::vector<int> points;          // the block of each p statement, in file order
+  std::vector<int> lines;           // l
+  std::vector<int> faces;           // f
+  std::vector<char> faceHasNormals; // its first vertex gives a normal index (v//vn, v/vt/vn)
+};
+
+// The statements as vtkOBJReader tells them apart: the first word of a line after white space.
+ObjStatements scanObjStatements(const std::string& path)
+{
+  ObjStatements statements;
+  std::ifstream in(path, std::ios::binary);
+  std::string line;
+  std::string pendingName;
+  int current = -1; // the block the next cell goes to; -1 until one comes
+  auto isSpace = [](char c) { return std::isspace(static_cast<unsigned char>(c)) != 0; };
+  while (std::getline(in, line))
+  {
+    size_t start = 0;
+    while (start < line.size() && isSpace(line[start]))
+    {
+      ++start;
+    }
+    size_t end = start;
+    while (end < line.size() && !isSpace(line[end]))
+    {
+      ++end;
+    }
+    const std::string command = line.substr(start, end - start);
+    if (command == "g" || command == "o")
+    {
+      size_t first = end;
+      while (first < line.size() && isSpace(line[first]))
+      {
+        ++first;
+      }
+      size_t last = line.size();
+      while (last > first && isSpace(line[last - 1]))
+      {
+        --last;
+      }
+      pendingName = line.substr(first, last - first);
+      current = -1;
+      continue;
+    }
+    std::vector<int>* cells = command == "f"   ? &statements.faces
+                              : command == "l" ? &statements.lines
+                              : command == "p" ? &statements.points
+                                               : nullptr;
+    if (!cells)
+    {
+      continue;
+    }
+    if (current < 0)
+    {
+      statements.names.push_back(pendingName);
+      current = static_cast<int>(statements.names.size()) - 1;
+    }
+    cells->push_back(current);
+    if (cells == &statements.faces)
+    {
+      const char* vertex = line.c_str() + end;
+      while (*vertex && isSpace(*vertex))
+      {
+        ++vertex;
+      }
+      int v = 0;
+      int t = 0;
+      int n = 0;
+      const bool normal = std::sscanf(vertex, "%d/%d/%d", &v, &t, &n) == 3 ||
+                          std::sscanf(vertex, "%d//%d", &v, &n) == 2;
+      statements.faceHasNormals.push_back(normal ? 1 : 0);
+    }
+  }
+  return statements;
+}
+
+// Point arrays without one value per point (corrupt files: vtkOBJReader makes such texture
+// coordinates when the file has fewer vt than v lines and every face gives the vertex's own
+// index) are dropped, each with a warning (WHAT names the part, or is empty): they cannot be cut
+// into parts, and VTK's XML reader, which reads the parts back in the application, empties a
+// piece that holds one. Cell data go too (sanitizeSurface drops them anyway).
+void dropMalformedArrays(vtkPolyData* polyData, const std::string& what,
+                         std::vector<std::string>& warnings)
+{
+  const vtkIdType pointCount = polyData->GetNumberOfPoints();
+  vtkPointData* pd = polyData->GetPointData();
+  for (int a = pd->GetNumberOfArrays() - 1; a >= 0; --a)
+  {
+    vtkAbstractArray* array = pd->GetAbstractArray(a);
+    if (array && (array->GetNumberOfTuples() != pointCount || array->GetNumberOfComponents() < 1))
+    {
+      const std::string name = array->GetName() ? array->GetName() : "";
+      warnings.push_back((what.empty() ? "" : what + ": ") + "point attribute '" + name + "' has " +
+                         std::to_string(array->GetNumberOfTuples()) + " values for " +
+                         std::to_string(pointCount) + " vertices: dropped");
+      pd->RemoveArray(a);
+    }
+  }
+  polyData->GetCellData()->Initialize();
+}
+
+// INPUT's vertex, line and polygon cells (strips: none from vtkOBJReader) as BLOCKS polydata,
+// each cell going to the block CELL_BLOCKS gives it (one list per kind, in INPUT's order). Each
+// block holds the points its cells use, in the order of first use, with their attributes (every
+// point array has one value per point: dropMalformedArrays). A point id out of range becomes -1,
+// so that sanitizeSurface drops and counts the cell.
+std::vector<vtkSmartPointer<vtkPolyData>> splitIntoBlocks(vtkPolyData* input, size_t blocks,
+                                                          const std::vector<int>& vertBlocks,
+                                                          const std::vector<int>& lineBlocks,
+                                                          const std::vector<int>& polyBlocks)
+{
+  vtkPoints* points = input->GetPoints();
+  const vtkIdType pointCount = points ? points->GetNumberOfPoints() : 0;
+  vtkPointData* inPd = input->GetPointData();
+
+  // Each block's cells of each kind, as (count, ids...) runs with the input's point ids.
+  enum Kind
+  {
+    Verts,
+    Lines,
+    Polys,
+    Kinds
+  };
+  std::vector<std::array<std::vector<vtkIdType>, Kinds>> cells(blocks);
+  const std::array<std::pair<vtkCellArray*, const std::vector<int>*>, Kinds> sources = {
+      {{input->GetVerts(), &vertBlocks},
+       {input->GetLines(), &lineBlocks},
+       {input->GetPolys(), &polyBlocks}}};
+  for (int kind = 0; kind < Kinds; ++kind)
+  {
+    size_t cell = 0;
+    const std::vector<int>& owner = *sources[kind].second;
+    geometry::forEachCell(sources[kind].first,
+                          [&](vtkIdType count, const vtkIdType* ids)
+                          {
+                            std::vector<vtkIdType>& run =
+                                cells[static_cast<size_t>(owner[cell++])][kind];
+                            run.push_back(count);
+                            run.insert(run.end(), ids, ids + count);
+                          });
+  }
+
+  std::vector<vtkSmartPointer<vtkPolyData>> result;
+  std::vector<vtkIdType> newId(static_cast<size_t>(pointCount), -1);
+  for (size_t b = 0; b < blocks; ++b)
+  {
+    std::vector<vtkIdType> source; // the input point of each block point
+    auto block = vtkSmartPointer<vtkPolyData>::New();
+    std::array<vtkNew<vtkCellArray>, Kinds> arrays;
+    std::vector<vtkIdType> ids;
+    for (int kind = 0; kind < Kinds; ++kind)
+    {
+      const std::vector<vtkIdType>& run = cells[b][kind];
+      for (size_t at = 0; at < run.size();)
+      {
+        const vtkIdType count = run[at++];
+        ids.clear();
+        for (vtkIdType k = 0; k < count; ++k, ++at)
+        {
+          const vtkIdType id = run[at];
+          if (id < 0 || id >= pointCount)
+          {
+            ids.push_back(-1);
+            continue;
+          }
+          if (newId[static_cast<size_t>(id)] < 0)
+          {
+            newId[static_cast<size_t>(id)] = static_cast<vtkIdType>(source.size());
+            source.push_back(id);
+          }
+          ids.push_back(newId[static_cast<size_t>(id)]);
+        }
+        arrays[kind]->InsertNextCell(count, ids.data());
+      }
+      cells[b][kind] = {};
+    }
+    vtkNew<vtkPoints> blockPoints;
+    if (points)
+    {
+      blockPoints->SetDataType(points->GetDataType());
+    }
+    blockPoints->SetNumberOfPoints(static_cast<vtkIdType>(source.size()));
+    vtkPointData* outPd = block->GetPointData();
+    outPd->CopyAllOn();
+    outPd->CopyAllocate(inPd, static_cast<vtkIdType>(source.size()));
+    for (size_t i = 0; i < source.size(); ++i)
+    {
+      blockPoints->SetPoint(static_cast<vtkIdType>(i), points->GetPoint(source[i]));
+      outPd->CopyData(inPd, source[i], static_cast<vtkIdType>(i));
+      newId[static_cast<size_t>(source[i])] = -1;
+    }
+    block->SetPoints(blockPoints);
+    block->SetVerts(arrays[Verts]);
+    block->SetLines(arrays[Lines]);
+    block->SetPolys(arrays[Polys]);
+    result.push_back(block);
+  }
+  return result;
+}
+
+std::vector<ReaderBlock> readObjBlocks(const std::string& path, const VtkMessageCapture& capture,
+                                       std::vector<std::string>& warnings)
+{
+  vtkSmartPointer<vtkPolyData> whole = readObj(path, capture);
+  dropMalformedArrays(whole, std::string(), warnings);
+  const ObjStatements statements = scanObjStatements(path);
+  if (statements.names.size() <= 1)
+  {
+    return {{statements.names.empty() ? std::string() : statements.names.front(), whole}};
+  }
+  // vtkOBJReader's cells against the statements: every p and l statement is one vertex or line
+  // cell, except where it duplicates vertices (then it keeps none); every f statement is one
+  // polygon, except that it then drops the faces without normals if any face has normals.
+  auto matches = [](vtkIdType cells, size_t count)
+  { return cells == 0 || cells == static_cast<vtkIdType>(count); };
+  std::vector<int> faces = statements.faces;
+  const vtkIdType polys = whole->GetNumberOfPolys();
+  if (polys != static_cast<vtkIdType>(faces.size()))
+  {
+    faces.clear();
+    for (size_t f = 0; f < statements.faces.size(); ++f)
+    {
+      if (statements.faceHasNormals[f])
+      {
+        faces.push_back(statements.faces[f]);
+      }
+    }
+  }
+  const vtkIdType verts = whole->GetNumberOfVerts();
+  const vtkIdType lines = whole->GetNumberOfLines();
+  if (polys != static_cast<vtkIdType>(faces.size()) || !matches(verts, statements.points.size()) ||
+      !matches(lines, statements.lines.size()) || whole->GetNumberOfStrips() != 0)
+  {
+    warnings.push_back("its groups could not be matched to the faces the OBJ reader kept: read "
+                       "as one part");
+    return {{std::string(), whole}};
+  }
+  const std::vector<int> none;
+  std::vector<vtkSmartPointer<vtkPolyData>> pieces =
+      splitIntoBlocks(whole, statements.names.size(), verts ? statements.points : none,
+                      lines ? statements.lines : none, faces);
+  // A block whose cells the reader dropped stays, without cells, for the loader to report.
+  std::vector<ReaderBlock> blocks;
+  for (size_t b = 0; b < pieces.size(); ++b)
+  {
+    blocks.push_back({statements.names[b], pieces[b]});
+  }
+  return blocks;
+}
+
+// The leaves of TREE, depth first, named by their path of names from the top (PREFIX, then the
+// level's NAME or "block I"); empty leaves and leaves that are no dataset as blocks without
+// cells.
+void collectLeaves(vtkDataObject* tree, const std::string& prefix, const std::string& path,
+                   const VtkMessageCapture& capture, std::vector<ReaderBlock>& blocks)
+{
+  auto* multiBlock = vtkMultiBlockDataSet::SafeDownCast(tree);
+  auto* partitioned = vtkPartitionedDataSet::SafeDownCast(tree);
+  const unsigned int children = multiBlock    ? multiBlock->GetNumberOfBlocks()
+                                : partitioned ? partitioned->GetNumberOfPartitions()
+                                              : 0;
+  for (unsigned int i = 0; i < children; ++i)
+  {
+    const bool hasMeta = multiBlock ? multiBlock->HasMetaData(i) : partitioned->HasMetaData(i);
+    vtkInformation* meta = !hasMeta     ? nullptr
+                           : multiBlock ? multiBlock->GetMetaData(i)
+                                        : partitioned->GetMetaData(i);
+    const char* given = meta && meta->Has(vtkCompositeDataSet::NAME())
+                            ? meta->Get(vtkCompositeDataSet::NAME())
+                            : nullptr;
+    const std::string own = given && *given ? given : "block " + std::to_string(i);
+    const std::string name = prefix.empty() ? own : prefix + "/" + own;
+    vtkDataObject* child =
+        multiBlock ? multiBlock->GetBlock(i) : partitioned->GetPartitionAsDataObject(i);
+    if (vtkMultiBlockDataSet::SafeDownCast(child) || vtkPartitionedDataSet::SafeDownCast(child))
+    {
+      collectLeaves(child, name, path, capture, blocks);
+    }
+    else if (auto* data = vtkDataSet::SafeDownCast(child))
+    {
+      blocks.push_back({name, surfaceOf(data, path, capture)});
+    }
+    else
+    {
+      blocks.push_back({name, vtkSmartPointer<vtkPolyData>::New()});
+    }
+  }
+}
+
+std::vector<ReaderBlock> readVtmBlocks(const std::string& path, const VtkMessageCapture& capture)
+{
+  vtkNew<vtkXMLMultiBlockDataReader> reader;
+  reader->SetFileName(path.c_str());
+  reader->Update();
+  throwIfReaderFailed(path, reader, capture);
+  vtkDataObject* tree = reader->GetOutputDataObject(0);
+  if (!vtkMultiBlockDataSet::SafeDownCast(tree))
+  {
+    throw errorAbout(path, "not a VTK multiblock file");
+  }
+  std::vector<ReaderBlock> blocks;
+  collectLeaves(tree, std::string(), path, capture, blocks);
+  if (blocks.empty())
+  {
+    throw errorAbout(path, "no faces (the multiblock holds no dataset)");
+  }
+  return blocks;
+}
+
+vtkSmartPointer<vtkPolyData> readVtm(const std::string& path, const VtkMessageCapture& capture)
+{
+  const std::vector<ReaderBlock> blocks = readVtmBlocks(path, capture);
+  // Leaves without points would leave the merge without the point arrays the others share.
+  vtkNew<vtkAppendPolyData> append;
+  int pieces = 0;
+  for (const ReaderBlock& block : blocks)
+  {
+    if (block.polyData->GetNumberOfPoints() > 0)
+    {
+      append->AddInputData(block.polyData);
+      ++pieces;
+    }
+  }
+  if (pieces == 0)
+  {
+    return vtkSmartPointer<vtkPolyData>::New();
+  }
+  append->Update();
+  throwIfReaderFailed(path, append, capture);
+  vtkSmartPointer<vtkPolyData> merged = append->GetOutput();
+  return merged;
+}
+
+// vtkGLTFReader names its blocks "Node_I" and "Mesh_I" by index; the names the file gives its
+// nodes and meshes are in its document loader, which it keeps to itself. Without vtkTypeMacro
+// this reader calls itself vtkGLTFReader, in its messages too.
+class GltfReaderWithNames : public vtkGLTFReader
+{
+public:
+  static GltfReaderWithNames* New();
+
+  // The node's name, else its mesh's, else "node I".
+  std::string nodeName(int node)
+  {
+    const std::string fallback = "node " + std::to_string(node);
+    std::shared_ptr<vtkGLTFDocumentLoader::Model> model =
+        this->Loader ? this->Loader->GetInternalModel() : nullptr;
+    if (!model || node < 0 || static_cast<size_t>(node) >= model->Nodes.size())
+    {
+      return fallback;
+    }
+    const vtkGLTFDocumentLoader::Node& entry = model->Nodes[static_cast<size_t>(node)];
+    if (!entry.Name.empty())
+    {
+      return entry.Name;
+    }
+    if (entry.Mesh >= 0 && static_cast<size_t>(entry.Mesh) < model->Meshes.size() &&
+        !model->Meshes[static_cast<size_t>(entry.Mesh)].Name.empty())
+    {
+      return model->Meshes[static_cast<size_t>(entry.Mesh)].Name;
+    }
+    return fallback;
+  }
+
+protected:
+  GltfReaderWithNames() = default;
+  ~GltfReaderWithNames() override = default;
+
+private:
+  GltfReaderWithNames(const GltfReaderWithNames&) = delete;
+  void operator=(const GltfReaderWithNames&) = delete;
+};
+vtkStandardNewMacro(GltfReaderWithNames);
+
+// The primitives of one node block of vtkGLTFReader's output: the node's index and its pieces.
+struct GltfNodePieces
+{
+  int node = -1;
+  std::vector<vtkPolyData*> pieces;
+};
+
+int gltfNodeIndex(vtkMultiBlockDataSet* parent, unsigned int i)
+{
+  if (!parent->HasMetaData(i))
+  {
+    return -1;
+  }
+  vtkInformation* meta = parent->GetMetaData(i);
+  const char* name =
+      meta->Has(vtkCompositeDataSet::NAME()) ? meta->Get(vtkCompositeDataSet::NAME()) : nullptr;
+  if (!name || std::strncmp(name, "Node_", 5) != 0 ||
+      !std::isdigit(static_cast<unsigned char>(name[5])))
+  {
+    return -1;
+  }
+  return std::atoi(name + 5);
+}
+
+// Every node block (a "Node_I" block: the node's "Mesh_J" block of primitives, then its
+// children's node blocks) in depth-first order, with the primitives directly its own. SLOT is
+// the entry of the node block TREE belongs to, made when its first primitive comes.
+void collectGltfNodes(vtkMultiBlockDataSet* tree, int node, long& slot,
+                      std::vector<GltfNodePieces>& nodes)
+{
+  for (unsigned int i = 0; i < tree->GetNumberOfBlocks(); ++i)
+  {
+    vtkDataObject* child = tree->GetBlock(i);
+    if (auto* group = vtkMultiBlockDataSet::SafeDownCast(child))
+    {
+      const int childNode = gltfNodeIndex(tree, i);
+      if (childNode >= 0)
+      {
+        long childSlot = -1;
+        collectGltfNodes(group, childNode, childSlot, nodes);
+      }
+      else
+      {
+        collectGltfNodes(group, node, slot, nodes);
+      }
+    }
+    else if (auto* piece = vtkPolyData::SafeDownCast(child))
+    {
+      if (slot < 0)
+      {
+        nodes.push_back({node, {}});
+        slot = static_cast<long>(nodes.size()) - 1;
+      }
+      nodes[static_cast<size_t>(slot)].pieces.push_back(piece);
+    }
+  }
+}
+
+std::vector<ReaderBlock> readGltfBlocks(const std::string& path, const VtkMessageCapture& capture)
+{
+  vtkNew<GltfReaderWithNames> reader;
+  reader->SetFileName(path.c_str());
+  reader->Update();
+  throwIfReaderFailed(path, reader, capture);
+  vtkMultiBlockDataSet* scene = reader->GetOutput();
+  if (!scene)
+  {
+    throw errorAbout(path, "the glTF reader produced no scene");
+  }
+  // The reader has already applied each node's global transform to its primitives.
+  std::vector<GltfNodePieces> nodes;
+  long rootSlot = -1;
+  collectGltfNodes(scene, -1, rootSlot, nodes);
+  if (nodes.empty())
+  {
+    throw errorAbout(path, "no faces (the glTF scene holds no mesh)");
+  }
+  std::vector<ReaderBlock> blocks;
+  for (const GltfNodePieces& node : nodes)
+  {
+    vtkNew<vtkAppendPolyData> append;
+    for (vtkPolyData* piece : node.pieces)
+    {
+      append->AddInputData(piece);
+    }
+    append->Update();
+    throwIfReaderFailed(path, append, capture);
+    auto merged = vtkSmartPointer<vtkPolyData>::New();
+    merged->DeepCopy(append->GetOutput());
+    rotateYUpToZUp(merged);
+    flipTextureV(merged);
+    blocks.push_back({node.node >= 0 ? reader->nodeName(node.node) : std::string(), merged});
+  }
+  return blocks;
+}
+
 } // namespace
 
 vtkSmartPointer<vtkPolyData> readWithVtk(const std::string& path, const std::string& ext,
@@ -262,6 +756,38 @@ vtkSmartPointer<vtkPolyData> readWithVtk(const std::string& path, const std::str
   {
     return readLegacy(path, capture);
   }
+  if (ext == ".vtm")
+  {
+    return readVtm(path, capture);
+  }
   return readGltf(path, capture);
+}
+
+std::vector<ReaderBlock> readBlocksWithVtk(const std::string& path, const std::string& ext,
+                                           const VtkMessageCapture& capture,
+                                           std::vector<std::string>& warnings)
+{
+  if (ext == ".obj")
+  {
+    return readObjBlocks(path, capture, warnings);
+  }
+  std::vector<ReaderBlock> blocks;
+  if (ext == ".vtm")
+  {
+    blocks = readVtmBlocks(path, capture);
+  }
+  else if (ext == ".gltf" || ext == ".glb")
+  {
+    blocks = readGltfBlocks(path, capture);
+  }
+  else
+  {
+    blocks = {{std::string(), readWithVtk(path, ext, capture)}};
+  }
+  for (ReaderBlock& block : blocks)
+  {
+    dropMalformedArrays(block.polyData, block.name.empty() ? "" : "part " + block.name, warnings);
+  }
+  return blocks;
 }
 } // namespace aniso

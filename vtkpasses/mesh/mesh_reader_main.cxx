@@ -1,19 +1,22 @@
-// aniso-mesh-reader PATH EXT FILE_SIZE: reads one mesh file with VTK's readers for the
-// application (MeshReaderProcess.h), the result on standard output in the records it expects.
+// aniso-mesh-reader PATH EXT FILE_SIZE [blocks]: reads one mesh file (its parts, with "blocks")
+// with VTK's readers for the application (MeshReaderProcess.h), the result on standard output in
+// the records it expects.
 #include "vtkpasses/mesh/MeshReaderProcess.h"
 #include "vtkpasses/mesh/VtkReaders.h"
 
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <string>
 #include <unistd.h>
 
 int main(int argc, char** argv)
 {
-  if (argc != 4 || ::isatty(STDOUT_FILENO))
+  const bool blocks = argc == 5 && std::strcmp(argv[4], aniso::kReaderBlocksArgument) == 0;
+  if ((argc != 4 && !blocks) || ::isatty(STDOUT_FILENO))
   {
-    std::fprintf(stderr, "usage: aniso-mesh-reader PATH EXT FILE_SIZE (run by aniso, which reads "
-                         "its output)\n");
+    std::fprintf(stderr, "usage: aniso-mesh-reader PATH EXT FILE_SIZE [blocks] (run by aniso, "
+                         "which reads its output)\n");
     return 2;
   }
   // The records go to the pipe that is standard output now; runMeshReader then points standard
@@ -23,6 +26,10 @@ int main(int argc, char** argv)
   {
     return 3;
   }
-  return aniso::runMeshReader(fd, argv[1], argv[2], std::strtoull(argv[3], nullptr, 10),
-                              aniso::readWithVtk);
+  const uintmax_t fileSize = std::strtoull(argv[3], nullptr, 10);
+  if (blocks)
+  {
+    return aniso::runMeshReaderBlocks(fd, argv[1], argv[2], fileSize, aniso::readBlocksWithVtk);
+  }
+  return aniso::runMeshReader(fd, argv[1], argv[2], fileSize, aniso::readWithVtk);
 }

@@ -498,11 +498,11 @@ TEST_F(MeshLoaderTest, FileProblemsAreReportedWithThePath)
   EXPECT_EQ(this->loadError((this->Dir / "folder.obj").string()),
             "is a directory, not a mesh file");
   EXPECT_EQ(this->loadError(this->write("empty.stl", "")), "empty file");
-  EXPECT_EQ(
-      this->loadError(this->write("mesh.xyz", boxObj())),
-      "unknown mesh format '.xyz' (expected *.obj *.ply *.stl *.off *.vtk *.vtp *.gltf *.glb)");
+  EXPECT_EQ(this->loadError(this->write("mesh.xyz", boxObj())),
+            "unknown mesh format '.xyz' (expected *.obj *.ply *.stl *.off *.vtk *.vtp *.vtm *.gltf "
+            "*.glb)");
   EXPECT_EQ(this->loadError(this->write("mesh", boxObj())),
-            "no file extension (expected *.obj *.ply *.stl *.off *.vtk *.vtp *.gltf *.glb)");
+            "no file extension (expected *.obj *.ply *.stl *.off *.vtk *.vtp *.vtm *.gltf *.glb)");
 }
 
 TEST_F(MeshLoaderTest, ReaderErrorsBecomeTheMessageAndVtkOutputIsRestored)
