@@ -22,6 +22,7 @@
 #include <map>
 #include <memory>
 #include <optional>
+#include <set>
 #include <sstream>
 #include <vtkPointData.h>
 #include <vtkPolyData.h>
@@ -86,8 +87,9 @@ Command renderCommand()
   c.summary = "Render MESH (OBJ, PLY, STL, OFF, VTK, VTP, glTF) or a built-in mesh with an "
               "anisotropic Ashikhmin-Shirley material under image-based lighting, without a "
               "window, to a PNG (tone-mapped 8-bit sRGB) or an EXR (linear float radiance, alpha "
-              "= coverage). Several meshes make a scene of parts, one a file, each with its own "
-              "material (--part) and drawn together, the camera fitting them all. Needs an X "
+              "= coverage). Several meshes make a scene of parts, drawn together with the camera "
+              "fitting them all, each with its own material (--part): one a file, or one a "
+              "block of a file (OBJ groups and objects, VTM blocks, glTF mesh nodes). Needs an X "
               "display; where there is none, run it under xvfb-run.";
   c.positionals = {"MESH"};
   c.lastPositionalRepeats = true;
@@ -260,14 +262,19 @@ std::vector<ScenePart> scenePartsOf(const Arguments& a, std::ostream& warnings)
 }
 
 // PART's surface prepared with OPTIONS, the notes of its loading and preparation on OUT (each
-// naming the part when there are several).
+// naming the part when there are several). A note of the loading that an earlier part of the
+// same file gave already (what the reader said about the file) is in PRINTED and not repeated.
 vtkSmartPointer<vtkPolyData> preparedSurface(const ScenePart& part, const SurfaceOptions& options,
-                                             bool several, std::ostream& out)
+                                             bool several, std::set<std::string>& printed,
+                                             std::ostream& out)
 {
   const std::string prefix = "  " + (several ? part.name + ": " : std::string());
   for (const std::string& line : part.mesh.report.notes())
   {
-    out << prefix << line << "\n";
+    if (printed.insert(part.source + "\n" + line).second)
+    {
+      out << prefix << line << "\n";
+    }
   }
   PreparedSurface prepared = prepareSurface(part.mesh.polyData, options, part.source);
   for (const std::string& note : prepared.report.notes())
@@ -438,13 +445,14 @@ int runRender(const std::vector<std::string>& args, std::ostream& out, std::ostr
   }
   const bool several = scene.size() > 1;
   std::vector<vtkSmartPointer<vtkPolyData>> surfaces(scene.size());
+  std::set<std::string> printed;
   for (std::size_t i = 0; i < scene.size(); ++i)
   {
     if (scene[i].visible)
     {
       surfaces[i] = preparedSurface(
           scene[i], scene[i].material ? surfaceOptionsOf(*scene[i].material) : surfaceOptions,
-          several, out);
+          several, printed, out);
     }
   }
   settings.environment = openEnvironment(parameters.text("env"));

@@ -62,8 +62,9 @@ void addPartOptions(Command& c)
       "--part", "PATTERN=MATERIAL",
       "draw the parts whose names match PATTERN ('*' any run of characters, '?' one character) "
       "with library material MATERIAL instead of the command line's material; repeatable, a "
-      "later --part wins where patterns overlap. Parts are named by their file's stem ('name 2' "
-      "for a second of the same name); --list-parts shows them");
+      "later --part wins where patterns overlap. Parts are named by their file's stem, or by "
+      "their block in a file of several (OBJ g and o, VTM blocks, glTF nodes); 'name 2' for a "
+      "second of the same name; --list-parts shows them");
   part.repeatable = true;
   c.options.push_back(part);
   Option hide = textOption("--hide", "PATTERN",
@@ -77,17 +78,24 @@ void addPartOptions(Command& c)
   c.options.push_back(list);
 }
 
-std::vector<NamedMesh> meshesOfFile(const std::string& path)
+FileMeshes meshesOfFile(const std::string& path)
 {
-  const fs::path p(path);
-  std::string name = p.stem().string();
-  if (name.empty())
+  LoadedBlocks loaded = loadMeshBlocks(path);
+  FileMeshes file;
+  file.warnings = std::move(loaded.warnings);
+  if (loaded.blocks.size() == 1)
   {
-    name = p.filename().string();
+    const fs::path p(path);
+    std::string stem = p.stem().string();
+    file.meshes.push_back(
+        {stem.empty() ? p.filename().string() : stem, std::move(loaded.blocks[0].mesh)});
+    return file;
   }
-  std::vector<NamedMesh> meshes;
-  meshes.push_back({name, loadMesh(path)});
-  return meshes;
+  for (MeshBlock& block : loaded.blocks)
+  {
+    file.meshes.push_back({std::move(block.name), std::move(block.mesh)});
+  }
+  return file;
 }
 
 std::vector<std::string> uniquePartNames(const std::vector<std::string>& names)
@@ -111,19 +119,25 @@ std::vector<std::string> uniquePartNames(const std::vector<std::string>& names)
 std::vector<ScenePart> loadParts(const std::vector<std::string>& paths, std::ostream& warnings)
 {
   std::vector<ScenePart> parts;
-  std::vector<std::string> failures;
+  std::vector<std::string> failures; // of the files that did not load
   std::vector<std::string> failed;
+  std::vector<std::string> skipped; // files and blocks, in order
   for (const std::string& path : paths)
   {
     try
     {
-      for (NamedMesh& named : meshesOfFile(path))
+      FileMeshes file = meshesOfFile(path);
+      for (NamedMesh& named : file.meshes)
       {
         ScenePart part;
         part.name = std::move(named.name);
         part.source = path;
         part.mesh = std::move(named.mesh);
         parts.push_back(std::move(part));
+      }
+      for (std::string& warning : file.warnings)
+      {
+        skipped.push_back(oneLine(std::move(warning)));
       }
     }
     catch (const Error& e)
@@ -134,6 +148,7 @@ std::vector<ScenePart> loadParts(const std::vector<std::string>& paths, std::ost
       }
       failed.push_back(path);
       failures.push_back(oneLine(e.what()));
+      skipped.push_back(failures.back());
     }
   }
   if (parts.empty())
@@ -147,9 +162,9 @@ std::vector<ScenePart> loadParts(const std::vector<std::string>& paths, std::ost
     }
     throw errorAbout(files, "no mesh could be loaded (" + reasons + ")");
   }
-  for (const std::string& failure : failures)
+  for (const std::string& warning : skipped)
   {
-    warnings << "aniso: warning: " << failure << " (skipped)\n";
+    warnings << "aniso: warning: " << warning << " (skipped)\n";
   }
   std::vector<std::string> names;
   for (const ScenePart& part : parts)
@@ -259,7 +274,8 @@ void listParts(const std::vector<ScenePart>& parts, std::ostream& out)
 {
   for (const ScenePart& part : parts)
   {
-    out << part.name << "\t" << part.mesh.polyData->GetNumberOfCells() << " triangles\t"
+    const vtkIdType triangles = part.mesh.polyData->GetNumberOfCells();
+    out << part.name << "\t" << triangles << (triangles == 1 ? " triangle\t" : " triangles\t")
         << (part.material ? part.material->name : std::string("(command line)"))
         << (part.visible ? "" : "\thidden") << "\n";
   }

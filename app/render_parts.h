@@ -1,8 +1,10 @@
 #pragma once
-// The scene of parts of `aniso render`: every mesh file given is loaded into parts (one a file,
-// named by its stem), each drawn with a material: the command line's own (--nu, --nv, --f0, ...
-// and its maps) unless --part PATTERN=MATERIAL assigns one of the material library (the built-in
-// metals and --materials FILE). --hide PATTERN hides parts; --list-parts prints the parts.
+// The scene of parts of `aniso render`: every mesh file given is loaded into parts (one a block
+// of the file: loadMeshBlocks' OBJ groups and objects, VTM leaves, glTF mesh nodes; a file of one
+// block is one part named by its stem), each drawn with a material: the command line's own (--nu,
+// --nv, --f0, ... and its maps) unless --part PATTERN=MATERIAL assigns one of the material library
+// (the built-in metals and --materials FILE). --hide PATTERN hides parts; --list-parts prints the
+// parts.
 #include "app/cli.h"
 #include "core/parameters/material_library.h"
 #include "vtkpasses/mesh/MeshLoader.h"
@@ -26,9 +28,15 @@ struct NamedMesh
   LoadedMesh mesh;
 };
 
-// The meshes of the file at PATH: one, named by the file's stem (the file name when it has
-// none). Throws aniso::Error "PATH: reason" as loadMesh does.
-std::vector<NamedMesh> meshesOfFile(const std::string& path);
+// The meshes of the file at PATH: its blocks (loadMeshBlocks), each named by its block, or the
+// file's stem (the file name when it has none) when it has one; WARNINGS, the blocks skipped
+// ("PATH: part NAME: reason"). Throws aniso::Error "PATH: reason" as loadMeshBlocks does.
+struct FileMeshes
+{
+  std::vector<NamedMesh> meshes;
+  std::vector<std::string> warnings;
+};
+FileMeshes meshesOfFile(const std::string& path);
 
 // NAMES made unique in order: the second "bolt" becomes "bolt 2", the third "bolt 3" (skipping
 // names given already).
@@ -44,9 +52,11 @@ struct ScenePart
   bool visible = true;
 };
 
-// The mesh files PATHS loaded into parts, in order. A file that fails to load is skipped with
-// one line "aniso: warning: PATH: reason (skipped)" on WARNINGS; when none loads, the error of
-// the only file, or aniso::Error "PATH1, PATH2: no mesh could be loaded (PATH1: reason; ...)".
+// The mesh files PATHS loaded into parts, in order, their names made unique across the files
+// (uniquePartNames). A file that fails to load, or a block of a file that cannot be used, is
+// skipped with one line "aniso: warning: PATH: reason (skipped)" on WARNINGS; when no file
+// loads, the error of the only file, or aniso::Error "PATH1, PATH2: no mesh could be loaded
+// (PATH1: reason; ...)".
 std::vector<ScenePart> loadParts(const std::vector<std::string>& paths, std::ostream& warnings);
 
 // The library of the command line: the built-in metals and those of --materials FILE (which win
@@ -62,8 +72,8 @@ void checkPartOptions(const Arguments& arguments, const MaterialLibrary& library
 void assignParts(const Arguments& arguments, const MaterialLibrary& library,
                  std::vector<ScenePart>& parts);
 
-// One line a part: "NAME<TAB>N triangles<TAB>MATERIAL", with "<TAB>hidden" for a hidden one;
-// the command line's material is "(command line)".
+// One line a part: "NAME<TAB>N triangles<TAB>MATERIAL" ("1 triangle"), with "<TAB>hidden" for a
+// hidden one; the command line's material is "(command line)".
 void listParts(const std::vector<ScenePart>& parts, std::ostream& out);
 
 // The surface options of MATERIAL's tangents ("auto": the mesh's own, else from the UVs, else

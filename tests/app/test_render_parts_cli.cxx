@@ -5,6 +5,9 @@
 //    left.ply), its triangles (vtkSphereSource makes 2 T (P - 2) of them for T segments around
 //    and P from pole to pole: 896 and 480) and its material ("(command line)" unless --part
 //    assigns one), "hidden" for a hidden part; it needs no -o and writes nothing.
+//  - A file of several blocks is several parts (an OBJ of groups base and lid: loadMeshBlocks'
+//    parts, named by the groups); a file of one block is one part named by its stem; names are
+//    made unique across the files ("base 2" for base.ply).
 //  - Under the uniform white environment a grey F0 reflects grey light (the channels equal) and
 //    the built-in "satin gold", F0 (1, 0.782, 0.344), a reddish one (R > G > B, R > 1.5 B): with
 //    --part left='satin gold' the left sphere's covered pixels are reddish and the right one's
@@ -245,6 +248,28 @@ TEST_F(RenderPartsCli, ListPartsPrintsNamesTrianglesAndMaterials)
   ASSERT_EQ(builtin.exitCode, 0) << builtin.err;
   EXPECT_EQ(builtin.out.rfind("torus\t", 0), 0u) << builtin.out;
   EXPECT_NE(builtin.out.find("\tsatin gold\n"), std::string::npos) << builtin.out;
+}
+
+TEST_F(RenderPartsCli, AFileOfSeveralBlocksIsSeveralParts)
+{
+  // An OBJ of two groups (loadMeshBlocks: a part per g statement, named by it), one of a single
+  // group (one part: the file's stem) and a PLY whose stem repeats a group's name.
+  const std::string box = path("box.obj").string();
+  std::ofstream(box) << "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 1\nv 1 0 1\nv 1 1 1\nv 0 1 1\n"
+                        "g base\nf 1 3 2\nf 1 4 3\n"
+                        "g lid\nf 5 6 7\nf 5 7 8\nf 1 2 6\nf 1 6 5\n";
+  const std::string single = path("single.obj").string();
+  std::ofstream(single) << "v 0 0 0\nv 1 0 0\nv 0 1 0\ng only\nf 1 2 3\n";
+  const std::string base = writeSphere("base.ply", 3.0, 24, 12);
+  const Outcome r =
+      run({"render", box, single, base, "--part", "lid=brushed copper", "--list-parts"});
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_EQ(lines(r.out), (std::vector<std::string>{
+                              "base\t2 triangles\t(command line)",
+                              "lid\t4 triangles\tbrushed copper",
+                              "single\t1 triangle\t(command line)",
+                              "base 2\t480 triangles\t(command line)",
+                          }));
 }
 
 TEST_F(RenderPartsCli, PartTakesALibraryMaterial)
