@@ -108,31 +108,6 @@ std::string wrapped(const std::string& text, std::size_t indent, std::size_t wid
   return out;
 }
 
-// Core errors may quote a library's multi-line message; the user gets one line.
-std::string oneLine(std::string text)
-{
-  std::replace(text.begin(), text.end(), '\r', ' ');
-  std::string out;
-  for (char c : text)
-  {
-    if (c == '\n')
-    {
-      if (!out.empty() && out.back() != ' ')
-      {
-        out += "; ";
-      }
-    }
-    else
-    {
-      out += c;
-    }
-  }
-  while (!out.empty() && (out.back() == ' ' || out.back() == ';'))
-  {
-    out.pop_back();
-  }
-  return out;
-}
 } // namespace
 
 Option parameterOption(std::string_view parameter, std::string name, std::string_view help)
@@ -313,7 +288,8 @@ Arguments parseArguments(const Command& command, const std::vector<std::string>&
   {
     throw usageError(command.positionals[parsed.positionals.size()], "missing argument");
   }
-  if (parsed.positionals.size() > command.positionals.size())
+  if (parsed.positionals.size() > command.positionals.size() &&
+      !(command.lastPositionalRepeats && !command.positionals.empty()))
   {
     throw usageError(parsed.positionals[command.positionals.size()], "unexpected argument");
   }
@@ -376,6 +352,31 @@ std::pair<int, int> parseImageSize(const std::string& text, const std::string& s
   {
     throw UsageError(e.what());
   }
+}
+
+std::string oneLine(std::string text)
+{
+  std::replace(text.begin(), text.end(), '\r', ' ');
+  std::string out;
+  for (char c : text)
+  {
+    if (c == '\n')
+    {
+      if (!out.empty() && out.back() != ' ')
+      {
+        out += "; ";
+      }
+    }
+    else
+    {
+      out += c;
+    }
+  }
+  while (!out.empty() && (out.back() == ' ' || out.back() == ';'))
+  {
+    out.pop_back();
+  }
+  return out;
 }
 
 int runReportingErrors(const std::function<int()>& body, std::ostream& err)

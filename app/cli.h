@@ -53,6 +53,9 @@ struct Command
   std::vector<std::string> positionals; // required positional arguments, in order
   std::vector<Option> options;
   std::string details; // output format and examples, printed after the options
+  // The last positional may be given more than once ("MESH..."): Arguments::positionals holds
+  // every one given.
+  bool lastPositionalRepeats = false;
 };
 
 class Arguments
@@ -89,6 +92,10 @@ std::string helpText(const Command& command);
 // "SUBJECT: reason".
 std::pair<int, int> parseImageSize(const std::string& text, const std::string& subject,
                                    int maxSide);
+
+// TEXT as one line: core errors may quote a library's multi-line message ("a\nb" becomes
+// "a; b"), the user gets one line.
+std::string oneLine(std::string text);
 
 // Runs BODY and turns what it throws into exactly one line "aniso: subject: reason" on ERR
 // and an exit code: 2 for usage errors, 1 for run-time failures.

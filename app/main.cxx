@@ -56,7 +56,8 @@ int run(const std::vector<std::string>& args)
   }
   if (command == "render")
   {
-    return aniso::cli::runRender(std::vector<std::string>(args.begin() + 1, args.end()), std::cout);
+    return aniso::cli::runRender(std::vector<std::string>(args.begin() + 1, args.end()), std::cout,
+                                 std::cerr);
   }
   if (command.size() > 1 && command[0] == '-')
   {

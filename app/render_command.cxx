@@ -2,6 +2,7 @@
 
 #include "app/cli.h"
 #include "app/render_models.h"
+#include "app/render_parts.h"
 #include "core/env/environment.h"
 #include "core/image/image.h"
 #include "core/maps/map_files.h"
@@ -18,7 +19,10 @@
 #include <algorithm>
 #include <cctype>
 #include <filesystem>
+#include <map>
 #include <memory>
+#include <optional>
+#include <set>
 #include <sstream>
 #include <vtkPointData.h>
 #include <vtkPolyData.h>
@@ -79,12 +83,16 @@ Option flagOption(std::string name, std::string_view help)
 Command renderCommand()
 {
   Command c;
-  c.usage = "aniso render [MESH] [options] -o FILE";
+  c.usage = "aniso render [MESH...] [options] -o FILE";
   c.summary = "Render MESH (OBJ, PLY, STL, OFF, VTK, VTP, glTF) or a built-in mesh with an "
               "anisotropic Ashikhmin-Shirley material under image-based lighting, without a "
               "window, to a PNG (tone-mapped 8-bit sRGB) or an EXR (linear float radiance, alpha "
-              "= coverage). Needs an X display; where there is none, run it under xvfb-run.";
+              "= coverage). Several meshes make a scene of parts, drawn together with the camera "
+              "fitting them all, each with its own material (--part): one a file, or one a "
+              "block of a file (OBJ groups and objects, VTM blocks, glTF mesh nodes). Needs an X "
+              "display; where there is none, run it under xvfb-run.";
   c.positionals = {"MESH"};
+  c.lastPositionalRepeats = true;
   Option builtin = textOption("--builtin", "NAME", "render a built-in mesh instead of a file");
   builtin.choices = {"sphere", "torus", "plate", "disk"};
   c.options.push_back(builtin);
@@ -148,27 +156,47 @@ Command renderCommand()
       "sub-pixel camera jitter between frames (anti-aliased edges, fractional coverage)", "on");
   jitter.choices = {"on", "off"};
   c.options.push_back(jitter);
-  Option output = textOption("--output", "FILE", "the image to write: .png or .exr");
+  Option output =
+      textOption("--output", "FILE", "the image to write: .png or .exr (not with --list-parts)");
   output.alias = "-o";
   output.required = true;
   c.options.push_back(output);
   c.options.push_back(
       flagOption("--time", "print the median frame time and the samples per second"));
+  addPartOptions(c);
   addModelOptions(c);
   c.details = "Examples:\n"
               "  aniso render --builtin sphere --nu 20000 --nv 70 -o sphere.png\n"
               "  aniso render part.stl --tangents around:0,0,1 --frames 16 -o part.exr\n"
               "  aniso render --builtin plate --tpr circular --view +z --time -o disc.png\n"
-              "  aniso render --builtin sphere --model ward --light dir:1,-1,1:3 -o ward.png\n";
+              "  aniso render --builtin sphere --model ward --light dir:1,-1,1:3 -o ward.png\n"
+              "  aniso render body.stl lid.stl --part 'lid*=satin gold' --hide body -o lid.png\n"
+              "  aniso render *.ply --materials shop.json --part '*=brushed steel' --list-parts\n";
   return c;
 }
 
 // MESH is optional when --builtin is given: parse with it, then without if it is missing.
-Arguments parse(const Command& command, const std::vector<std::string>& args)
+// --output is required unless --list-parts is given.
+Arguments parse(Command command, const std::vector<std::string>& args)
 {
+  for (Option& option : command.options)
+  {
+    if (option.name == "--output")
+    {
+      option.required = false;
+    }
+  }
+  const auto checkOutputGiven = [](const Arguments& a)
+  {
+    if (!a.helpRequested && !a.has("--list-parts") && !a.has("--output"))
+    {
+      throw usageError("-o", "missing FILE (required)");
+    }
+    return a;
+  };
   try
   {
-    return parseArguments(command, args);
+    return checkOutputGiven(parseArguments(command, args));
   }
   catch (const UsageError& e)
   {
@@ -183,7 +211,7 @@ Arguments parse(const Command& command, const std::vector<std::string>& args)
     {
       throw usageError("MESH", "missing argument (or give --builtin)");
     }
-    return a;
+    return checkOutputGiven(a);
   }
 }
 
@@ -215,34 +243,76 @@ void checkOutput(const std::string& output)
   }
 }
 
-vtkSmartPointer<vtkPolyData> surfaceOf(const Arguments& a, const SurfaceOptions& options,
-                                       std::string& source, std::ostream& out)
+// The parts of the command line: the built-in mesh, or every MESH file.
+std::vector<ScenePart> scenePartsOf(const Arguments& a, std::ostream& warnings)
 {
-  LoadedMesh mesh;
   if (a.has("--builtin"))
   {
     if (!a.positionals.empty())
     {
       throw usageError(a.positionals[0], "give either MESH or --builtin");
     }
-    mesh = makeBuiltinMesh(parseBuiltinMesh(a.text("--builtin")));
-    source = "builtin:" + a.text("--builtin");
+    ScenePart part;
+    part.name = a.text("--builtin");
+    part.source = "builtin:" + a.text("--builtin");
+    part.mesh = makeBuiltinMesh(parseBuiltinMesh(a.text("--builtin")));
+    return {part};
   }
-  else
+  return loadParts(a.positionals, warnings);
+}
+
+// PART's surface prepared with OPTIONS, the notes of its loading and preparation on OUT (each
+// naming the part when there are several). A note of the loading that an earlier part of the
+// same file gave already (what the reader said about the file) is in PRINTED and not repeated.
+vtkSmartPointer<vtkPolyData> preparedSurface(const ScenePart& part, const SurfaceOptions& options,
+                                             bool several, std::set<std::string>& printed,
+                                             std::ostream& out)
+{
+  const std::string prefix = "  " + (several ? part.name + ": " : std::string());
+  for (const std::string& line : part.mesh.report.notes())
   {
-    source = a.positionals.at(0);
-    mesh = loadMesh(source);
+    if (printed.insert(part.source + "\n" + line).second)
+    {
+      out << prefix << line << "\n";
+    }
   }
-  for (const std::string& line : mesh.report.notes())
-  {
-    out << "  " << line << "\n";
-  }
-  PreparedSurface prepared = prepareSurface(mesh.polyData, options, source);
+  PreparedSurface prepared = prepareSurface(part.mesh.polyData, options, part.source);
   for (const std::string& note : prepared.report.notes())
   {
-    out << "  " << note << "\n";
+    out << prefix << note << "\n";
   }
   return prepared.polyData;
+}
+
+// What the summary line says the image is of: the file (or built-in mesh) of one part, else
+// "N parts (K hidden) from FILE, FILE".
+std::string sceneSource(const std::vector<ScenePart>& parts)
+{
+  if (parts.size() == 1)
+  {
+    return parts[0].source;
+  }
+  std::vector<std::string> files;
+  int hidden = 0;
+  for (const ScenePart& part : parts)
+  {
+    if (std::find(files.begin(), files.end(), part.source) == files.end())
+    {
+      files.push_back(part.source);
+    }
+    hidden += part.visible ? 0 : 1;
+  }
+  std::string text = std::to_string(parts.size()) + " parts";
+  if (hidden > 0)
+  {
+    text += " (" + std::to_string(hidden) + " hidden)";
+  }
+  text += " from ";
+  for (std::size_t i = 0; i < files.size(); ++i)
+  {
+    text += (i ? ", " : "") + files[i];
+  }
+  return text;
 }
 
 std::string formatMilliseconds(double seconds)
@@ -260,7 +330,7 @@ std::string renderSummary()
   return "render a mesh with an anisotropic material to a PNG or EXR, headless";
 }
 
-int runRender(const std::vector<std::string>& args, std::ostream& out)
+int runRender(const std::vector<std::string>& args, std::ostream& out, std::ostream& err)
 {
   const Command command = renderCommand();
   const Arguments a = parse(command, args);
@@ -271,8 +341,15 @@ int runRender(const std::vector<std::string>& args, std::ostream& out)
   }
 
   // Everything the command line can get wrong is checked before any work.
+  // --list-parts prints the parts alone: what a render reports goes nowhere.
+  const bool listing = a.has("--list-parts");
+  std::ostringstream unreported;
+  std::ostream& report = listing ? unreported : out;
   const std::string output = a.text("--output");
-  checkOutput(output);
+  if (!listing)
+  {
+    checkOutput(output);
+  }
   RenderSettings settings;
   std::tie(settings.width, settings.height) = parseImageSize(a.text("--size"), "--size", kMaxSide);
   if (a.has("--view") && (a.has("--azimuth") || a.has("--elevation")))
@@ -342,10 +419,10 @@ int runRender(const std::vector<std::string>& args, std::ostream& out)
     const QualityChoice quality =
         chooseSamples(a.real("--quality"), settings.material.lobe, settings.material.filtered);
     settings.material.samples = quality.samples;
-    out << "quality: " << quality.samples << " samples per frame for a predicted error of "
-        << quality.predictedError
-        << (quality.reachable ? "" : " (the target needs more than the largest sample count)")
-        << "\n";
+    report << "quality: " << quality.samples << " samples per frame for a predicted error of "
+           << quality.predictedError
+           << (quality.reachable ? "" : " (the target needs more than the largest sample count)")
+           << "\n";
   }
   settings.display = displayFromParameters(parameters);
   settings.environmentRotationDegrees = parameters.real("env-rotation");
@@ -354,9 +431,30 @@ int runRender(const std::vector<std::string>& args, std::ostream& out)
   settings.jitter = a.text("--jitter") == "on";
   applyModelOptions(a, settings);
 
+  // The material library and what --part assigns from it, before any mesh is read.
+  const MaterialLibrary library = partLibrary(a);
+  checkPartOptions(a, library);
+
   // Then the inputs, each failing with its file's name.
-  std::string source;
-  settings.surface = surfaceOf(a, surfaceOptions, source, out);
+  std::vector<ScenePart> scene = scenePartsOf(a, err);
+  assignParts(a, library, scene);
+  if (listing)
+  {
+    listParts(scene, out);
+    return 0;
+  }
+  const bool several = scene.size() > 1;
+  std::vector<vtkSmartPointer<vtkPolyData>> surfaces(scene.size());
+  std::set<std::string> printed;
+  for (std::size_t i = 0; i < scene.size(); ++i)
+  {
+    if (scene[i].visible)
+    {
+      surfaces[i] = preparedSurface(
+          scene[i], scene[i].material ? surfaceOptionsOf(*scene[i].material) : surfaceOptions,
+          several, printed, out);
+    }
+  }
   settings.environment = openEnvironment(parameters.text("env"));
   if (a.has("--normal-map"))
   {
@@ -386,10 +484,49 @@ int runRender(const std::vector<std::string>& args, std::ostream& out)
   {
     settings.material.heightMap = std::make_shared<const Image>(readImage(a.text("--height-map")));
   }
-  if (settings.material.usesMaps() && !settings.surface->GetPointData()->GetArray("TCoords"))
+  // Each library material once, its maps shared by the parts that use it.
+  std::map<std::string, MaterialSettings> librarySettings;
+  const std::optional<double> quality =
+      a.has("--quality") ? std::optional<double>(a.real("--quality")) : std::nullopt;
+  std::vector<RenderPart> parts;
+  for (std::size_t i = 0; i < scene.size(); ++i)
   {
-    throw errorAbout(source, "has no texture coordinates, which the maps need");
+    const ScenePart& part = scene[i];
+    RenderPart drawn;
+    drawn.name = part.name;
+    drawn.visible = part.visible;
+    drawn.surface = surfaces[i];
+    drawn.material = settings.material;
+    if (part.visible && part.material)
+    {
+      auto found = librarySettings.find(part.material->name);
+      if (found == librarySettings.end())
+      {
+        found = librarySettings
+                    .emplace(part.material->name,
+                             librarySettingsOf(*part.material, parameters, quality, report))
+                    .first;
+      }
+      drawn.material = found->second;
+    }
+    if (part.visible && drawn.material.usesMaps() &&
+        !drawn.surface->GetPointData()->GetArray("TCoords"))
+    {
+      throw errorAbout(part.source, "has no texture coordinates, which the maps need");
+    }
+    parts.push_back(std::move(drawn));
   }
+  // One part is drawn as the renderer's one-part scene; several as its parts.
+  if (parts.size() == 1)
+  {
+    settings.surface = parts[0].surface;
+    settings.material = parts[0].material;
+  }
+  else
+  {
+    settings.parts = std::move(parts);
+  }
+  const std::string source = sceneSource(scene);
 
   const RenderResult result =
       a.has("--compare") ? renderComparison(a, settings) : renderOffscreen(settings);

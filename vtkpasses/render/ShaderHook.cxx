@@ -8,6 +8,8 @@
 #include <cmath>
 #include <glm/mat3x3.hpp>
 #include <glm/matrix.hpp>
+#include <map>
+#include <mutex>
 #include <vtkActor.h>
 #include <vtkCommand.h>
 #include <vtkDataArray.h>
@@ -78,7 +80,22 @@ public:
   ShaderCode code;                                      // what is installed
   std::vector<vtkWeakPointer<vtkTextureObject>> active; // activated for the current draw
 
-  void deactivate()
+  // The hook that drew last in each window and may hold texture units there. A window has few
+  // units (Mesa's llvmpipe: 32 per stage), so a scene of many actors, each with its own lookup
+  // table, would run out of them before the renderer's end frees them: the next hook to draw in
+  // a window frees the units of the one before (whose draw is issued, so they are free again).
+  static std::mutex& turnMutex()
+  {
+    static std::mutex mutex;
+    return mutex;
+  }
+  static std::map<const vtkOpenGLRenderWindow*, Impl*>& lastDrawn()
+  {
+    static std::map<const vtkOpenGLRenderWindow*, Impl*> hooks;
+    return hooks;
+  }
+
+  void deactivateTextures()
   {
     for (vtkTextureObject* texture : active)
     {
@@ -88,6 +105,32 @@ public:
       }
     }
     active.clear();
+  }
+
+  // Before this hook's draw in WINDOW: the units of the hook that drew there before are freed.
+  void takeTurn(const vtkOpenGLRenderWindow* window)
+  {
+    std::lock_guard<std::mutex> lock(turnMutex());
+    Impl*& last = lastDrawn()[window];
+    if (last != this)
+    {
+      if (last)
+      {
+        last->deactivateTextures();
+      }
+      last = this;
+    }
+  }
+
+  void deactivate()
+  {
+    deactivateTextures();
+    std::lock_guard<std::mutex> lock(turnMutex());
+    auto& hooks = lastDrawn();
+    for (auto it = hooks.begin(); it != hooks.end();)
+    {
+      it = it->second == this ? hooks.erase(it) : std::next(it);
+    }
   }
 
   void onRendererEnd(vtkObject*, unsigned long, void*) { deactivate(); }
@@ -140,6 +183,7 @@ public:
     {
       return;
     }
+    takeTurn(window);
     try
     {
       onShader(program, window);

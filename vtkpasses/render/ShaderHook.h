@@ -90,8 +90,10 @@ public:
   void detach();
 
   // Activates TEXTURE for the coming draw and points SAMPLER at its unit (call from the shader
-  // callback). The unit is freed once the renderer has drawn, as vtkOpenGLTexture::PostRender
-  // does for VTK's own textures: no texture stays active between frames or after detaching.
+  // callback). The unit is freed once the actor has drawn (when the next hooked actor of the
+  // window draws, or the renderer has drawn), as vtkOpenGLTexture::PostRender does for VTK's own
+  // textures: a scene of many hooked actors never holds more units than one of them, and no
+  // texture stays active between frames or after detaching.
   void bindTexture(vtkShaderProgram* program, const char* sampler, vtkTextureObject* texture);
 
   // The transforms of the attached actor and renderer as PREFIX + "ClipToWorld" (mat4: the

@@ -11,6 +11,8 @@
 //    discs of radius 1 over the view's (2 x 2.5 x margin)^2, within 2% (the faceted sphere's
 //    outline is a polygon), none on the image's border, as many left as right; with the right
 //    one hidden, the image is the left sphere's rendered alone (the camera fits it);
+//  - 225 parts, more than a draw has texture units, of two lobes in turn render the image of
+//    each lobe's spheres merged into one part (an identity: each part reads its own table);
 //  - parts of one lobe share one half-vector table: LutCache::shared() makes (bakes or reads)
 //    one table per distinct lobe and serves every further part of that lobe from memory;
 //  - invalid scenes are refused before any drawing, naming the part.
@@ -299,6 +301,66 @@ TEST(RenderParts, TheCameraFitsTheVisiblePartsTogether)
       M_PI / (4.0 * s.view.margin * s.view.margin) * kWide * kWide; // radius 1, fitted
   EXPECT_NEAR(double(hidden.coveredPixels) / expectedAlone, 1.0, 0.02);
   EXPECT_EQ(coveredOnBorder(hidden.linear), 0);
+}
+
+// Appends the points, point attributes and triangles of SURFACE to MERGED.
+void append(vtkPolyData* merged, vtkPolyData* surface)
+{
+  if (!merged->GetPoints())
+  {
+    vtkNew<vtkPoints> points;
+    merged->SetPoints(points);
+    vtkNew<vtkCellArray> polys;
+    merged->SetPolys(polys);
+    merged->GetPointData()->CopyAllocate(surface->GetPointData());
+  }
+  vtkPoints* points = merged->GetPoints();
+  const vtkIdType first = points->GetNumberOfPoints();
+  for (vtkIdType p = 0; p < surface->GetNumberOfPoints(); ++p)
+  {
+    points->InsertNextPoint(surface->GetPoint(p));
+    merged->GetPointData()->CopyData(surface->GetPointData(), p, first + p);
+  }
+  vtkNew<vtkIdList> ids;
+  for (vtkIdType c = 0; c < surface->GetNumberOfCells(); ++c)
+  {
+    surface->GetCellPoints(c, ids);
+    std::vector<vtkIdType> cell;
+    for (vtkIdType k = 0; k < ids->GetNumberOfIds(); ++k)
+    {
+      cell.push_back(first + ids->GetId(k));
+    }
+    merged->GetPolys()->InsertNextCell(vtkIdType(cell.size()), cell.data());
+  }
+}
+
+TEST(RenderParts, ManyPartsRenderLikeTheirMaterialsMerged)
+{
+  ANISO_REQUIRE_DISPLAY();
+  // More parts than a draw has texture units, of two lobes in turn: each material's textures
+  // must be let go once its part is drawn, or later parts find no unit for their lookup table
+  // and read another's. The reference: the spheres of each lobe merged into one part.
+  constexpr int kSide = 15;
+  const vtkSmartPointer<vtkPolyData> sphere = makeSphere(12, 6);
+  MaterialSettings materials[2] = {testMaterial(), testMaterial()};
+  materials[1].lobe = {30.0, 8.0};
+  RenderSettings s = sceneSettings();
+  s.frames = 1;
+  vtkSmartPointer<vtkPolyData> merged[2] = {vtkSmartPointer<vtkPolyData>::New(),
+                                            vtkSmartPointer<vtkPolyData>::New()};
+  for (int i = 0; i < kSide * kSide; ++i)
+  {
+    const vtkSmartPointer<vtkPolyData> one =
+        moved(sphere, glm::dvec3(2.5 * (i % kSide), 0.0, 2.5 * (i / kSide)));
+    s.parts.push_back(part("sphere " + std::to_string(i + 1), one, materials[i % 2]));
+    append(merged[i % 2], one);
+  }
+  const RenderResult rendered = renderOffscreen(s);
+  RenderSettings two = sceneSettings();
+  two.frames = 1;
+  two.parts = {part("first lobe", merged[0], materials[0]),
+               part("second lobe", merged[1], materials[1])};
+  expectSameImage(rendered, renderOffscreen(two), "many");
 }
 
 TEST(RenderParts, PartsOfOneLobeShareTheirLookupTable)

@@ -1,0 +1,351 @@
+#include "app/render_parts.h"
+
+#include "core/image/image.h"
+#include "core/maps/map_files.h"
+#include "core/maps/quaternion_map.h"
+#include "core/models/models.h"
+#include "core/parameters/choices.h"
+#include "core/quality/adaptive_quality.h"
+#include "vtkpasses/mesh/BrushingModel.h"
+
+#include <filesystem>
+#include <memory>
+#include <set>
+#include <vtkPolyData.h>
+
+namespace aniso::cli
+{
+namespace
+{
+namespace fs = std::filesystem;
+
+// The names of PARTS for a message: "a, b, c" (the first few of many).
+std::string partNames(const std::vector<ScenePart>& parts)
+{
+  constexpr std::size_t kShown = 8;
+  std::string names;
+  for (std::size_t i = 0; i < parts.size() && i < kShown; ++i)
+  {
+    names += (i ? ", " : "") + parts[i].name;
+  }
+  if (parts.size() > kShown)
+  {
+    names += ", ... (" + std::to_string(parts.size()) + " parts)";
+  }
+  return names;
+}
+
+// "PATTERN=MATERIAL", split at the first '='.
+std::pair<std::string, std::string> splitPartRule(const std::string& rule)
+{
+  const std::size_t equals = rule.find('=');
+  if (equals == std::string::npos || equals == 0 || equals + 1 == rule.size())
+  {
+    throw usageError("--part", "'" + rule + "' is not PATTERN=MATERIAL");
+  }
+  return {rule.substr(0, equals), rule.substr(equals + 1)};
+}
+
+std::shared_ptr<const Image> imageOf(Image image)
+{
+  return std::make_shared<const Image>(std::move(image));
+}
+} // namespace
+
+void addPartOptions(Command& c)
+{
+  c.options.push_back(textOption(
+      "--materials", "FILE",
+      "a material library (JSON, format aniso-materials) whose materials --part may assign, "
+      "besides the built-in metals (a material of the same name as a built-in one wins)"));
+  Option part = textOption(
+      "--part", "PATTERN=MATERIAL",
+      "draw the parts whose names match PATTERN ('*' any run of characters, '?' one character) "
+      "with library material MATERIAL instead of the command line's material; repeatable, a "
+      "later --part wins where patterns overlap. Parts are named by their file's stem, or by "
+      "their block in a file of several (OBJ g and o, VTM blocks, glTF nodes); 'name 2' for a "
+      "second of the same name; --list-parts shows them");
+  part.repeatable = true;
+  c.options.push_back(part);
+  Option hide = textOption("--hide", "PATTERN",
+                           "leave out the parts whose names match PATTERN (not drawn, and the "
+                           "camera fits the others); repeatable");
+  hide.repeatable = true;
+  c.options.push_back(hide);
+  Option list = textOption("--list-parts", "",
+                           "print the parts, one line each (name, triangles, material, 'hidden' "
+                           "for a hidden one), and exit without rendering");
+  c.options.push_back(list);
+}
+
+FileMeshes meshesOfFile(const std::string& path)
+{
+  LoadedBlocks loaded = loadMeshBlocks(path);
+  FileMeshes file;
+  file.warnings = std::move(loaded.warnings);
+  if (loaded.blocks.size() == 1)
+  {
+    const fs::path p(path);
+    std::string stem = p.stem().string();
+    file.meshes.push_back(
+        {stem.empty() ? p.filename().string() : stem, std::move(loaded.blocks[0].mesh)});
+    return file;
+  }
+  for (MeshBlock& block : loaded.blocks)
+  {
+    file.meshes.push_back({std::move(block.name), std::move(block.mesh)});
+  }
+  return file;
+}
+
+std::vector<std::string> uniquePartNames(const std::vector<std::string>& names)
+{
+  std::set<std::string> taken;
+  std::vector<std::string> unique;
+  unique.reserve(names.size());
+  for (const std::string& name : names)
+  {
+    std::string candidate = name;
+    for (int i = 2; taken.count(candidate); ++i)
+    {
+      candidate = name + " " + std::to_string(i);
+    }
+    taken.insert(candidate);
+    unique.push_back(candidate);
+  }
+  return unique;
+}
+
+std::vector<ScenePart> loadParts(const std::vector<std::string>& paths, std::ostream& warnings)
+{
+  std::vector<ScenePart> parts;
+  std::vector<std::string> failures; // of the files that did not load
+  std::vector<std::string> failed;
+  std::vector<std::string> skipped; // files and blocks, in order
+  for (const std::string& path : paths)
+  {
+    try
+    {
+      FileMeshes file = meshesOfFile(path);
+      for (NamedMesh& named : file.meshes)
+      {
+        ScenePart part;
+        part.name = std::move(named.name);
+        part.source = path;
+        part.mesh = std::move(named.mesh);
+        parts.push_back(std::move(part));
+      }
+      for (std::string& warning : file.warnings)
+      {
+        skipped.push_back(oneLine(std::move(warning)));
+      }
+    }
+    catch (const Error& e)
+    {
+      if (paths.size() == 1)
+      {
+        throw;
+      }
+      failed.push_back(path);
+      failures.push_back(oneLine(e.what()));
+      skipped.push_back(failures.back());
+    }
+  }
+  if (parts.empty())
+  {
+    std::string files;
+    std::string reasons;
+    for (std::size_t i = 0; i < failed.size(); ++i)
+    {
+      files += (i ? ", " : "") + failed[i];
+      reasons += (i ? "; " : "") + failures[i];
+    }
+    throw errorAbout(files, "no mesh could be loaded (" + reasons + ")");
+  }
+  for (const std::string& warning : skipped)
+  {
+    warnings << "aniso: warning: " << warning << " (skipped)\n";
+  }
+  std::vector<std::string> names;
+  for (const ScenePart& part : parts)
+  {
+    names.push_back(part.name);
+  }
+  names = uniquePartNames(names);
+  for (std::size_t i = 0; i < parts.size(); ++i)
+  {
+    parts[i].name = names[i];
+  }
+  return parts;
+}
+
+MaterialLibrary partLibrary(const Arguments& a)
+{
+  MaterialLibrary library = builtinMaterials();
+  if (a.has("--materials"))
+  {
+    const MaterialLibrary file = readMaterialLibrary(a.text("--materials"));
+    for (const Material& material : file.materials())
+    {
+      library.put(material);
+    }
+  }
+  return library;
+}
+
+void checkPartOptions(const Arguments& a, const MaterialLibrary& library)
+{
+  if (!a.has("--part"))
+  {
+    return;
+  }
+  if (a.has("--compare") || a.text("--model") != kEnvironmentModel)
+  {
+    throw usageError("--part", "only applies to --model as-env (the other models draw every "
+                               "part with the command line's material)");
+  }
+  for (const std::string& rule : a.texts("--part"))
+  {
+    const std::string material = splitPartRule(rule).second;
+    if (!library.contains(material))
+    {
+      std::string known;
+      for (const Material& m : library.materials())
+      {
+        known += (known.empty() ? "" : ", ") + m.name;
+      }
+      throw usageError("--part", "no material '" + material + "' in the library (" + known +
+                                     (a.has("--materials") ? "" : "; --materials FILE adds more") +
+                                     ")");
+    }
+  }
+}
+
+void assignParts(const Arguments& a, const MaterialLibrary& library, std::vector<ScenePart>& parts)
+{
+  for (const std::string& rule : a.texts("--part"))
+  {
+    const auto [pattern, material] = splitPartRule(rule);
+    const Material& assigned = library.at(material);
+    bool matched = false;
+    for (ScenePart& part : parts)
+    {
+      if (matchesPartPattern(pattern, part.name))
+      {
+        part.material = &assigned;
+        matched = true;
+      }
+    }
+    if (!matched)
+    {
+      throw usageError("--part", "pattern '" + pattern +
+                                     "' matches no part (the parts: " + partNames(parts) + ")");
+    }
+  }
+  for (const std::string& pattern : a.texts("--hide"))
+  {
+    bool matched = false;
+    for (ScenePart& part : parts)
+    {
+      if (matchesPartPattern(pattern, part.name))
+      {
+        part.visible = false;
+        matched = true;
+      }
+    }
+    if (!matched)
+    {
+      throw usageError("--hide", "pattern '" + pattern +
+                                     "' matches no part (the parts: " + partNames(parts) + ")");
+    }
+  }
+  bool anyVisible = false;
+  for (const ScenePart& part : parts)
+  {
+    anyVisible = anyVisible || part.visible;
+  }
+  if (!anyVisible && !a.has("--list-parts"))
+  {
+    throw usageError("--hide", "hides every part: nothing is left to render");
+  }
+}
+
+void listParts(const std::vector<ScenePart>& parts, std::ostream& out)
+{
+  for (const ScenePart& part : parts)
+  {
+    const vtkIdType triangles = part.mesh.polyData->GetNumberOfCells();
+    out << part.name << "\t" << triangles << (triangles == 1 ? " triangle\t" : " triangles\t")
+        << (part.material ? part.material->name : std::string("(command line)"))
+        << (part.visible ? "" : "\thidden") << "\n";
+  }
+}
+
+SurfaceOptions surfaceOptionsOf(const Material& material)
+{
+  SurfaceOptions options;
+  const std::string& tangents = material.value("tangents").text;
+  if (tangents != "auto")
+  {
+    options.brushing = parseBrushingModel(tangents, material.name + ": tangents");
+  }
+  return options;
+}
+
+MaterialSettings librarySettingsOf(const Material& material, const ParameterSet& commandLine,
+                                   std::optional<double> quality, std::ostream& out)
+{
+  ParameterSet parameters = commandLine;
+  for (std::string_view key : materialKeys())
+  {
+    if (!isMaterialMapKey(key))
+    {
+      parameters.setValue(key, material.value(key));
+    }
+  }
+  MaterialSettings s = materialFromParameters(parameters);
+  if (quality)
+  {
+    const QualityChoice choice = chooseSamples(*quality, s.lobe, s.filtered);
+    s.samples = choice.samples;
+    out << "quality: material '" << material.name << "': " << choice.samples
+        << " samples per frame for a predicted error of " << choice.predictedError
+        << (choice.reachable ? "" : " (the target needs more than the largest sample count)")
+        << "\n";
+  }
+  const auto text = [&](std::string_view key) -> const std::string&
+  { return material.value(key).text; };
+  const BumpMapping bump = parseBumpMapping(text("bump"));
+  if (bump == BumpMapping::Normal && !text("normal-map").empty())
+  {
+    s.normalMap = imageOf(readSignedMap(text("normal-map")));
+  }
+  else if (bump == BumpMapping::Quaternion && !text("quaternion-map").empty())
+  {
+    s.quaternionMap = imageOf(readSignedMap(text("quaternion-map")));
+  }
+  else if (bump == BumpMapping::Quaternion && !text("normal-map").empty())
+  {
+    ImageInfo info;
+    const Image normals = readImage(text("normal-map"), &info);
+    s.quaternionMap = imageOf(bakeQuaternionMap(normals, info.integerFormat, nullptr));
+  }
+  if (!text("tpr").empty())
+  {
+    s.tprMap = imageOf(readTprMap(text("tpr"), material.name + ": tpr"));
+  }
+  const std::pair<std::string_view, std::shared_ptr<const Image> MaterialSettings::*> plain[] = {
+      {"height-map", &MaterialSettings::heightMap},
+      {"albedo-map", &MaterialSettings::albedoMap},
+      {"ao-map", &MaterialSettings::occlusionMap},
+      {"metallic-map", &MaterialSettings::metallicMap}};
+  for (const auto& [key, map] : plain)
+  {
+    if (!text(key).empty())
+    {
+      s.*map = imageOf(readImage(text(key)));
+    }
+  }
+  return s;
+}
+} // namespace aniso::cli
