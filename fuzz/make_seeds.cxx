@@ -70,7 +70,8 @@ int main(int argc, char** argv)
     return 2;
   }
   const fs::path dir = argv[1];
-  for (const char* sub : {"ply", "stl", "off", "session", "text_values", "image"})
+  for (const char* sub :
+       {"ply", "stl", "off", "session", "text_values", "image", "material_library"})
   {
     fs::create_directories(dir / sub);
   }
@@ -102,6 +103,21 @@ int main(int argc, char** argv)
         QJsonDocument(aniso::sessionToJson(model, {}, QString())).toJson(QJsonDocument::Indented);
     std::ofstream(dir / "session" / "default.aniso", std::ios::binary)
         .write(json.constData(), json.size());
+    // A scene of two parts of different materials (the parts and materials sections).
+    aniso::ScenePart shaft = aniso::partOfMesh("builtin:sphere", "turned brass");
+    aniso::ScenePart base = aniso::partOfMesh("builtin:plate", "brushed steel");
+    base.visible = false;
+    base.group = "assembly";
+    model.setParts({shaft, base}, aniso::builtinMaterials());
+    const QByteArray parts =
+        QJsonDocument(aniso::sessionToJson(model, {}, QString())).toJson(QJsonDocument::Indented);
+    std::ofstream(dir / "session" / "parts.aniso", std::ios::binary)
+        .write(parts.constData(), parts.size());
+  }
+  {
+    // The built-in metals through the library writer.
+    const std::string text = aniso::materialLibraryToJson(aniso::builtinMaterials());
+    std::ofstream(dir / "material_library" / "builtin.json", std::ios::binary) << text;
   }
   const auto& specs = aniso::parameterSpecs();
   for (size_t i = 0; i < specs.size(); ++i)
