@@ -432,6 +432,7 @@ void SceneModel::setParts(std::vector<ScenePart> parts, MaterialLibrary library)
     {
       throw errorAbout("scene", "part \"" + p.name + "\" has no mesh");
     }
+    checkPlacement(p.placement, "scene: part \"" + p.name + "\"");
     if (!library.contains(p.material))
     {
       throw errorAbout("scene", "part \"" + p.name + "\": material \"" + p.material +

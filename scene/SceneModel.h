@@ -4,6 +4,7 @@
 // scene only through this model (usually through a SceneEditor, which makes edits undoable);
 // the renderer listens to it. Qt-only: no VTK, no GL.
 #include "core/parameters/material_library.h"
+#include "core/placement.h"
 #include "core/parameters/parameters.h"
 
 #include <QObject>
@@ -73,11 +74,14 @@ struct ScenePart
   std::string group;    // the file (or other source) the part belongs to; empty: none
   std::string material; // a material of the scene's library
   bool visible = true;
+  // Where the part sits in the scene (core/placement.h): its tangent model's axes and centres
+  // are in the part's own frame and turn with it.
+  PartMatrix placement = kIdentityPlacement;
 
   bool operator==(const ScenePart& o) const
   {
     return name == o.name && mesh == o.mesh && block == o.block && group == o.group &&
-           material == o.material && visible == o.visible;
+           material == o.material && visible == o.visible && placement == o.placement;
   }
   bool operator!=(const ScenePart& o) const { return !(*this == o); }
 };

@@ -231,6 +231,23 @@ void readParts(const QJsonObject& json, const QString& base, SessionContent& con
       throw errorAbout(subject + "/visible", "expected true or false");
     }
     part.visible = p["visible"].toBool(true);
+    if (!p["placement"].isUndefined())
+    {
+      const QJsonArray matrix = p["placement"].toArray();
+      if (!p["placement"].isArray() || matrix.size() != 16)
+      {
+        throw errorAbout(subject + "/placement", "expected an array of 16 numbers (row-major)");
+      }
+      for (int k = 0; k < 16; ++k)
+      {
+        if (!matrix[k].isDouble())
+        {
+          throw errorAbout(subject + "/placement", "expected an array of 16 numbers (row-major)");
+        }
+        part.placement[std::size_t(k)] = matrix[k].toDouble();
+      }
+      checkPlacement(part.placement, subject + "/placement");
+    }
     content.parts.push_back(std::move(part));
   }
   SceneModel probe; // the checks of setParts, with messages naming the section
@@ -273,6 +290,15 @@ QJsonObject sessionToJson(const SceneModel& model, const QJsonObject& unknown,
     p["group"] = QString::fromStdString(part.group);
     p["material"] = QString::fromStdString(part.material);
     p["visible"] = part.visible;
+    if (part.placement != kIdentityPlacement)
+    {
+      QJsonArray matrix;
+      for (double v : part.placement)
+      {
+        matrix.append(v);
+      }
+      p["placement"] = matrix;
+    }
     parts.append(p);
   }
   json["parts"] = parts;

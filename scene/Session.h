@@ -8,7 +8,8 @@
 //     "view": {"position": [x, y, z], "focal-point": [...], "view-up": [...],
 //              "view-angle": 30, "parallel": false, "parallel-scale": 1},
 //     "parts": [{"name": "shaft", "mesh": "gearbox.obj", "block": "shaft",
-//                "group": "gearbox.obj", "material": "brushed steel", "visible": true}, ...],
+//                "group": "gearbox.obj", "material": "brushed steel", "visible": true,
+//                "placement": [16 numbers, row-major; left out when the identity]}, ...],
 //     "materials": {"brushed steel": {"nu": 800, ...}, ...}
 //   }
 //

@@ -5,6 +5,7 @@
 #include "app/gui/ViewCamera.h"
 #include "core/error.h"
 #include "scene/LutScheduler.h"
+#include "vtkpasses/mesh/PartPlacement.h"
 #include "vtkpasses/render/AnisoMaterial.h"
 #include "vtkpasses/render/EnvironmentLighting.h"
 #include "vtkpasses/render/vtkAnisoAccumulationPass.h"
@@ -462,7 +463,11 @@ bool SceneView::syncParts()
     const ScenePart& wanted = parts[i];
     PartView& part = *parts_[i];
     const std::string tangents = model_->partMaterial(int(i)).value("tangents").text;
-    const std::string key = wanted.mesh + "\n" + wanted.block + "\n" + tangents;
+    std::string key = wanted.mesh + "\n" + wanted.block + "\n" + tangents;
+    for (double v : wanted.placement)
+    {
+      key += "\n" + formatNumber(v);
+    }
     part.name = wanted.name;
     part.material = wanted.material;
     if (part.surfaceKey != key)
@@ -472,7 +477,12 @@ bool SceneView::syncParts()
       changed = true;
       try
       {
+        // Prepared in the part's own frame (its tangent model's axes are there), then placed.
         part.surface = assets_->surface(wanted.mesh, wanted.block, tangents)->polyData;
+        if (wanted.placement != kIdentityPlacement)
+        {
+          part.surface = placedSurface(part.surface, wanted.placement);
+        }
         part.loaded = true;
         for (const std::string& note : assets_->surfaceNotes(wanted.mesh, wanted.block, tangents))
         {
@@ -525,8 +535,12 @@ void SceneView::applySurfaces()
       const std::string tangents = model_->partMaterial(int(i)).value("tangents").text;
       part.drawn = inDrawingFrame(part.surface, drawing_);
       // The stand-in in the scene's drawing frame: the view does not jump when it is swapped.
-      const vtkSmartPointer<vtkPolyData> standIn =
+      vtkSmartPointer<vtkPolyData> standIn =
           assets_->interactiveSurface(p.mesh, p.block, tangents);
+      if (standIn && p.placement != kIdentityPlacement)
+      {
+        standIn = placedSurface(standIn, p.placement);
+      }
       part.drawnInteractive = standIn ? inDrawingFrame(standIn, drawing_) : nullptr;
       setDrawingFrame(part.actor, drawing_);
       if (!part.shading)

@@ -215,7 +215,12 @@ private slots:
     model.setSelection({2});
     editor.edit("f0", aniso::colorValue(0.25, 0.5, 0.125));
     editor.setPartsVisible({1}, false);
+    std::vector<ScenePart> placed = model.parts();
+    placed[1].placement = {0, -1, 0, 0.25, 1, 0, 0, -3.5, 0, 0, 1, 1e-3, 0, 0, 0, 1};
+    editor.editParts(placed, model.materials(), "Place");
     const QJsonObject json = aniso::sessionToJson(model, {}, "/data");
+    QVERIFY(!json["parts"].toArray()[0].toObject().contains("placement")); // the identity
+    QCOMPARE(json["parts"].toArray()[1].toObject()["placement"].toArray().size(), 16);
     QCOMPARE(json["version"].toInt(), aniso::kSessionVersion);
     QCOMPARE(json["parts"].toArray()[0].toObject()["mesh"].toString(), QString("gearbox.obj"));
 
@@ -279,6 +284,14 @@ private slots:
     e = errorOf(R"({"format": "aniso-session", "version": 2, "materials": {},
       "parts": [{"mesh": "builtin:sphere", "material": "x"}]})");
     QVERIFY2(e.startsWith("s.json: parts/1/name: expected a text"), qPrintable(e));
+    e = errorOf(R"({"format": "aniso-session", "version": 2, "materials": {"m": {}},
+      "parts": [{"name": "a", "mesh": "builtin:sphere", "material": "m",
+                 "placement": [1,0,0,0, 0,1,0,0, 0,0,0,0, 0,0,0,1]}]})");
+    QVERIFY2(e.startsWith("s.json: parts/1/placement: ") && e.contains("singular"),
+             qPrintable(e));
+    e = errorOf(R"({"format": "aniso-session", "version": 2, "materials": {"m": {}},
+      "parts": [{"name": "a", "mesh": "builtin:sphere", "material": "m", "placement": [1, 2]}]})");
+    QVERIFY2(e.startsWith("s.json: parts/1/placement: expected an array of 16"), qPrintable(e));
     e = errorOf(R"({"format": "aniso-session", "version": 2,
       "materials": {"m": {"nu": "high"}}, "parts": []})");
     QVERIFY2(e.startsWith("s.json: materials: material \"m\": nu: expected a number"),

@@ -25,6 +25,9 @@
 #include <vtkActor.h>
 #include <vtkCamera.h>
 #include <vtkCompositeDataSet.h>
+#include <vtkDataArray.h>
+#include <vtkMapper.h>
+#include <vtkPointData.h>
 #include <vtkInformation.h>
 #include <vtkMultiBlockDataSet.h>
 #include <vtkNew.h>
@@ -37,6 +40,7 @@
 #include <vtkUnsignedCharArray.h>
 
 using aniso::numberValue;
+using aniso::ScenePart;
 using aniso::textValue;
 
 namespace
@@ -282,6 +286,64 @@ private slots:
     window.editor()->undoStack()->undo();
     QCOMPARE(model->parts().size(), std::size_t(2));
     QCOMPARE(window.view()->partCount(), 2);
+  }
+
+  // A placed part is drawn where its placement puts it, and its tangent model's axis turns with
+  // it: the same sphere file twice, the second shifted by 4 along x and turned 90 degrees about z,
+  // with tangents along the part's x axis (so along the scene's y).
+  void placedPartsAreDrawnWhereTheyArePut()
+  {
+    QTemporaryDir dir;
+    const QString ball = dir.filePath("ball.ply");
+    const long long triangles = writeSphere(ball, 0.0);
+    aniso::MainWindow window;
+    window.setErrorDialogs(false);
+    QVERIFY(window.openMesh(ball));
+    QVERIFY(window.addMeshes({ball}));
+    aniso::SceneModel* model = window.model();
+    std::vector<ScenePart> parts = model->parts();
+    QCOMPARE(parts.size(), std::size_t(2));
+    QCOMPARE(parts[1].name, std::string("ball 2"));
+    parts[1].placement = {0, -1, 0, 4, 1, 0, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
+    aniso::MaterialLibrary library = model->materials();
+    aniso::Material axis = aniso::defaultMaterial("along x");
+    axis.values["tangents"] = textValue("axis:1,0,0");
+    library.put(axis);
+    parts[0].material = "along x";
+    parts[1].material = "along x";
+    window.editor()->editParts(parts, library, "Place");
+    aniso::SceneView* view = window.view();
+    QCOMPARE(view->drawnTriangles(), 2 * triangles);
+    // The two spheres' joint bounding sphere: centred between them.
+    QVERIFY(std::abs(view->drawingFrame().centre.x - 2.0) < 0.05);
+    vtkPolyData* placed =
+        vtkPolyData::SafeDownCast(view->partActor(1)->GetMapper()->GetInputDataObject(0, 0));
+    QVERIFY(placed);
+    vtkDataArray* tangents = placed->GetPointData()->GetTangents();
+    vtkDataArray* normals = placed->GetPointData()->GetNormals();
+    QVERIFY(tangents && normals);
+    // Away from the poles of the turned axis (the scene's y), each tangent is the scene's y made
+    // orthogonal to the normal, y - n (n . y), up to its sign.
+    int along = 0;
+    int checked = 0;
+    for (vtkIdType i = 0; i < tangents->GetNumberOfTuples(); ++i)
+    {
+      double t[3];
+      double n[3];
+      tangents->GetTuple(i, t);
+      normals->GetTuple(i, n);
+      if (std::abs(n[1]) > 0.5)
+      {
+        continue;
+      }
+      ++checked;
+      double e[3] = {-n[0] * n[1], 1.0 - n[1] * n[1], -n[2] * n[1]};
+      const double length = std::sqrt(e[0] * e[0] + e[1] * e[1] + e[2] * e[2]);
+      const double cosine = (t[0] * e[0] + t[1] * e[1] + t[2] * e[2]) / length;
+      along += std::abs(cosine) > 0.999 ? 1 : 0;
+    }
+    QVERIFY(checked > 0);
+    QVERIFY2(along == checked, qPrintable(QString("%1 of %2").arg(along).arg(checked)));
   }
 
   // A part whose file is gone is skipped with a warning naming the part and the file; the other
