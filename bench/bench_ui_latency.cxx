@@ -3,7 +3,8 @@
 // slider is dragged, (c) the view refines to its target once still, (d) environment sampling
 // is switched to mis, (e) a large mesh is opened in the background as the File menu opens it,
 // (f) the same opened synchronously, for comparison, (g) the orbit of (a) around that mesh and its
-// refinement once still. Prints, per phase, the largest and the
+// refinement once still, (h) a scene of 200 parts opened in the background, (i) one part
+// selected, (j) its n_u edited, (k) a library material assigned to it. Prints, per phase, the largest and the
 // 99th-percentile gap, the frames drawn (window renders: a frame drawn in bands counts once per
 // band), the samples per pixel accumulated and the samples per pixel and second. Run (X server
 // needed): xvfb-run -a -s "-screen 0 1920x1080x24" bench_ui_latency [WxH]
@@ -36,6 +37,11 @@
 #include <string>
 #include <vector>
 #include <vtkCallbackCommand.h>
+#include <vtkCompositeDataSet.h>
+#include <vtkInformation.h>
+#include <vtkMultiBlockDataSet.h>
+#include <vtkSphereSource.h>
+#include <vtkXMLMultiBlockDataWriter.h>
 #include <vtkCommand.h>
 #include <vtkNew.h>
 #include <vtkOpenGLRenderer.h>
@@ -243,7 +249,7 @@ int main(int argc, char** argv)
   tick.start();
 
   std::vector<Phase> phases;
-  phases.reserve(8);
+  phases.reserve(16);
   const auto run = [&](const char* name, const std::function<void()>& body)
   {
     phases.push_back(Phase{name, {}, 0, 0, 0.0});
@@ -402,6 +408,73 @@ int main(int argc, char** argv)
   // refinement once still.
   run("orbit large mesh", orbit);
   run("refine large mesh", [&] { waitConverged(120000); });
+
+  // (h) A scene of 200 parts (a VTM of 20 x 10 spheres of 960 triangles, written by VTK's
+  // multiblock writer) opened in the background; (i) one part selected (what a click does);
+  // (j) that part's n_u edited; (k) a library material assigned to it. Each until refined.
+  const QString partsFile = meshDir.filePath("parts.vtm");
+  {
+    vtkNew<vtkMultiBlockDataSet> blocks;
+    blocks->SetNumberOfBlocks(200);
+    for (unsigned i = 0; i < 200; ++i)
+    {
+      vtkNew<vtkSphereSource> sphere;
+      sphere->SetCenter(double(i % 20), 0.0, double(i / 20));
+      sphere->SetRadius(0.4);
+      sphere->SetThetaResolution(24);
+      sphere->SetPhiResolution(22);
+      sphere->Update();
+      blocks->SetBlock(i, sphere->GetOutput());
+      blocks->GetMetaData(i)->Set(vtkCompositeDataSet::NAME(), ("sphere " + std::to_string(i)).c_str());
+    }
+    vtkNew<vtkXMLMultiBlockDataWriter> writer;
+    writer->SetFileName(partsFile.toStdString().c_str());
+    writer->SetInputData(blocks);
+    writer->Write();
+  }
+  const auto waitSettled = [&]
+  {
+    QElapsedTimer t;
+    t.start();
+    while ((window.meshLoading() || window.lutScheduler()->busy() || !view->converged()) &&
+           t.elapsed() < 120000)
+    {
+      pump(5);
+    }
+  };
+  run("open 200 parts (bg)",
+      [&]
+      {
+        window.openMeshInBackground(partsFile);
+        QElapsedTimer t;
+        t.start();
+        while (window.model()->parts().size() != 200 && t.elapsed() < 120000)
+        {
+          pump(5);
+        }
+        waitSettled();
+      });
+  run("select a part",
+      [&]
+      {
+        window.model()->setSelection({57});
+        pump(400); // the LUT scheduler's debounce, its bake (a cache hit) and what follows
+        waitSettled();
+      });
+  run("edit its n_u",
+      [&]
+      {
+        window.editor()->edit("nu", aniso::numberValue(321.0));
+        pump(400);
+        waitSettled();
+      });
+  run("assign a material",
+      [&]
+      {
+        window.editor()->assignMaterial({57}, "satin gold");
+        pump(400);
+        waitSettled();
+      });
   tick.stop();
 
   const int* size = window.vtkWidget()->renderWindow()->GetSize();

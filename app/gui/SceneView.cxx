@@ -204,7 +204,16 @@ SceneView::SceneView(SceneModel* model, SceneAssets* assets, LutScheduler* luts,
           drawn.standIn = drawn.standIn || (part->drawnInteractive && part->inRenderer &&
                                             part->mapper->GetInput() == part->drawnInteractive);
         }
-        drawn.samples = full_.samples;
+        // The samples each part draws in this frame (every part the same: the run's).
+        drawn.samples = 1;
+        for (const auto& part : parts_)
+        {
+          if (part->inRenderer && part->shading)
+          {
+            drawn.samples = part->shading->settings().samples;
+            break;
+          }
+        }
         drawn.bands = pass_->GetCurrentFrameBands();
         drawn.band = pass_->GetNextBand(); // the band being drawn (counted up after it)
       },
