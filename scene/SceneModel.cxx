@@ -86,7 +86,13 @@ ParameterValue defaultValue(const SceneKey& key)
   return defaultParameterValue(key.spec);
 }
 
-ScenePart partOfMeshImpl(const std::string& mesh, const std::string& material)
+bool finite3(const std::array<double, 3>& v)
+{
+  return std::isfinite(v[0]) && std::isfinite(v[1]) && std::isfinite(v[2]);
+}
+} // namespace
+
+ScenePart partOfMesh(const std::string& mesh, const std::string& material)
 {
   ScenePart part;
   part.mesh = mesh;
@@ -111,17 +117,6 @@ ScenePart partOfMeshImpl(const std::string& mesh, const std::string& material)
   }
   part.name = name.empty() ? std::string("part") : name;
   return part;
-}
-
-bool finite3(const std::array<double, 3>& v)
-{
-  return std::isfinite(v[0]) && std::isfinite(v[1]) && std::isfinite(v[2]);
-}
-} // namespace
-
-ScenePart partOfMesh(const std::string& mesh, const std::string& material)
-{
-  return partOfMeshImpl(mesh, material);
 }
 
 std::pair<std::vector<ScenePart>, MaterialLibrary> onePartScene(const SceneModel::Values& values,
@@ -154,7 +149,7 @@ std::pair<std::vector<ScenePart>, MaterialLibrary> onePartScene(const SceneModel
   const auto mesh = values.find("mesh");
   const std::string meshText =
       mesh != values.end() ? mesh->second.text : std::string(sceneKey("mesh").spec.defaultText);
-  return {{partOfMeshImpl(meshText, name)}, std::move(library)};
+  return {{partOfMesh(meshText, name)}, std::move(library)};
 }
 
 const std::vector<SceneKey>& sceneKeys()
@@ -177,27 +172,6 @@ bool sceneKeyAffects(std::string_view key, Affects what)
 {
   const SceneKey* k = findSceneKey(key);
   return k && k->spec.affects(what);
-}
-
-ParameterValue numberValue(double value)
-{
-  ParameterValue v;
-  v.number.fill(value);
-  return v;
-}
-
-ParameterValue colorValue(double r, double g, double b)
-{
-  ParameterValue v;
-  v.number = {r, g, b};
-  return v;
-}
-
-ParameterValue textValue(std::string text)
-{
-  ParameterValue v;
-  v.text = std::move(text);
-  return v;
 }
 
 void checkCameraState(const CameraState& c)
@@ -245,7 +219,7 @@ SceneModel::SceneModel(QObject* parent)
     values_.push_back(defaultValue(key));
   }
   // Every default material value is the default material's (brushed aluminium).
-  parts_.push_back(partOfMeshImpl(text("mesh"), std::string(kDefaultMaterialName)));
+  parts_.push_back(partOfMesh(text("mesh"), std::string(kDefaultMaterialName)));
 }
 
 SceneModel::~SceneModel() = default;
@@ -369,7 +343,7 @@ void SceneModel::setValues(const Values& values)
   if (meshChanged)
   {
     // A new mesh is a scene of one part, with the material edits went to.
-    parts_ = {partOfMeshImpl(text("mesh"), edited.front())};
+    parts_ = {partOfMesh(text("mesh"), edited.front())};
     selection_.clear();
   }
   // Signals go out once every value is in place, so a listener sees a consistent scene.
@@ -602,7 +576,7 @@ void SceneModel::reset()
       changed.push_back(QString::fromStdString(std::string(keys[i].spec.name)));
     }
   }
-  std::vector<ScenePart> parts{partOfMeshImpl(text("mesh"), std::string(kDefaultMaterialName))};
+  std::vector<ScenePart> parts{partOfMesh(text("mesh"), std::string(kDefaultMaterialName))};
   const bool partsDiffer = parts != parts_;
   const bool materialsDiffer = library_ != builtinMaterials();
   const bool hadSelection = !selection_.empty();

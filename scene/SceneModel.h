@@ -39,9 +39,6 @@ bool isSceneKey(std::string_view key);
 // no scene key.
 bool sceneKeyAffects(std::string_view key, Affects what);
 
-ParameterValue numberValue(double value);
-ParameterValue colorValue(double r, double g, double b);
-ParameterValue textValue(std::string text);
 
 // Where the camera is; unset until a view was recorded (then the renderer frames the mesh).
 struct CameraState

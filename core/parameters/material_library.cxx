@@ -169,35 +169,14 @@ Material withDefaults(Material material)
   return full;
 }
 
-ParameterValue number(double v)
-{
-  ParameterValue value;
-  value.number.fill(v);
-  return value;
-}
-
-ParameterValue rgb(double r, double g, double b)
-{
-  ParameterValue value;
-  value.number = {r, g, b};
-  return value;
-}
-
-ParameterValue textOf(std::string text)
-{
-  ParameterValue value;
-  value.text = std::move(text);
-  return value;
-}
-
 Material metal(std::string name, double nu, double nv, ParameterValue f0,
                std::string tangents = "auto")
 {
   Material m = defaultMaterial(std::move(name));
-  m.values["nu"] = number(nu);
-  m.values["nv"] = number(nv);
+  m.values["nu"] = numberValue(nu);
+  m.values["nv"] = numberValue(nv);
   m.values["f0"] = std::move(f0);
-  m.values["tangents"] = textOf(std::move(tangents));
+  m.values["tangents"] = textValue(std::move(tangents));
   return m;
 }
 
@@ -409,12 +388,12 @@ const MaterialLibrary& builtinMaterials()
   {
     MaterialLibrary l;
     l.put(defaultMaterial(std::string(kDefaultMaterialName)));
-    l.put(metal("brushed steel", 800.0, 40.0, rgb(0.562, 0.565, 0.578)));
-    l.put(metal("brushed titanium", 600.0, 60.0, rgb(0.542, 0.497, 0.449)));
-    l.put(metal("turned brass", 2000.0, 80.0, rgb(0.910, 0.778, 0.423), "around:0,0,1"));
-    l.put(metal("brushed copper", 1000.0, 50.0, rgb(0.955, 0.638, 0.538)));
-    l.put(metal("satin gold", 150.0, 150.0, rgb(1.000, 0.782, 0.344)));
-    l.put(metal("polished chromium", 10000.0, 10000.0, rgb(0.549, 0.556, 0.554)));
+    l.put(metal("brushed steel", 800.0, 40.0, colorValue(0.562, 0.565, 0.578)));
+    l.put(metal("brushed titanium", 600.0, 60.0, colorValue(0.542, 0.497, 0.449)));
+    l.put(metal("turned brass", 2000.0, 80.0, colorValue(0.910, 0.778, 0.423), "around:0,0,1"));
+    l.put(metal("brushed copper", 1000.0, 50.0, colorValue(0.955, 0.638, 0.538)));
+    l.put(metal("satin gold", 150.0, 150.0, colorValue(1.000, 0.782, 0.344)));
+    l.put(metal("polished chromium", 10000.0, 10000.0, colorValue(0.549, 0.556, 0.554)));
     return l;
   }();
   return library;

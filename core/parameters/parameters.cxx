@@ -586,6 +586,27 @@ AsLobe ParameterSet::lobe() const
   return lobe;
 }
 
+ParameterValue numberValue(double value)
+{
+  ParameterValue v;
+  v.number.fill(value);
+  return v;
+}
+
+ParameterValue colorValue(double r, double g, double b)
+{
+  ParameterValue v;
+  v.number = {r, g, b};
+  return v;
+}
+
+ParameterValue textValue(std::string text)
+{
+  ParameterValue v;
+  v.text = std::move(text);
+  return v;
+}
+
 SpecularMethod parseSpecularMethod(std::string_view text)
 {
   return parseIn(kSpecularMethods, "method", text);

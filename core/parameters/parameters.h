@@ -104,6 +104,11 @@ struct ParameterValue
 
 ParameterValue defaultParameterValue(const ParameterSpec& spec);
 
+// Values as the parameter types hold them: a number in every component, a colour, a text.
+ParameterValue numberValue(double value);
+ParameterValue colorValue(double r, double g, double b);
+ParameterValue textValue(std::string text);
+
 // Parses TEXT as a value of spec (strictly: the whole text, finite numbers, integers without a
 // fraction, colours as "R,G,B" or one grey value) and checks the range. Throws aniso::Error
 // "SUBJECT: reason" so the caller decides whether the subject is an option or a session key.

@@ -33,13 +33,6 @@ std::string errorOf(F&& f)
   return {};
 }
 
-aniso::ParameterValue number(double v)
-{
-  aniso::ParameterValue value;
-  value.number.fill(v);
-  return value;
-}
-
 // Every Material-scope declaration and every map is a material key, nothing else is.
 TEST(MaterialLibrary, MaterialKeysAreTheMaterialScopeParametersAndTheMaps)
 {
@@ -75,10 +68,10 @@ TEST(MaterialLibrary, JsonRoundTripIsExact)
   for (const char* name : {"zeta", "alpha \"quoted\"", "grün"})
   {
     Material m = aniso::defaultMaterial(name);
-    m.values["nu"] = number(1.0 + unit(random) * 9999.0);
-    m.values["nv"] = number(unit(random) * 100.0);
+    m.values["nu"] = aniso::numberValue(1.0 + unit(random) * 9999.0);
+    m.values["nv"] = aniso::numberValue(unit(random) * 100.0);
     m.values["f0"].number = {unit(random), unit(random), unit(random)};
-    m.values["height-scale"] = number(0.5 * unit(random));
+    m.values["height-scale"] = aniso::numberValue(0.5 * unit(random));
     m.values["tangents"].text = "around:0,0,1@0.25,0,0";
     m.values["bump"].text = "normal";
     m.values["normal-map"].text = "/elsewhere/grooves.png";
@@ -133,7 +126,7 @@ TEST(MaterialLibrary, LeftOutKeysTakeTheirDefaults)
   const MaterialLibrary library = aniso::materialLibraryFromJson(
       R"({"format": "aniso-materials", "version": 1, "materials": {"m": {"nu": 12}}})", {}, "f");
   Material expected = aniso::defaultMaterial("m");
-  expected.values["nu"] = number(12.0);
+  expected.values["nu"] = aniso::numberValue(12.0);
   EXPECT_EQ(library.at("m"), expected);
 }
 
@@ -169,12 +162,12 @@ TEST(MaterialLibrary, UniqueNamesAndEdits)
   MaterialLibrary library = aniso::builtinMaterials();
   EXPECT_EQ(library.uniqueName("brushed steel"), "brushed steel 2");
   EXPECT_EQ(library.uniqueName("new"), "new");
-  library.setValue("brushed steel", "nu", number(5.0));
+  library.setValue("brushed steel", "nu", aniso::numberValue(5.0));
   EXPECT_EQ(library.at("brushed steel").value("nu").number[0], 5.0);
   const MaterialLibrary before = library;
-  EXPECT_THROW(library.setValue("brushed steel", "nu", number(-1.0)), aniso::Error);
-  EXPECT_THROW(library.setValue("absent", "nu", number(1.0)), aniso::Error);
-  EXPECT_THROW(library.setValue("brushed steel", "exposure", number(1.0)), aniso::Error);
+  EXPECT_THROW(library.setValue("brushed steel", "nu", aniso::numberValue(-1.0)), aniso::Error);
+  EXPECT_THROW(library.setValue("absent", "nu", aniso::numberValue(1.0)), aniso::Error);
+  EXPECT_THROW(library.setValue("brushed steel", "exposure", aniso::numberValue(1.0)), aniso::Error);
   EXPECT_EQ(library, before);
   EXPECT_TRUE(library.remove("brushed steel"));
   EXPECT_FALSE(library.contains("brushed steel"));
