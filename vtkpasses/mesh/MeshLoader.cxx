@@ -259,6 +259,49 @@ auto readingErrorsNamed(const std::string& path, Read&& read)
 }
 
 // The parts' names: the file's, the stem where it gives none, " 2", " 3", ... on repeats.
+// The formats whose files hold parts (loadMeshBlocks reads them in the reader program).
+bool hasBlocks(const std::string& ext)
+{
+  static const std::set<std::string> withBlocks = {".obj", ".vtm", ".gltf", ".glb"};
+  return withBlocks.count(ext) > 0;
+}
+
+// The reader's material and placement of a part, into BLOCK; what is malformed is dropped with
+// a warning "SUBJECT: reason".
+// Relative map paths in the material are read against DIRECTORY (the file's).
+void adoptFinishAndPlace(const ReaderBlock& raw, const std::string& directory,
+                         const std::string& subject, MeshBlock& block,
+                         std::vector<std::string>& warnings)
+{
+  if (!raw.material.empty())
+  {
+    try
+    {
+      const MaterialLibrary library = materialLibraryFromJson(raw.material, directory, subject);
+      if (library.materials().size() != 1)
+      {
+        throw errorAbout(subject, "the reader sent " +
+                                      std::to_string(library.materials().size()) +
+                                      " materials for one part");
+      }
+      block.material = library.materials().front();
+    }
+    catch (const Error& e)
+    {
+      warnings.push_back(std::string(e.what()) + " (its material is left out)");
+    }
+  }
+  try
+  {
+    checkPlacement(raw.placement, subject);
+    block.placement = raw.placement;
+  }
+  catch (const Error& e)
+  {
+    warnings.push_back(std::string(e.what()) + " (placed where its coordinates are)");
+  }
+}
+
 std::vector<std::string> uniqueNames(const std::vector<ReaderBlock>& blocks,
                                      const std::string& stem)
 {
@@ -310,9 +353,12 @@ LoadedBlocks loadMeshBlocks(const std::string& path)
   const std::string ext = knownExtension(file, path);
   const std::string stem = file.stem().string();
   LoadedBlocks loaded;
-  if (ext != ".obj" && ext != ".vtm" && ext != ".gltf" && ext != ".glb")
+  if (!hasBlocks(ext))
   {
-    loaded.blocks.push_back({stem, loadMesh(path)});
+    MeshBlock block;
+    block.name = stem;
+    block.mesh = loadMesh(path);
+    loaded.blocks.push_back(std::move(block));
     return loaded;
   }
   const uintmax_t fileSize = readingSize(file, ext, checkFile(file, path));
@@ -348,6 +394,7 @@ LoadedBlocks loadMeshBlocks(const std::string& path)
       continue;
     }
     raw[b].polyData = nullptr;
+    adoptFinishAndPlace(raw[b], file.parent_path().string(), subject, block, loaded.warnings);
     block.mesh.report.invalidTCoords += objNonFinite.tcoords;
     block.mesh.report.invalidNormals += objNonFinite.normals;
     loaded.blocks.push_back(std::move(block));

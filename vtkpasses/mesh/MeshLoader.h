@@ -32,8 +32,11 @@
 // "PATH: the reader crashed on this file ...". loadMesh and loadMeshBlocks serialise themselves,
 // since VTK's message output is process-wide; while one runs, VTK messages from other threads
 // are captured too, so call them where no rendering runs concurrently (the GUI thread does).
+#include "core/parameters/material_library.h"
+#include "core/placement.h"
 #include "vtkpasses/mesh/MeshValidation.h"
 
+#include <optional>
 #include <string>
 #include <vector>
 #include <vtkSmartPointer.h>
@@ -69,10 +72,18 @@ LoadedMesh loadMesh(const std::string& path);
 // skipped with the warning "PATH: part NAME: reason"; the others load. Throws aniso::Error
 // "PATH: reason" when the file fails as a whole, or when no part is usable (with one part, its
 // reason as loadMesh gives it).
+// What the file says of a part's finish and place, when it says anything: MATERIAL, when set,
+// holds every material key (the file's values mapped onto the Ashikhmin-Shirley material, the
+// rest their defaults) under the file's name for it; parts of one file that share a material of
+// the file share its name. PLACEMENT goes from the part's own frame (the surface's coordinates)
+// to the file's scene (an instance's placement in an assembly). A material or placement the
+// reader sent malformed is dropped with a warning "PATH: part NAME: reason".
 struct MeshBlock
 {
   std::string name; // unique within the file (suffix " 2", " 3" on repeats)
   LoadedMesh mesh;  // sanitised like loadMesh's result (MeshValidation), with its report
+  std::optional<Material> material;
+  PartMatrix placement = kIdentityPlacement;
 };
 
 struct LoadedBlocks

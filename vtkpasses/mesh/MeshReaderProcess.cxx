@@ -7,6 +7,7 @@
 #include <cerrno>
 #include <chrono>
 #include <csignal>
+#include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <fcntl.h>
@@ -38,9 +39,40 @@ enum class Record : char
 {
   Error = 'E',
   Warning = 'W',
-  Name = 'N', // the name of the part whose Data comes next
+  Name = 'N',      // the name of the part whose Data comes next
+  Material = 'M',  // its material (ReaderBlock::material)
+  Placement = 'P', // its placement: 16 numbers as text
   Data = 'D'
 };
+
+std::string placementText(const PartMatrix& m)
+{
+  std::string text;
+  char number[32];
+  for (double v : m)
+  {
+    std::snprintf(number, sizeof(number), "%.17g ", v);
+    text += number;
+  }
+  return text;
+}
+
+PartMatrix placementFromText(const std::string& text, const std::string& path)
+{
+  PartMatrix m{};
+  const char* p = text.c_str();
+  for (double& v : m)
+  {
+    char* end = nullptr;
+    v = std::strtod(p, &end);
+    if (end == p)
+    {
+      throw errorAbout(path, "the reader sent a malformed placement");
+    }
+    p = end;
+  }
+  return m;
+}
 
 bool writeAll(int fd, const char* data, size_t size)
 {
@@ -270,6 +302,14 @@ int runMeshReaderBlocks(int fd, const std::string& path, const std::string& ext,
                      for (ReaderBlock& block : blocks)
                      {
                        sendRecord(fd, Record::Name, block.name);
+                       if (!block.material.empty())
+                       {
+                         sendRecord(fd, Record::Material, block.material);
+                       }
+                       if (block.placement != kIdentityPlacement)
+                       {
+                         sendRecord(fd, Record::Placement, placementText(block.placement));
+                       }
                        sendRecord(fd, Record::Data, toXml(block.polyData));
                        block.polyData = nullptr; // each part's memory goes once it is sent
                      }
@@ -346,7 +386,7 @@ std::vector<ReaderBlock> runReaderProgram(const std::string& path, const std::st
   }
 
   std::vector<ReaderBlock> results;
-  std::string name;
+  ReaderBlock next;
   size_t position = 0;
   while (position < received.size())
   {
@@ -372,11 +412,18 @@ std::vector<ReaderBlock> runReaderProgram(const std::string& path, const std::st
       warnings.push_back(payload);
       break;
     case Record::Name:
-      name = payload;
+      next.name = payload;
+      break;
+    case Record::Material:
+      next.material = payload;
+      break;
+    case Record::Placement:
+      next.placement = placementFromText(payload, path);
       break;
     case Record::Data:
-      results.push_back({name, fromXml(payload, path)});
-      name.clear();
+      next.polyData = fromXml(payload, path);
+      results.push_back(std::move(next));
+      next = ReaderBlock();
       break;
     }
   }

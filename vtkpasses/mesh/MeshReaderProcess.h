@@ -8,9 +8,12 @@
 // and sends back its messages and the surface as VTK XML (VTK's own output, read back safely)
 // through a pipe; it is killed after kReaderTimeoutSeconds. Asked for the file's parts (a fourth
 // argument, "blocks"), it sends each part's name and surface in turn, the same way.
+#include "core/placement.h"
+
 #include <cstdint>
 #include <functional>
 #include <string>
+#include <utility>
 #include <vector>
 #include <vtkSmartPointer.h>
 
@@ -32,12 +35,24 @@ vtkSmartPointer<vtkPolyData> readInReaderProcess(const std::string& path, const 
                                                  std::vector<std::string>& warnings);
 
 // One part of a file as the reader program hands it back: the name the file gives it (empty
-// when it gives none; not necessarily unique) and its surface, unsanitised (never null, possibly
-// without cells).
+// when it gives none; not necessarily unique), its surface, unsanitised (never null, possibly
+// without cells), in the part's own frame, what the file says of its finish and where the file
+// places it.
 struct ReaderBlock
 {
+  ReaderBlock() = default;
+  ReaderBlock(std::string name_, vtkSmartPointer<vtkPolyData> polyData_)
+    : name(std::move(name_)), polyData(std::move(polyData_))
+  {
+  }
+
   std::string name;
   vtkSmartPointer<vtkPolyData> polyData;
+  // The part's material as a material library document (core/parameters/material_library) of
+  // exactly one material, named as the file names it; empty when the file says nothing of it.
+  std::string material;
+  // From the part's own frame (its surface's coordinates) to the file's scene.
+  PartMatrix placement = kIdentityPlacement;
 };
 
 // The same for the file's parts (VtkReaders.h, readBlocksWithVtk), in file order, at least one.
