@@ -4,10 +4,10 @@
 // is switched to mis, (e) a large mesh is opened in the background as the File menu opens it,
 // (f) the same opened synchronously, for comparison, (g) the orbit of (a) around that mesh and its
 // refinement once still, (h) a scene of 200 parts opened in the background, (i) one part
-// selected, (j) its n_u edited, (k) a library material assigned to it. Prints, per phase, the largest and the
-// 99th-percentile gap, the frames drawn (window renders: a frame drawn in bands counts once per
-// band), the samples per pixel accumulated and the samples per pixel and second. Run (X server
-// needed): xvfb-run -a -s "-screen 0 1920x1080x24" bench_ui_latency [WxH]
+// selected, (j) its n_u edited, (k) a library material assigned to it. Prints, per phase, the
+// largest and the 99th-percentile gap, the frames drawn (window renders: a frame drawn in bands
+// counts once per band), the samples per pixel accumulated and the samples per pixel and second.
+// Run (X server needed): xvfb-run -a -s "-screen 0 1920x1080x24" bench_ui_latency [WxH]
 //   [--frame-budget MS] (0: one frame per model sample count, the behaviour without the
 //   frame-time budget) [--trace MS] (prints every event whose handling on the UI thread took
 //   longer than MS, with its phase, type and receiver: where a long gap comes from)
@@ -37,15 +37,15 @@
 #include <string>
 #include <vector>
 #include <vtkCallbackCommand.h>
+#include <vtkCommand.h>
 #include <vtkCompositeDataSet.h>
 #include <vtkInformation.h>
 #include <vtkMultiBlockDataSet.h>
-#include <vtkSphereSource.h>
-#include <vtkXMLMultiBlockDataWriter.h>
-#include <vtkCommand.h>
 #include <vtkNew.h>
 #include <vtkOpenGLRenderer.h>
 #include <vtkRenderWindow.h>
+#include <vtkSphereSource.h>
+#include <vtkXMLMultiBlockDataWriter.h>
 
 namespace
 {
@@ -119,6 +119,7 @@ double percentile(std::vector<double> v, double q)
 
 int main(int argc, char** argv)
 {
+  bool partsOnly = false; // phases (h) to (k) alone
   QSurfaceFormat::setDefaultFormat(QVTKOpenGLNativeWidget::defaultFormat());
   TracingApplication app(argc, argv);
   int width = 0;
@@ -130,13 +131,19 @@ int main(int argc, char** argv)
     {
       budgetMs = std::atoi(argv[++i]);
     }
+    else if (std::strcmp(argv[i], "--parts-only") == 0)
+    {
+      partsOnly = true;
+    }
     else if (std::strcmp(argv[i], "--trace") == 0 && i + 1 < argc)
     {
       app.traceMs = std::atof(argv[++i]);
     }
     else if (std::sscanf(argv[i], "%dx%d", &width, &height) != 2)
     {
-      std::fprintf(stderr, "usage: bench_ui_latency [WxH] [--frame-budget MS] [--trace MS]\n");
+      std::fprintf(
+          stderr,
+          "usage: bench_ui_latency [WxH] [--frame-budget MS] [--trace MS] [--parts-only]\n");
       return 2;
     }
   }
@@ -297,117 +304,120 @@ int main(int argc, char** argv)
                                                     Qt::LeftButton, Qt::NoButton, Qt::NoModifier));
     pump(20);
   };
-  run("orbit 2 s", orbit);
-  waitConverged(120000);
-
-  // (b) The n_u slider dragged over two decades in 1.5 s (one step every 30 ms).
-  auto* nu = window.findChild<aniso::NumberControl*>("nu");
-  run("n_u drag 1.5 s",
-      [&]
-      {
-        QSlider* slider = nu->slider();
-        const int from = slider->value();
-        slider->setSliderDown(true);
-        for (int i = 0; i < 50; ++i)
-        {
-          slider->setValue(from - 4 * i);
-          pump(30);
-        }
-        slider->setSliderDown(false);
-      });
-
-  // (c) Still: refinement to the target (the LUT bake of the new exponent included).
-  run("refine to target", [&] { waitConverged(120000); });
-
-  // (d) Environment sampling switched on, then refinement with it.
-  run("env-sampling mis",
-      [&]
-      {
-        window.editor()->edit("env-sampling", aniso::textValue("mis"));
-        pump(50);
-        QElapsedTimer t;
-        t.start();
-        while ((view->lightingBusy() || !view->converged()) && t.elapsed() < 120000)
-        {
-          pump(5);
-        }
-      });
-
-  // (e) A large mesh (a 400 x 400 torus grid, 320 000 triangles, written to a temporary OBJ)
-  // opened as the File menu and drops open it (read and prepared on a worker), until its first
-  // frame is drawn; then (f) the same opened synchronously (openMesh: the model's validation
-  // reads it on the UI thread), for comparison.
   QTemporaryDir meshDir;
-  const QString bigMesh = meshDir.filePath("big.obj");
-  const QString bigMeshAgain = meshDir.filePath("big-again.obj");
+  if (!partsOnly)
   {
-    const int n = 400;
-    std::string obj;
-    obj.reserve(std::size_t(n) * n * 60);
-    char line[96];
-    for (int i = 0; i < n; ++i)
+    run("orbit 2 s", orbit);
+    waitConverged(120000);
+
+    // (b) The n_u slider dragged over two decades in 1.5 s (one step every 30 ms).
+    auto* nu = window.findChild<aniso::NumberControl*>("nu");
+    run("n_u drag 1.5 s",
+        [&]
+        {
+          QSlider* slider = nu->slider();
+          const int from = slider->value();
+          slider->setSliderDown(true);
+          for (int i = 0; i < 50; ++i)
+          {
+            slider->setValue(from - 4 * i);
+            pump(30);
+          }
+          slider->setSliderDown(false);
+        });
+
+    // (c) Still: refinement to the target (the LUT bake of the new exponent included).
+    run("refine to target", [&] { waitConverged(120000); });
+
+    // (d) Environment sampling switched on, then refinement with it.
+    run("env-sampling mis",
+        [&]
+        {
+          window.editor()->edit("env-sampling", aniso::textValue("mis"));
+          pump(50);
+          QElapsedTimer t;
+          t.start();
+          while ((view->lightingBusy() || !view->converged()) && t.elapsed() < 120000)
+          {
+            pump(5);
+          }
+        });
+
+    // (e) A large mesh (a 400 x 400 torus grid, 320 000 triangles, written to a temporary OBJ)
+    // opened as the File menu and drops open it (read and prepared on a worker), until its first
+    // frame is drawn; then (f) the same opened synchronously (openMesh: the model's validation
+    // reads it on the UI thread), for comparison.
+    const QString bigMesh = meshDir.filePath("big.obj");
+    const QString bigMeshAgain = meshDir.filePath("big-again.obj");
     {
-      for (int j = 0; j < n; ++j)
+      const int n = 400;
+      std::string obj;
+      obj.reserve(std::size_t(n) * n * 60);
+      char line[96];
+      for (int i = 0; i < n; ++i)
       {
-        const double u = 2.0 * M_PI * i / n;
-        const double v = 2.0 * M_PI * j / n;
-        std::snprintf(line, sizeof line, "v %.6f %.6f %.6f\n",
-                      (1.0 + 0.3 * std::cos(v)) * std::cos(u),
-                      (1.0 + 0.3 * std::cos(v)) * std::sin(u), 0.3 * std::sin(v));
-        obj += line;
+        for (int j = 0; j < n; ++j)
+        {
+          const double u = 2.0 * M_PI * i / n;
+          const double v = 2.0 * M_PI * j / n;
+          std::snprintf(line, sizeof line, "v %.6f %.6f %.6f\n",
+                        (1.0 + 0.3 * std::cos(v)) * std::cos(u),
+                        (1.0 + 0.3 * std::cos(v)) * std::sin(u), 0.3 * std::sin(v));
+          obj += line;
+        }
+      }
+      for (int i = 0; i < n; ++i)
+      {
+        for (int j = 0; j < n; ++j)
+        {
+          const int a = i * n + j + 1;
+          const int b = ((i + 1) % n) * n + j + 1;
+          const int c = ((i + 1) % n) * n + (j + 1) % n + 1;
+          const int d = i * n + (j + 1) % n + 1;
+          std::snprintf(line, sizeof line, "f %d %d %d\nf %d %d %d\n", a, b, c, a, c, d);
+          obj += line;
+        }
+      }
+      for (const QString& path : {bigMesh, bigMeshAgain})
+      {
+        QFile file(path);
+        if (!file.open(QIODevice::WriteOnly) ||
+            file.write(obj.data(), qint64(obj.size())) != qint64(obj.size()))
+        {
+          std::fprintf(stderr, "bench_ui_latency: cannot write %s\n", qPrintable(path));
+          return 1;
+        }
       }
     }
-    for (int i = 0; i < n; ++i)
+    const auto waitMesh = [&](const QString& path)
     {
-      for (int j = 0; j < n; ++j)
+      QElapsedTimer t;
+      t.start();
+      while ((window.meshLoading() || window.model()->text("mesh") != path.toStdString() ||
+              !view->converged()) &&
+             t.elapsed() < 120000)
       {
-        const int a = i * n + j + 1;
-        const int b = ((i + 1) % n) * n + j + 1;
-        const int c = ((i + 1) % n) * n + (j + 1) % n + 1;
-        const int d = i * n + (j + 1) % n + 1;
-        std::snprintf(line, sizeof line, "f %d %d %d\nf %d %d %d\n", a, b, c, a, c, d);
-        obj += line;
+        pump(5);
       }
-    }
-    for (const QString& path : {bigMesh, bigMeshAgain})
-    {
-      QFile file(path);
-      if (!file.open(QIODevice::WriteOnly) ||
-          file.write(obj.data(), qint64(obj.size())) != qint64(obj.size()))
-      {
-        std::fprintf(stderr, "bench_ui_latency: cannot write %s\n", qPrintable(path));
-        return 1;
-      }
-    }
+    };
+    run("open mesh (bg)",
+        [&]
+        {
+          window.openMeshInBackground(bigMesh);
+          waitMesh(bigMesh);
+        });
+    run("open mesh (sync)",
+        [&]
+        {
+          // Posted, so the call runs inside the event loop as a menu action would.
+          QTimer::singleShot(0, &window, [&] { window.openMesh(bigMeshAgain); });
+          waitMesh(bigMeshAgain);
+        });
+    // (g) The orbit of (a) around the large mesh (drawn as its stand-in while it moves), then its
+    // refinement once still.
+    run("orbit large mesh", orbit);
+    run("refine large mesh", [&] { waitConverged(120000); });
   }
-  const auto waitMesh = [&](const QString& path)
-  {
-    QElapsedTimer t;
-    t.start();
-    while ((window.meshLoading() || window.model()->text("mesh") != path.toStdString() ||
-            !view->converged()) &&
-           t.elapsed() < 120000)
-    {
-      pump(5);
-    }
-  };
-  run("open mesh (bg)",
-      [&]
-      {
-        window.openMeshInBackground(bigMesh);
-        waitMesh(bigMesh);
-      });
-  run("open mesh (sync)",
-      [&]
-      {
-        // Posted, so the call runs inside the event loop as a menu action would.
-        QTimer::singleShot(0, &window, [&] { window.openMesh(bigMeshAgain); });
-        waitMesh(bigMeshAgain);
-      });
-  // (g) The orbit of (a) around the large mesh (drawn as its stand-in while it moves), then its
-  // refinement once still.
-  run("orbit large mesh", orbit);
-  run("refine large mesh", [&] { waitConverged(120000); });
 
   // (h) A scene of 200 parts (a VTM of 20 x 10 spheres of 960 triangles, written by VTK's
   // multiblock writer) opened in the background; (i) one part selected (what a click does);
@@ -425,7 +435,8 @@ int main(int argc, char** argv)
       sphere->SetPhiResolution(22);
       sphere->Update();
       blocks->SetBlock(i, sphere->GetOutput());
-      blocks->GetMetaData(i)->Set(vtkCompositeDataSet::NAME(), ("sphere " + std::to_string(i)).c_str());
+      blocks->GetMetaData(i)->Set(vtkCompositeDataSet::NAME(),
+                                  ("sphere " + std::to_string(i)).c_str());
     }
     vtkNew<vtkXMLMultiBlockDataWriter> writer;
     writer->SetFileName(partsFile.toStdString().c_str());

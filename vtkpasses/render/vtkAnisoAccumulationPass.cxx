@@ -11,6 +11,7 @@
 #include <cstdint>
 #include <glm/gtc/type_ptr.hpp>
 #include <glm/mat3x3.hpp>
+#include <limits>
 #include <utility>
 #include <vector>
 #include <vtkActor.h>
@@ -119,6 +120,44 @@ struct BandRows
   vtkOpenGLState* state;
   int rect[4];
 };
+
+// The props of S that may cover a GL row of [Y0, Y1) of a HEIGHT-row frame under CLIP (world
+// to clip space): a prop whose bounding box projects wholly above or below those rows (two rows
+// of margin, for the sub-pixel jitter) is left out of the band. A prop without bounds, or whose
+// box reaches behind the camera, is kept.
+std::vector<vtkProp*> propsInRows(const vtkRenderState* s, const glm::dmat4& clip, int height,
+                                  int y0, int y1)
+{
+  std::vector<vtkProp*> kept;
+  for (int i = 0; i < s->GetPropArrayCount(); ++i)
+  {
+    vtkProp* prop = s->GetPropArray()[i];
+    const double* b = prop->GetBounds();
+    if (!b || !(b[0] <= b[1]) || !(b[2] <= b[3]) || !(b[4] <= b[5]))
+    {
+      kept.push_back(prop);
+      continue;
+    }
+    double low = std::numeric_limits<double>::infinity();
+    double high = -low;
+    bool behind = false;
+    for (int corner = 0; corner < 8 && !behind; ++corner)
+    {
+      const glm::dvec4 p = clip * glm::dvec4(b[corner & 1], b[2 + ((corner >> 1) & 1)],
+                                             b[4 + ((corner >> 2) & 1)], 1.0);
+      behind = !(p.w > 0.0);
+      const double row = (0.5 * p.y / p.w + 0.5) * height;
+      low = std::min(low, row);
+      high = std::max(high, row);
+    }
+    constexpr double kMargin = 2.0;
+    if (behind || (high + kMargin >= y0 && low - kMargin <= y1))
+    {
+      kept.push_back(prop);
+    }
+  }
+  return kept;
+}
 
 void allocateColor(vtkTextureObject* texture, vtkOpenGLRenderWindow* window, int width, int height)
 {
@@ -543,8 +582,16 @@ void vtkAnisoAccumulationPass::RenderFrame(const vtkRenderState* s, vtkOpenGLRen
     ostate->vtkglDepthMask(GL_TRUE);
     ostate->vtkglClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
 
+    // A band draws the props that may reach its rows: of a scene of parts, those above and
+    // below it cost nothing (a prop's vertices are processed whatever the scissor keeps).
+    const bool partial = y0 > 0 || y1 < height;
+    std::vector<vtkProp*> props(s->GetPropArray(), s->GetPropArray() + s->GetPropArrayCount());
+    if (partial)
+    {
+      props = propsInRows(s, aniso::worldToClip(renderer), height, y0, y1);
+    }
     vtkRenderState delegateState(renderer);
-    delegateState.SetPropArrayAndCount(s->GetPropArray(), s->GetPropArrayCount());
+    delegateState.SetPropArrayAndCount(props.data(), static_cast<int>(props.size()));
     delegateState.SetFrameBuffer(this->FrameBuffer);
     ostate->vtkglEnable(GL_DEPTH_TEST);
     // Part of a frame: the delegate's camera pass sets the scissor to the whole frame, so the
@@ -554,7 +601,7 @@ void vtkAnisoAccumulationPass::RenderFrame(const vtkRenderState* s, vtkOpenGLRen
     std::vector<std::pair<vtkMapper*, unsigned long>> observed;
     vtkNew<vtkCallbackCommand> bandScissor;
     BandRows band{ostate, {0, y0, width, y1 - y0}};
-    if (y0 > 0 || y1 < height)
+    if (partial)
     {
       bandScissor->SetClientData(&band);
       bandScissor->SetCallback(
@@ -563,9 +610,9 @@ void vtkAnisoAccumulationPass::RenderFrame(const vtkRenderState* s, vtkOpenGLRen
             const auto* b = static_cast<const BandRows*>(data);
             b->state->vtkglScissor(b->rect[0], b->rect[1], b->rect[2], b->rect[3]);
           });
-      for (int i = 0; i < s->GetPropArrayCount(); ++i)
+      for (vtkProp* prop : props)
       {
-        auto* actor = vtkActor::SafeDownCast(s->GetPropArray()[i]);
+        auto* actor = vtkActor::SafeDownCast(prop);
         if (vtkMapper* mapper = actor ? actor->GetMapper() : nullptr)
         {
           observed.emplace_back(mapper,
@@ -578,7 +625,11 @@ void vtkAnisoAccumulationPass::RenderFrame(const vtkRenderState* s, vtkOpenGLRen
     {
       mapper->RemoveObserver(tag);
     }
-    this->LastRenderedProps = this->DelegatePass->GetNumberOfRenderedProps();
+    this->BandRenderedProps = this->DelegatePass->GetNumberOfRenderedProps();
+    // What the frame draws, whichever band this was.
+    this->LastRenderedProps =
+        partial ? std::max(this->LastRenderedProps, this->DelegatePass->GetNumberOfRenderedProps())
+                : this->DelegatePass->GetNumberOfRenderedProps();
 
     ostate->vtkglViewport(0, 0, width, height);
     ostate->vtkglScissor(0, y0, width, y1 - y0);

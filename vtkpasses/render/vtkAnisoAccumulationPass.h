@@ -93,6 +93,9 @@ public:
   int GetNextBand() const { return this->Band; }
   // Bands of the frame in progress (or of the last one drawn).
   int GetCurrentFrameBands() const { return this->Bands; }
+  // The props the last band drew: a band of several leaves out the props whose bounding boxes
+  // project wholly above or below its rows (they would process their vertices for nothing).
+  int GetBandRenderedProps() const { return this->BandRenderedProps; }
   // Their rows: band b spans GL rows [edges[b + 1], edges[b]) (GL counts rows from the bottom).
   const std::vector<int>& GetBandEdges() const { return this->BandEdges; }
   // The cost of each GL row (any unit) by which the next frame's bands are cut, as the bands'
@@ -162,6 +165,7 @@ private:
   std::vector<double> BandSeconds;  // of the frame in progress
   Signature LastSignature;
   int LastRenderedProps = 0;
+  int BandRenderedProps = 0;
 
   vtkWeakPointer<vtkOpenGLRenderWindow> LastWindow; // where the targets live
   int Width = 0;

@@ -369,6 +369,72 @@ TEST(RenderAccumulation, FramesInBandsAccumulateTheSameMean)
   EXPECT_LE(largestDifference(measured.pass->ReadAccumulation(), reference), 1e-6);
 }
 
+// A band leaves out the parts wholly above or below its rows, and the mean is that of whole
+// frames: four spheres stacked one above the other, each its own actor and material.
+TEST(RenderAccumulation, BandsDrawOnlyThePartsInTheirRows)
+{
+  ANISO_REQUIRE_DISPLAY();
+  const auto stacked = [](Scene& scene, std::vector<std::unique_ptr<AnisoMaterial>>& materials,
+                          std::vector<vtkSmartPointer<vtkActor>>& actors)
+  {
+    scene.renderer->RemoveActor(scene.actor);
+    for (int k = 0; k < 4; ++k)
+    {
+      vtkSmartPointer<vtkPolyData> sphere = makeSphere(24, 12);
+      vtkPoints* points = sphere->GetPoints();
+      for (vtkIdType i = 0; i < points->GetNumberOfPoints(); ++i)
+      {
+        double p[3];
+        points->GetPoint(i, p);
+        points->SetPoint(i, p[0], p[1], p[2] + 2.5 * (k - 1.5));
+      }
+      vtkNew<vtkOpenGLPolyDataMapper> mapper;
+      mapper->SetInputData(sphere);
+      auto actor = vtkSmartPointer<vtkActor>::New();
+      actor->SetMapper(mapper);
+      scene.renderer->AddActor(actor);
+      MaterialSettings settings;
+      settings.samples = 2;
+      settings.f0 = glm::dvec3(0.3 + 0.2 * k, 0.5, 0.9 - 0.2 * k);
+      materials.push_back(std::make_unique<AnisoMaterial>(scene.lighting, settings));
+      materials.back()->apply(actor, scene.renderer);
+      actors.push_back(actor);
+    }
+    scene.window->SetSize(24, 64);
+    scene.renderer->ResetCamera();
+  };
+  Scene whole;
+  std::vector<std::unique_ptr<AnisoMaterial>> wholeMaterials;
+  std::vector<vtkSmartPointer<vtkActor>> wholeActors;
+  stacked(whole, wholeMaterials, wholeActors);
+  for (int frame = 1; frame <= 3; ++frame)
+  {
+    ASSERT_EQ(whole.render(), frame);
+  }
+  EXPECT_EQ(whole.pass->GetBandRenderedProps(), 4);
+
+  Scene banded;
+  std::vector<std::unique_ptr<AnisoMaterial>> bandedMaterials;
+  std::vector<vtkSmartPointer<vtkActor>> bandedActors;
+  stacked(banded, bandedMaterials, bandedActors);
+  banded.pass->SetFrameBands(4);
+  int fewest = 4;
+  int most = 0;
+  for (int render = 0; render < 3 * 4; ++render)
+  {
+    banded.render();
+    fewest = std::min(fewest, banded.pass->GetBandRenderedProps());
+    most = std::max(most, banded.pass->GetBandRenderedProps());
+  }
+  ASSERT_TRUE(banded.pass->IsConverged());
+  // No band of about a quarter of the rows reaches all four spheres (bands above or below
+  // every sphere draw none).
+  EXPECT_LT(most, 4);
+  EXPECT_LT(fewest, most);
+  EXPECT_LE(largestDifference(banded.pass->ReadAccumulation(), whole.pass->ReadAccumulation()),
+            1e-6);
+}
+
 TEST(RenderAccumulation, BandsTakeEqualSharesOfTheRowsCost)
 {
   ANISO_REQUIRE_DISPLAY();
