@@ -357,7 +357,10 @@ void vtkAnisoAccumulationPass::Render(const vtkRenderState* s)
       std::swap(this->AccumulationColor, this->PreviousColor);
     }
   }
-  if (resized || !(this->ComputeSignature(s, width, height) == this->LastSignature))
+  // Taken whether or not the size changed: the first taking reads every prop's state (and may
+  // make what a prop makes on demand), which must not count as a change at the next band.
+  const Signature signature = this->ComputeSignature(s, width, height);
+  if (resized || !(signature == this->LastSignature))
   {
     this->Reset();
   }

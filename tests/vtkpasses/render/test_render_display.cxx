@@ -420,11 +420,19 @@ TEST(RenderAccumulation, BandsDrawOnlyThePartsInTheirRows)
   banded.pass->SetFrameBands(4);
   int fewest = 4;
   int most = 0;
-  for (int render = 0; render < 3 * 4; ++render)
+  // The first frame's bands are cut by the rows' share of the geometry; later ones by their
+  // measured costs (which may give one band every sphere), so only the first frame's are
+  // checked for what they leave out.
+  for (int render = 0; render < 4; ++render)
   {
     banded.render();
     fewest = std::min(fewest, banded.pass->GetBandRenderedProps());
     most = std::max(most, banded.pass->GetBandRenderedProps());
+  }
+  EXPECT_EQ(banded.pass->GetAccumulatedFrames(), 1);
+  for (int render = 0; render < 40 && !banded.pass->IsConverged(); ++render)
+  {
+    banded.render();
   }
   ASSERT_TRUE(banded.pass->IsConverged());
   // No band of about a quarter of the rows reaches all four spheres (bands above or below
