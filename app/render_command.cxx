@@ -13,6 +13,7 @@
 #include "vtkpasses/mesh/BrushingModel.h"
 #include "vtkpasses/mesh/BuiltinMeshes.h"
 #include "vtkpasses/mesh/MeshLoader.h"
+#include "vtkpasses/mesh/PartPlacement.h"
 #include "vtkpasses/mesh/SurfacePreparation.h"
 #include "vtkpasses/render/OffscreenRenderer.h"
 
@@ -281,6 +282,11 @@ vtkSmartPointer<vtkPolyData> preparedSurface(const ScenePart& part, const Surfac
   {
     out << prefix << note << "\n";
   }
+  // Prepared in the part's own frame (a tangent model's axes are the part's), then placed.
+  if (part.placement != kIdentityPlacement)
+  {
+    return placedSurface(prepared.polyData, part.placement);
+  }
   return prepared.polyData;
 }
 
@@ -431,12 +437,14 @@ int runRender(const std::vector<std::string>& args, std::ostream& out, std::ostr
   settings.jitter = a.text("--jitter") == "on";
   applyModelOptions(a, settings);
 
-  // The material library and what --part assigns from it, before any mesh is read.
-  const MaterialLibrary library = partLibrary(a);
-  checkPartOptions(a, library);
+  // The material library (the built-in metals, --materials FILE's, then the files' own) and
+  // what --part assigns from it; the library files fail before any mesh is read.
+  MaterialLibrary library = partLibrary(a);
 
   // Then the inputs, each failing with its file's name.
   std::vector<ScenePart> scene = scenePartsOf(a, err);
+  adoptFileMaterials(library, scene);
+  checkPartOptions(a, library);
   assignParts(a, library, scene);
   if (listing)
   {

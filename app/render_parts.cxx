@@ -87,13 +87,16 @@ FileMeshes meshesOfFile(const std::string& path)
   {
     const fs::path p(path);
     std::string stem = p.stem().string();
-    file.meshes.push_back(
-        {stem.empty() ? p.filename().string() : stem, std::move(loaded.blocks[0].mesh)});
-    return file;
+    loaded.blocks[0].name = stem.empty() ? p.filename().string() : stem;
   }
   for (MeshBlock& block : loaded.blocks)
   {
-    file.meshes.push_back({std::move(block.name), std::move(block.mesh)});
+    NamedMesh named;
+    named.name = std::move(block.name);
+    named.mesh = std::move(block.mesh);
+    named.material = std::move(block.material);
+    named.placement = block.placement;
+    file.meshes.push_back(std::move(named));
   }
   return file;
 }
@@ -133,6 +136,8 @@ std::vector<ScenePart> loadParts(const std::vector<std::string>& paths, std::ost
         part.name = std::move(named.name);
         part.source = path;
         part.mesh = std::move(named.mesh);
+        part.fileMaterial = std::move(named.material);
+        part.placement = named.placement;
         parts.push_back(std::move(part));
       }
       for (std::string& warning : file.warnings)
@@ -177,6 +182,27 @@ std::vector<ScenePart> loadParts(const std::vector<std::string>& paths, std::ost
     parts[i].name = names[i];
   }
   return parts;
+}
+
+void adoptFileMaterials(MaterialLibrary& library, std::vector<ScenePart>& parts)
+{
+  std::vector<std::string> names(parts.size());
+  for (std::size_t i = 0; i < parts.size(); ++i)
+  {
+    if (parts[i].fileMaterial)
+    {
+      names[i] = library.adopt(std::move(*parts[i].fileMaterial));
+      parts[i].fileMaterial.reset();
+    }
+  }
+  // Assigned once every material is in: the library's storage moves as it grows.
+  for (std::size_t i = 0; i < parts.size(); ++i)
+  {
+    if (!names[i].empty())
+    {
+      parts[i].material = &library.at(names[i]);
+    }
+  }
 }
 
 MaterialLibrary partLibrary(const Arguments& a)

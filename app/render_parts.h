@@ -7,6 +7,7 @@
 // parts.
 #include "app/cli.h"
 #include "core/parameters/material_library.h"
+#include "core/placement.h"
 #include "vtkpasses/mesh/MeshLoader.h"
 #include "vtkpasses/mesh/SurfacePreparation.h"
 #include "vtkpasses/render/MaterialSettings.h"
@@ -21,11 +22,14 @@ namespace aniso::cli
 // Adds --materials, --part, --hide and --list-parts to COMMAND.
 void addPartOptions(Command& command);
 
-// A mesh of a file, by the name its part takes.
+// A mesh of a file, by the name its part takes, with what the file says of its finish and place
+// (MeshBlock::material and ::placement).
 struct NamedMesh
 {
   std::string name;
   LoadedMesh mesh;
+  std::optional<Material> material;
+  PartMatrix placement = kIdentityPlacement;
 };
 
 // The meshes of the file at PATH: its blocks (loadMeshBlocks), each named by its block, or the
@@ -50,6 +54,8 @@ struct ScenePart
   LoadedMesh mesh;
   const Material* material = nullptr; // of the library; null: the command line's material
   bool visible = true;
+  std::optional<Material> fileMaterial; // what the file gives, until adoptFileMaterials
+  PartMatrix placement = kIdentityPlacement; // from the part's own frame to the scene
 };
 
 // The mesh files PATHS loaded into parts, in order, their names made unique across the files
@@ -58,6 +64,12 @@ struct ScenePart
 // loads, the error of the only file, or aniso::Error "PATH1, PATH2: no mesh could be loaded
 // (PATH1: reason; ...)".
 std::vector<ScenePart> loadParts(const std::vector<std::string>& paths, std::ostream& warnings);
+
+// The materials the files give their parts, added to LIBRARY (MaterialLibrary::adopt: a file's
+// material keeps its name unless the library holds another material of that name, a built-in,
+// --materials FILE's or another file's, then it becomes "NAME 2", ...) and assigned to those
+// parts. Run before assignParts, so --part wins.
+void adoptFileMaterials(MaterialLibrary& library, std::vector<ScenePart>& parts);
 
 // The library of the command line: the built-in metals and those of --materials FILE (which win
 // over a built-in of the same name). Throws aniso::Error "FILE: reason" for a bad file.

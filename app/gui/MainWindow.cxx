@@ -349,24 +349,55 @@ bool MainWindow::attempt(const std::function<void()>& action)
   }
 }
 
+namespace
+{
+// The block a part of block B of LOADED draws: empty (the file as loadMesh reads it) for a file
+// of one block that sits where its coordinates are, else the block's name.
+std::string partBlock(const LoadedBlocks& loaded, std::size_t b)
+{
+  const MeshBlock& block = loaded.blocks[b];
+  return loaded.blocks.size() > 1 || block.placement != kIdentityPlacement ? block.name
+                                                                            : std::string();
+}
+
+// The tangent model a part of BLOCK starts with: its file material's, else TANGENTS.
+std::string blockTangents(const MeshBlock& block, const std::string& tangents)
+{
+  return block.material ? block.material->value("tangents").text : tangents;
+}
+} // namespace
+
 std::vector<ScenePart> MainWindow::partsOfFile(const QString& path, const std::string& material,
+                                               MaterialLibrary& library,
                                                std::vector<ScenePart>& taken,
                                                QStringList& warnings)
 {
   const std::string mesh = path.toStdString();
-  std::vector<std::string> skipped;
-  const std::vector<std::string> blocks = assets_.blockNames(mesh, &skipped);
-  for (const std::string& w : skipped)
+  const std::shared_ptr<const LoadedBlocks> loaded = assets_.blocks(mesh);
+  for (const std::string& w : loaded->warnings)
   {
     warnings << QString::fromStdString(w);
   }
-  std::vector<ScenePart> parts;
-  for (const std::string& block : blocks)
+  const std::vector<MeshBlock>& blocks = loaded->blocks;
+  // The file's materials first, all of them, so a failure leaves LIBRARY as it was.
+  MaterialLibrary adopted = library;
+  std::vector<std::string> materials(blocks.size(), material);
+  for (std::size_t b = 0; b < blocks.size(); ++b)
   {
-    ScenePart part = partOfMesh(mesh, material);
-    part.block = blocks.size() > 1 ? block : std::string();
+    if (blocks[b].material)
+    {
+      materials[b] = adopted.adopt(*blocks[b].material);
+    }
+  }
+  std::vector<ScenePart> parts;
+  for (std::size_t b = 0; b < blocks.size(); ++b)
+  {
+    const MeshBlock& block = blocks[b];
+    ScenePart part = partOfMesh(mesh, materials[b]);
+    part.block = partBlock(*loaded, b);
     part.group = blocks.size() > 1 ? QFileInfo(path).fileName().toStdString() : std::string();
-    std::string name = blocks.size() > 1 ? block : part.name;
+    part.placement = block.placement;
+    std::string name = blocks.size() > 1 ? block.name : part.name;
     // Unique in the scene: "shaft", "shaft 2", ...
     const auto used = [&](const std::string& n)
     {
@@ -382,6 +413,7 @@ std::vector<ScenePart> MainWindow::partsOfFile(const QString& path, const std::s
     taken.push_back(part);
     parts.push_back(part);
   }
+  library = std::move(adopted);
   return parts;
 }
 
@@ -399,19 +431,24 @@ bool MainWindow::openMesh(const QString& path)
         }
         QStringList warnings;
         std::vector<ScenePart> taken;
-        // The new part keeps the material edits go to (as setting the mesh key does).
+        // The new part keeps the material edits go to (as setting the mesh key does), unless
+        // the file gives its parts materials of their own.
         const std::string material = model_.editedMaterials().front();
-        const std::vector<ScenePart> parts = partsOfFile(path, material, taken, warnings);
+        MaterialLibrary library = model_.materials();
+        const std::vector<ScenePart> parts = partsOfFile(path, material, library, taken, warnings);
+        // What setting the mesh key alone makes of the scene: one part of the edited material.
+        const bool plain = parts.size() == 1 && parts[0].material == material &&
+                           parts[0].placement == kIdentityPlacement;
         const bool same = mesh == model_.value("mesh") &&
-                          (parts.size() > 1 ? parts == model_.parts() : model_.parts().size() == 1);
+                          (plain ? model_.parts().size() == 1 : parts == model_.parts());
         if (!same)
         {
           // One step: the mesh key (the scene one part of it), then the file's blocks as parts.
           editor_.undoStack()->beginMacro(tr("Open %1").arg(QFileInfo(path).fileName()));
           editor_.edit("mesh", mesh);
-          if (parts.size() > 1)
+          if (!plain)
           {
-            editor_.editParts(parts, model_.materials(), tr("Parts of %1").arg(path));
+            editor_.editParts(parts, library, tr("Parts of %1").arg(path));
           }
           editor_.undoStack()->endMacro();
         }
@@ -440,7 +477,7 @@ bool MainWindow::addMeshes(const QStringList& paths)
     try
     {
       std::vector<ScenePart> taken = parts;
-      const std::vector<ScenePart> more = partsOfFile(path, material, taken, warnings);
+      const std::vector<ScenePart> more = partsOfFile(path, material, library, taken, warnings);
       parts.insert(parts.end(), more.begin(), more.end());
       added = true;
     }
@@ -481,10 +518,10 @@ void prefetchMeshes(SceneAssets& staged, const std::vector<std::string>& files,
   {
     try
     {
-      const std::vector<std::string> blocks = staged.blockNames(file, nullptr);
-      for (const std::string& block : blocks)
+      const std::shared_ptr<const LoadedBlocks> loaded = staged.blocks(file);
+      for (std::size_t b = 0; b < loaded->blocks.size(); ++b)
       {
-        staged.surface(file, blocks.size() > 1 ? block : std::string(), tangents);
+        staged.surface(file, partBlock(*loaded, b), blockTangents(loaded->blocks[b], tangents));
       }
     }
     catch (const Error&)
@@ -565,14 +602,11 @@ void MainWindow::openMeshInBackground(const QString& path)
       [mesh, tangents](SceneAssets& staged)
       {
         staged.surface(mesh, tangents);
-        // Its blocks too, when it has several (they become its parts).
-        const std::vector<std::string> blocks = staged.blockNames(mesh, nullptr);
-        for (const std::string& block : blocks)
+        // Its blocks too, as they become its parts.
+        const std::shared_ptr<const LoadedBlocks> loaded = staged.blocks(mesh);
+        for (std::size_t b = 0; b < loaded->blocks.size(); ++b)
         {
-          if (blocks.size() > 1)
-          {
-            staged.surface(mesh, block, tangents);
-          }
+          staged.surface(mesh, partBlock(*loaded, b), blockTangents(loaded->blocks[b], tangents));
         }
       },
       // In the assets now: opening it (the model's validation, the view) reads nothing again,

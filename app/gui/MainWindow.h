@@ -148,9 +148,11 @@ private:
   void setInteractiveResolution(bool interacting);
   void chooseAndExportScreenshot();
   // The parts of the blocks of PATH (loaded into assets_ already), named uniquely beside TAKEN,
-  // with MATERIAL; the blocks skipped go to WARNINGS.
+  // placed where the file puts them, with the material the file gives them (adopted into
+  // LIBRARY: MaterialLibrary::adopt), else MATERIAL; the blocks skipped go to WARNINGS.
   std::vector<ScenePart> partsOfFile(const QString& path, const std::string& material,
-                                     std::vector<ScenePart>& taken, QStringList& warnings);
+                                     MaterialLibrary& library, std::vector<ScenePart>& taken,
+                                     QStringList& warnings);
   // PATH as the normal map (and bump quaternion when bump was none).
   bool openNormalMap(const QString& path);
   // An image dropped or reopened: read on a worker, then an environment (an .exr twice as wide

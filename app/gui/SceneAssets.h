@@ -102,6 +102,8 @@ public:
   // The blocks of a mesh file (a built-in mesh: one, named by it), loaded once and kept; what
   // was skipped in WARNINGS. Throws aniso::Error "PATH: reason" for a file that fails as a whole.
   std::vector<std::string> blockNames(const std::string& mesh, std::vector<std::string>* warnings);
+  // The blocks themselves, with the materials and placements the file gives them.
+  std::shared_ptr<const LoadedBlocks> blocks(const std::string& mesh);
   // Its stand-in while the view moves (LevelOfDetail.h), null when it is drawn as it is. Made
   // with the surface, so a surface prepared on a worker brings it along.
   vtkSmartPointer<vtkPolyData> interactiveSurface(const std::string& mesh,
@@ -141,7 +143,6 @@ private:
   };
   std::shared_ptr<const Surface> surfaceEntry(const std::string& mesh, const std::string& block,
                                               const std::string& tangents);
-  std::shared_ptr<const LoadedBlocks> blocks(const std::string& mesh);
   // Maps by key as TEXT gives them.
   void addMaps(const std::function<const std::string&(const char*)>& text,
                MaterialSettings& settings);

@@ -363,6 +363,26 @@ bool MaterialLibrary::operator==(const MaterialLibrary& o) const
   return true;
 }
 
+std::string MaterialLibrary::adopt(Material material)
+{
+  const std::string stem = material.name.empty() ? std::string("material") : material.name;
+  for (int i = 1;; ++i)
+  {
+    const std::string name = i == 1 ? stem : stem + " " + std::to_string(i);
+    const Material* held = find(name);
+    if (!held)
+    {
+      material.name = name;
+      put(material);
+      return name;
+    }
+    if (held->values == material.values)
+    {
+      return name;
+    }
+  }
+}
+
 std::string MaterialLibrary::uniqueName(std::string_view base) const
 {
   const std::string stem = base.empty() ? std::string("material") : std::string(base);

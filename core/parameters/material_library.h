@@ -85,6 +85,12 @@ public:
   // BASE when no material has that name, else "BASE 2", "BASE 3", ...
   std::string uniqueName(std::string_view base) const;
 
+  // A material a file gives (MATERIAL, named as the file names it) into the library: the name of
+  // the library's material of that name, or of "NAME 2", "NAME 3", ..., that has the same values
+  // (the file opened again, or a second part of the same material), else MATERIAL added under
+  // the first of those names that is free. Throws aniso::Error as put does.
+  std::string adopt(Material material);
+
   // The same materials, in whatever order (a session's JSON object keeps them by name).
   bool operator==(const MaterialLibrary& o) const;
   bool operator!=(const MaterialLibrary& o) const { return !(*this == o); }

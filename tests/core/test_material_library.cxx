@@ -186,3 +186,35 @@ TEST(MaterialLibrary, PartPatterns)
   EXPECT_FALSE(aniso::matchesPartPattern("a*b*c", "axxbyy"));
 }
 } // namespace
+
+// A file's material comes into the library under its own name, is found again when the same
+// values come back (a second part, the file opened again), and steps aside for another
+// material of that name under "NAME 2".
+TEST(MaterialLibrary, AdoptKeepsTheFilesNameAndReusesEqualMaterials)
+{
+  MaterialLibrary library = aniso::builtinMaterials();
+  const std::size_t builtins = library.materials().size();
+
+  Material paint = aniso::defaultMaterial("red paint");
+  paint.values["albedo"] = aniso::colorValue(0.8, 0.05, 0.05);
+  paint.values["f0"] = aniso::colorValue(0.04, 0.04, 0.04);
+  EXPECT_EQ(library.adopt(paint), "red paint");
+  EXPECT_EQ(library.materials().size(), builtins + 1);
+  EXPECT_EQ(library.adopt(paint), "red paint");
+  EXPECT_EQ(library.materials().size(), builtins + 1);
+
+  // Another red paint in another file: kept apart, the first untouched.
+  Material other = paint;
+  other.values["albedo"] = aniso::colorValue(0.6, 0.0, 0.0);
+  EXPECT_EQ(library.adopt(other), "red paint 2");
+  EXPECT_EQ(library.adopt(other), "red paint 2");
+  EXPECT_EQ(library.at("red paint").value("albedo"), paint.value("albedo"));
+  EXPECT_EQ(library.at("red paint 2").value("albedo"), other.value("albedo"));
+
+  // A file material named like a built-in one does not replace it.
+  Material steel = aniso::defaultMaterial("brushed steel");
+  steel.values["nu"] = aniso::numberValue(3.0);
+  EXPECT_EQ(library.adopt(steel), "brushed steel 2");
+  EXPECT_EQ(library.at("brushed steel"), *aniso::builtinMaterials().find("brushed steel"));
+  EXPECT_EQ(library.adopt(aniso::defaultMaterial("")), "material");
+}
