@@ -89,17 +89,4 @@ double sliderValue(const ParameterSpec& spec, int position)
   return std::clamp(v, spec.minimum, spec.maximum);
 }
 
-double roughnessFromExponent(double n)
-{
-  return std::sqrt(2.0 / (std::max(n, 0.0) + 2.0));
-}
-
-double exponentFromRoughness(double alpha)
-{
-  if (!(alpha > 0.0))
-  {
-    return kMaxExponent;
-  }
-  return std::clamp(2.0 / (alpha * alpha) - 2.0, 0.0, kMaxExponent);
-}
 } // namespace aniso

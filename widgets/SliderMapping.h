@@ -11,10 +11,9 @@
 // a drag lands on 20000 rather than 19952.6; the spin boxes beside the sliders take any exact
 // value.
 //
-// Roughness view: alpha = sqrt(2 / (n + 2)), the Beckmann roughness whose slope distribution
-// matches a Blinn-Phong lobe of exponent n (Walter et al. 2007, "Microfacet models for
-// refraction", eq. 32, used per axis for the anisotropic lobe); inverse n = 2 / alpha^2 - 2.
-// n in [0, 1e6] gives alpha in [0.0014142, 1].
+// Roughness view: alpha = sqrt(2 / (n + 2)), roughnessFromExponent and exponentFromRoughness
+// (core/brdf/ashikhmin_shirley.h, the one place of that correspondence).
+#include "core/brdf/ashikhmin_shirley.h"
 #include "core/parameters/parameters.h"
 
 namespace aniso
@@ -26,8 +25,4 @@ double sliderValue(const ParameterSpec& spec, int position);
 
 // value rounded to `digits` significant digits (0 stays 0).
 double roundToSignificant(double value, int digits);
-
-double roughnessFromExponent(double n);
-// Clamped to the exponent range [0, kMaxExponent].
-double exponentFromRoughness(double alpha);
 } // namespace aniso

@@ -72,6 +72,20 @@ void validateLobe(const AsLobe& lobe)
   checkExponent("n_v", lobe.nv);
 }
 
+double roughnessFromExponent(double n)
+{
+  return std::sqrt(2.0 / (std::max(n, 0.0) + 2.0));
+}
+
+double exponentFromRoughness(double alpha)
+{
+  if (!(alpha > 0.0))
+  {
+    return kMaxExponent;
+  }
+  return std::clamp(2.0 / (alpha * alpha) - 2.0, 0.0, kMaxExponent);
+}
+
 double asExponent(const AsLobe& lobe, const glm::dvec3& h)
 {
   return exponentOfDirection(lobe, h.x, h.y);

@@ -20,6 +20,15 @@ constexpr double kMaxExponent = 1e6;
 // [0, kMaxExponent]. The evaluation functions below assume a valid lobe and do not check.
 void validateLobe(const AsLobe& lobe);
 
+// The Beckmann roughness alpha whose slope distribution matches a Blinn-Phong lobe of exponent n
+// (Walter et al. 2007, "Microfacet models for refraction", eq. 32, used per axis for the
+// anisotropic lobe): alpha = sqrt(2 / (n + 2)), n = 2 / alpha^2 - 2. n in [0, kMaxExponent]
+// gives alpha in [0.0014142, 1]. The one place of this correspondence: the Material dock's
+// roughness view, source 2's materials (sv_material) and glTF's roughness (gltf_material) use it.
+double roughnessFromExponent(double n);
+// Clamped to the exponent range [0, kMaxExponent]; alpha <= 0 (or NaN) gives kMaxExponent.
+double exponentFromRoughness(double alpha);
+
 // Exponent (n_u (t.h)^2 + n_v (b.h)^2) / (1 - (n.h)^2), written with the tangent-plane
 // components so that h = n (0/0) is well defined (the mean of n_u and n_v there).
 double asExponent(const AsLobe& lobe, const glm::dvec3& h);

@@ -252,22 +252,6 @@ bool writeLutFileSafely(const std::string& directory, const Key& key, const AsLo
   }
 }
 
-std::string defaultDirectory()
-{
-  // XDG: a relative XDG_CACHE_HOME is invalid and must be ignored.
-  const char* xdg = std::getenv("XDG_CACHE_HOME");
-  if (xdg && xdg[0] == '/')
-  {
-    return (fs::path(xdg) / "aniso").string();
-  }
-  const char* home = std::getenv("HOME");
-  if (home && home[0] == '/')
-  {
-    return (fs::path(home) / ".cache" / "aniso").string();
-  }
-  return {};
-}
-
 bool startsWith(const std::string& text, const std::string& prefix)
 {
   return text.compare(0, prefix.size(), prefix) == 0;
@@ -406,6 +390,22 @@ enum class Source
   Bake
 };
 } // namespace
+
+std::string defaultCacheDirectory()
+{
+  // XDG: a relative XDG_CACHE_HOME is invalid and must be ignored.
+  const char* xdg = std::getenv("XDG_CACHE_HOME");
+  if (xdg && xdg[0] == '/')
+  {
+    return (fs::path(xdg) / "aniso").string();
+  }
+  const char* home = std::getenv("HOME");
+  if (home && home[0] == '/')
+  {
+    return (fs::path(home) / ".cache" / "aniso").string();
+  }
+  return {};
+}
 
 struct LutCache::Impl
 {
@@ -595,7 +595,7 @@ LutCache::LutCache(std::string directory) : impl_(std::make_unique<Impl>())
   }
   else if (directory.empty())
   {
-    directory = defaultDirectory();
+    directory = defaultCacheDirectory();
   }
   impl_->directory = std::move(directory);
 }

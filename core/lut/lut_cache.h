@@ -15,6 +15,11 @@ namespace aniso
 // layout) bumps it, so files written by older builds are never mistaken for current ones.
 constexpr int kLutFormatVersion = 1;
 
+// The project's cache directory: $XDG_CACHE_HOME/aniso if XDG_CACHE_HOME is an absolute path,
+// else $HOME/.cache/aniso, else empty (no cache on disk). The LUT cache keeps its files there;
+// so do the glTF reader's images (under "gltf/"). Not created here.
+std::string defaultCacheDirectory();
+
 struct LutCacheStats
 {
   uint64_t memoryHits = 0;        // served from memory (or from a bake another caller started)

@@ -114,8 +114,8 @@ WardMaterial toWard(const SvTexel& texel, WardForm form)
 AsMaterial toAshikhminShirley(const SvTexel& texel)
 {
   AsMaterial m;
-  m.lobe.nu = std::clamp(2.0 / (texel.alphaX * texel.alphaX) - 2.0, 0.0, kMaxExponent);
-  m.lobe.nv = std::clamp(2.0 / (texel.alphaY * texel.alphaY) - 2.0, 0.0, kMaxExponent);
+  m.lobe.nu = exponentFromRoughness(texel.alphaX);
+  m.lobe.nv = exponentFromRoughness(texel.alphaY);
   m.f0 = glm::dvec3(texel.specular);
   m.diffuse = texel.diffuse;
   return m;

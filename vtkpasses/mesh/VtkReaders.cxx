@@ -2,6 +2,7 @@
 
 #include "core/error.h"
 #include "vtkpasses/mesh/GeometryAccess.h"
+#include "vtkpasses/mesh/GltfReader.h"
 
 #include <algorithm>
 #include <array>
@@ -27,13 +28,10 @@
 #include <vtkDataSet.h>
 #include <vtkDataSetReader.h>
 #include <vtkDataSetSurfaceFilter.h>
-#include <vtkGLTFDocumentLoader.h>
-#include <vtkGLTFReader.h>
 #include <vtkInformation.h>
 #include <vtkMultiBlockDataSet.h>
 #include <vtkNew.h>
 #include <vtkOBJReader.h>
-#include <vtkObjectFactory.h>
 #include <vtkPartitionedDataSet.h>
 #include <vtkPointData.h>
 #include <vtkPoints.h>
@@ -45,100 +43,6 @@ namespace aniso
 {
 namespace
 {
-// Y-up glTF into the Z-up world: (x, y, z) -> (x, -z, y), a rotation, so it keeps handedness
-// and applies unchanged to normals and tangents (a 4th tangent component, the handedness sign,
-// is left alone).
-void rotateYUpToZUp(vtkPolyData* polyData)
-{
-  auto rotate = [](vtkDataArray* array)
-  {
-    if (!array || array->GetNumberOfComponents() < 3)
-    {
-      return;
-    }
-    for (vtkIdType i = 0; i < array->GetNumberOfTuples(); ++i)
-    {
-      const double y = array->GetComponent(i, 1);
-      const double z = array->GetComponent(i, 2);
-      array->SetComponent(i, 1, -z);
-      array->SetComponent(i, 2, y);
-    }
-    array->Modified();
-  };
-  if (polyData->GetPoints())
-  {
-    rotate(polyData->GetPoints()->GetData());
-  }
-  vtkPointData* pd = polyData->GetPointData();
-  std::vector<vtkDataArray*> vectors = {pd->GetNormals(), pd->GetTangents()};
-  for (const char* name : {"NORMAL", "TANGENT"})
-  {
-    vectors.push_back(pd->GetArray(name));
-  }
-  std::sort(vectors.begin(), vectors.end());
-  vectors.erase(std::unique(vectors.begin(), vectors.end()), vectors.end());
-  for (vtkDataArray* array : vectors)
-  {
-    rotate(array);
-  }
-  polyData->Modified();
-}
-
-// glTF puts the texture origin at the image's top left, VTK and OpenGL at the bottom left:
-// v -> 1 - v, as Blender's importer does, so an image lines up the same way in both.
-void flipTextureV(vtkPolyData* polyData)
-{
-  vtkPointData* pd = polyData->GetPointData();
-  vtkDataArray* tcoords = pd->GetTCoords() ? pd->GetTCoords() : pd->GetArray("TEXCOORD_0");
-  if (!tcoords || tcoords->GetNumberOfComponents() < 2)
-  {
-    return;
-  }
-  for (vtkIdType i = 0; i < tcoords->GetNumberOfTuples(); ++i)
-  {
-    tcoords->SetComponent(i, 1, 1.0 - tcoords->GetComponent(i, 1));
-  }
-  tcoords->Modified();
-}
-
-vtkSmartPointer<vtkPolyData> readGltf(const std::string& path, const VtkMessageCapture& capture)
-{
-  vtkNew<vtkGLTFReader> reader;
-  reader->SetFileName(path.c_str());
-  reader->Update();
-  throwIfReaderFailed(path, reader, capture);
-  vtkMultiBlockDataSet* blocks = reader->GetOutput();
-  if (!blocks)
-  {
-    throw errorAbout(path, "the glTF reader produced no scene");
-  }
-  // The reader has already applied each node's global transform to its primitives.
-  vtkNew<vtkAppendPolyData> append;
-  vtkSmartPointer<vtkDataObjectTreeIterator> it;
-  it.TakeReference(blocks->NewTreeIterator());
-  it->VisitOnlyLeavesOn();
-  int pieces = 0;
-  for (it->InitTraversal(); !it->IsDoneWithTraversal(); it->GoToNextItem())
-  {
-    if (auto* piece = vtkPolyData::SafeDownCast(it->GetCurrentDataObject()))
-    {
-      append->AddInputData(piece);
-      ++pieces;
-    }
-  }
-  if (pieces == 0)
-  {
-    throw errorAbout(path, "no faces (the glTF scene holds no mesh)");
-  }
-  append->Update();
-  throwIfReaderFailed(path, append, capture);
-  auto merged = vtkSmartPointer<vtkPolyData>::New();
-  merged->DeepCopy(append->GetOutput());
-  rotateYUpToZUp(merged);
-  flipTextureV(merged);
-  return merged;
-}
-
 template <typename Reader>
 vtkSmartPointer<vtkPolyData> readPolyData(const std::string& path, const VtkMessageCapture& capture)
 {
@@ -602,143 +506,6 @@ vtkSmartPointer<vtkPolyData> readVtm(const std::string& path, const VtkMessageCa
   return merged;
 }
 
-// vtkGLTFReader names its blocks "Node_I" and "Mesh_I" by index; the names the file gives its
-// nodes and meshes are in its document loader, which it keeps to itself. Without vtkTypeMacro
-// this reader calls itself vtkGLTFReader, in its messages too.
-class GltfReaderWithNames : public vtkGLTFReader
-{
-public:
-  static GltfReaderWithNames* New();
-
-  // The node's name, else its mesh's, else "node I".
-  std::string nodeName(int node)
-  {
-    const std::string fallback = "node " + std::to_string(node);
-    std::shared_ptr<vtkGLTFDocumentLoader::Model> model =
-        this->Loader ? this->Loader->GetInternalModel() : nullptr;
-    if (!model || node < 0 || static_cast<size_t>(node) >= model->Nodes.size())
-    {
-      return fallback;
-    }
-    const vtkGLTFDocumentLoader::Node& entry = model->Nodes[static_cast<size_t>(node)];
-    if (!entry.Name.empty())
-    {
-      return entry.Name;
-    }
-    if (entry.Mesh >= 0 && static_cast<size_t>(entry.Mesh) < model->Meshes.size() &&
-        !model->Meshes[static_cast<size_t>(entry.Mesh)].Name.empty())
-    {
-      return model->Meshes[static_cast<size_t>(entry.Mesh)].Name;
-    }
-    return fallback;
-  }
-
-protected:
-  GltfReaderWithNames() = default;
-  ~GltfReaderWithNames() override = default;
-
-private:
-  GltfReaderWithNames(const GltfReaderWithNames&) = delete;
-  void operator=(const GltfReaderWithNames&) = delete;
-};
-vtkStandardNewMacro(GltfReaderWithNames);
-
-// The primitives of one node block of vtkGLTFReader's output: the node's index and its pieces.
-struct GltfNodePieces
-{
-  int node = -1;
-  std::vector<vtkPolyData*> pieces;
-};
-
-int gltfNodeIndex(vtkMultiBlockDataSet* parent, unsigned int i)
-{
-  if (!parent->HasMetaData(i))
-  {
-    return -1;
-  }
-  vtkInformation* meta = parent->GetMetaData(i);
-  const char* name =
-      meta->Has(vtkCompositeDataSet::NAME()) ? meta->Get(vtkCompositeDataSet::NAME()) : nullptr;
-  if (!name || std::strncmp(name, "Node_", 5) != 0 ||
-      !std::isdigit(static_cast<unsigned char>(name[5])))
-  {
-    return -1;
-  }
-  return std::atoi(name + 5);
-}
-
-// Every node block (a "Node_I" block: the node's "Mesh_J" block of primitives, then its
-// children's node blocks) in depth-first order, with the primitives directly its own. SLOT is
-// the entry of the node block TREE belongs to, made when its first primitive comes.
-void collectGltfNodes(vtkMultiBlockDataSet* tree, int node, long& slot,
-                      std::vector<GltfNodePieces>& nodes)
-{
-  for (unsigned int i = 0; i < tree->GetNumberOfBlocks(); ++i)
-  {
-    vtkDataObject* child = tree->GetBlock(i);
-    if (auto* group = vtkMultiBlockDataSet::SafeDownCast(child))
-    {
-      const int childNode = gltfNodeIndex(tree, i);
-      if (childNode >= 0)
-      {
-        long childSlot = -1;
-        collectGltfNodes(group, childNode, childSlot, nodes);
-      }
-      else
-      {
-        collectGltfNodes(group, node, slot, nodes);
-      }
-    }
-    else if (auto* piece = vtkPolyData::SafeDownCast(child))
-    {
-      if (slot < 0)
-      {
-        nodes.push_back({node, {}});
-        slot = static_cast<long>(nodes.size()) - 1;
-      }
-      nodes[static_cast<size_t>(slot)].pieces.push_back(piece);
-    }
-  }
-}
-
-std::vector<ReaderBlock> readGltfBlocks(const std::string& path, const VtkMessageCapture& capture)
-{
-  vtkNew<GltfReaderWithNames> reader;
-  reader->SetFileName(path.c_str());
-  reader->Update();
-  throwIfReaderFailed(path, reader, capture);
-  vtkMultiBlockDataSet* scene = reader->GetOutput();
-  if (!scene)
-  {
-    throw errorAbout(path, "the glTF reader produced no scene");
-  }
-  // The reader has already applied each node's global transform to its primitives.
-  std::vector<GltfNodePieces> nodes;
-  long rootSlot = -1;
-  collectGltfNodes(scene, -1, rootSlot, nodes);
-  if (nodes.empty())
-  {
-    throw errorAbout(path, "no faces (the glTF scene holds no mesh)");
-  }
-  std::vector<ReaderBlock> blocks;
-  for (const GltfNodePieces& node : nodes)
-  {
-    vtkNew<vtkAppendPolyData> append;
-    for (vtkPolyData* piece : node.pieces)
-    {
-      append->AddInputData(piece);
-    }
-    append->Update();
-    throwIfReaderFailed(path, append, capture);
-    auto merged = vtkSmartPointer<vtkPolyData>::New();
-    merged->DeepCopy(append->GetOutput());
-    rotateYUpToZUp(merged);
-    flipTextureV(merged);
-    blocks.push_back({node.node >= 0 ? reader->nodeName(node.node) : std::string(), merged});
-  }
-  return blocks;
-}
-
 } // namespace
 
 vtkSmartPointer<vtkPolyData> readWithVtk(const std::string& path, const std::string& ext,
@@ -760,7 +527,8 @@ vtkSmartPointer<vtkPolyData> readWithVtk(const std::string& path, const std::str
   {
     return readVtm(path, capture);
   }
-  return readGltf(path, capture);
+  std::vector<std::string> warnings;
+  return readGltfSurface(path, warnings);
 }
 
 std::vector<ReaderBlock> readBlocksWithVtk(const std::string& path, const std::string& ext,
@@ -778,7 +546,7 @@ std::vector<ReaderBlock> readBlocksWithVtk(const std::string& path, const std::s
   }
   else if (ext == ".gltf" || ext == ".glb")
   {
-    blocks = readGltfBlocks(path, capture);
+    blocks = readGltfBlocks(path, warnings);
   }
   else
   {

@@ -2,9 +2,8 @@
 // The formats VTK's own readers read: .obj (vtkOBJReader), .vtp (XML polydata), .vtk (legacy, any
 // dataset: non-polygonal ones reduced to their outer surface), .vtm (vtkXMLMultiBlockDataReader:
 // every leaf dataset, non-polygonal ones reduced to their outer surface like .vtk) and
-// .gltf/.glb (vtkGLTFReader: every mesh of the default scene with its node transforms applied,
-// turned from glTF's Y-up into the Z-up world and its texture origin to the bottom left, as
-// Blender's importer does). These readers are not hardened against hostile files (VTK 9.1's
+// .gltf/.glb (GltfReader.h, through tinygltf: parts with their materials and placements). These
+// readers are not hardened against hostile files (VTK 9.1's
 // legacy reader crashes on truncated input, for one), so only the mesh reader program
 // (aniso-mesh-reader, MeshReaderProcess.h) runs them, never the application. Errors are
 // aniso::Error "PATH: reason" with the reader's own words (what it printed, in CAPTURE).
@@ -38,9 +37,8 @@ vtkSmartPointer<vtkPolyData> readWithVtk(const std::string& path, const std::str
 //     each level from the top joined by "/" ("outer/inner"); a level without a name is
 //     "block I", I its index among its siblings (the file's index attribute). An empty leaf is a
 //     block without cells.
-//   .gltf/.glb: one block per node of the default scene that instances a mesh (its primitives
-//     merged, the node's transform applied, turned Z-up as above), named by the node's name,
-//     else its mesh's name, else "node I" (I the node's index in the file).
+//   .gltf/.glb: GltfReader.h's readGltfBlocks (one block per mesh node and material, in the
+//     mesh's frame, with its material and placement).
 //   .vtk, .vtp: one block without a name.
 std::vector<ReaderBlock> readBlocksWithVtk(const std::string& path, const std::string& ext,
                                            const VtkMessageCapture& capture,

@@ -5,6 +5,7 @@
 #include "core/error.h"
 #include "tests/vtkpasses/mesh/mesh_test_helpers.h"
 #include "vtkpasses/mesh/MeshLoader.h"
+#include "vtkpasses/mesh/PartPlacement.h"
 
 #include <array>
 #include <cstdint>
@@ -511,10 +512,11 @@ std::string tetraBuffer()
 TEST_F(MeshBlocksTest, GltfPartsAreNamedByTheirNodesWithTheirTransforms)
 {
   // Checks: a part per mesh node in the scene's depth-first order; named by the node, else by
-  // its mesh, else "node I"; a child's transform composed with its parent's, then turned Z-up.
+  // its mesh, else "node I"; each part's surface in its mesh's frame turned Z-up, its placement
+  // the child's transform composed with its parent's, turned Z-up.
   // Reference: the hand-written file: "car" (no mesh) at glTF (0, 5, 0) holds "wheel" at
   // (10, 0, 0), so the wheel's tetrahedron spans glTF [10, 11] x [5, 6] x [0, 1], Z-up
-  // [10, 11] x [-1, 0] x [5, 6].
+  // [10, 11] x [-1, 0] x [5, 6]; its placement is the translation by Z-up (10, 0, 5).
   this->write("tetra.bin", tetraBuffer());
   const std::string file = this->write(
       "car.gltf",
@@ -533,10 +535,20 @@ TEST_F(MeshBlocksTest, GltfPartsAreNamedByTheirNodesWithTheirTransforms)
   EXPECT_EQ(namesOf(loaded), (std::vector<std::string>{"wheel", "body", "node 2"}));
   EXPECT_EQ(trianglesOf(loaded), (std::vector<int64_t>{4, 4, 4}));
   ASSERT_EQ(loaded.blocks.size(), 3u);
-  expectBounds(loaded.blocks[0].mesh.polyData, {10, 11, -1, 0, 5, 6}, 1e-6);
+  expectBounds(loaded.blocks[0].mesh.polyData, {0, 1, -1, 0, 0, 1}, 1e-6);
+  expectBounds(placedSurface(loaded.blocks[0].mesh.polyData, loaded.blocks[0].placement),
+               {10, 11, -1, 0, 5, 6}, 1e-6);
+  const PartMatrix wheel{1, 0, 0, 10, 0, 1, 0, 0, 0, 0, 1, 5, 0, 0, 0, 1};
+  for (size_t i = 0; i < 16; ++i)
+  {
+    EXPECT_NEAR(loaded.blocks[0].placement[i], wheel[i], 1e-12) << i;
+  }
   expectBounds(loaded.blocks[1].mesh.polyData, {0, 1, -1, 0, 0, 1}, 1e-6);
+  EXPECT_EQ(loaded.blocks[1].placement, kIdentityPlacement);
   // The rotation keeps the winding: each tetrahedron still encloses +1/6.
   EXPECT_NEAR(test::signedVolume(loaded.blocks[0].mesh.polyData), 1.0 / 6.0, 1e-6);
+  // One surface (loadMesh): every part where its placement puts it.
+  expectBounds(loadMesh(file).polyData, {0, 11, -1, 0, 0, 6}, 1e-6);
 }
 
 TEST_F(MeshBlocksTest, TheReaderProgramIsAskedForPartsAndItsFailuresNameTheFile)
