@@ -245,8 +245,10 @@ std::vector<ParameterSpec> declare()
                        "units"))),
       ofMaterial(affecting(A::FrameCost | A::LitModels | A::SurfaceModels,
                 text("tangents", "Tangents", "auto",
-                     "tangent field: auto (the mesh's, else from UVs, else axis:1,0,0), uv, "
-                     "axis:X,Y,Z, around:X,Y,Z or radial:X,Y,Z"))),
+                     "tangent field: auto (the mesh's, else from UVs, else face-u on a STEP or "
+                     "IGES part, else axis:1,0,0), uv, axis:X,Y,Z, around:X,Y,Z, radial:X,Y,Z, "
+                     "or face-u, face-v: along a CAD face's own u or v (a turned face: round "
+                     "or along its axis)"))),
       affecting(
           A::Display,
           choice("background", "Background",
