@@ -36,7 +36,7 @@ struct FileMeshes
   std::vector<NamedMesh> meshes;
   std::vector<std::string> warnings;
 };
-FileMeshes meshesOfFile(const std::string& path);
+FileMeshes meshesOfFile(const std::string& path, const MeshReadOptions& options = {});
 
 // NAMES made unique in order: the second "bolt" becomes "bolt 2", the third "bolt 3" (skipping
 // names given already).
@@ -57,7 +57,8 @@ struct ScenePart
 // skipped with one line "aniso: warning: PATH: reason (skipped)" on WARNINGS; when no file
 // loads, the error of the only file, or aniso::Error "PATH1, PATH2: no mesh could be loaded
 // (PATH1: reason; ...)".
-std::vector<ScenePart> loadParts(const std::vector<std::string>& paths, std::ostream& warnings);
+std::vector<ScenePart> loadParts(const std::vector<std::string>& paths, std::ostream& warnings,
+                                 const MeshReadOptions& options = {});
 
 // The library of the command line: the built-in metals and those of --materials FILE (which win
 // over a built-in of the same name). Throws aniso::Error "FILE: reason" for a bad file.

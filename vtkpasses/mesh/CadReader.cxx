@@ -34,14 +34,13 @@
 #include <XCAFDoc_ColorTool.hxx>
 #include <XCAFDoc_DocumentTool.hxx>
 #include <XCAFDoc_ShapeTool.hxx>
-#include <gp_Trsf.hxx>
-
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <gp_Trsf.hxx>
 #include <map>
 #include <optional>
 #include <vtkCellArray.h>
@@ -221,7 +220,9 @@ void collectLeaves(const TDF_Label& label, const std::string& parentName,
   {
     own = labelName(product);
   }
-  const std::string name = parentName.empty() ? own : own.empty() ? parentName : parentName + "/" + own;
+  const std::string name = parentName.empty() ? own
+                           : own.empty()      ? parentName
+                                              : parentName + "/" + own;
   if (XCAFDoc_ShapeTool::IsAssembly(product))
   {
     TDF_LabelSequence components;
@@ -457,8 +458,8 @@ ProductSurface tessellate(const TopoDS_Shape& shape, const CadReadOptions& optio
     if (!result.colour || entry.second > largest)
     {
       largest = entry.second;
-      result.colour = Quantity_Color(entry.first[0], entry.first[1], entry.first[2],
-                                     Quantity_TOC_RGB);
+      result.colour =
+          Quantity_Color(entry.first[0], entry.first[1], entry.first[2], Quantity_TOC_RGB);
     }
   }
   result.colours = static_cast<int>(areaOfColour.size());
@@ -529,8 +530,7 @@ std::vector<ReaderBlock> readBlocks(const std::string& path, const std::string& 
       if (surface.failedFaces > 0 && surface.failedFaces < surface.faces)
       {
         warnings.push_back(subject + ": " + std::to_string(surface.failedFaces) + " of its " +
-                           std::to_string(surface.faces) +
-                           " faces did not tessellate (left out)");
+                           std::to_string(surface.faces) + " faces did not tessellate (left out)");
       }
       found = products.emplace(key, std::move(surface)).first;
     }
@@ -549,8 +549,7 @@ std::vector<ReaderBlock> readBlocks(const std::string& path, const std::string& 
       if (surface.colours > 1)
       {
         warnings.push_back(subject + ": its faces have " + std::to_string(surface.colours) +
-                           " colours; it takes " +
-                           Quantity_Color::ColorToHex(*colour).ToCString() +
+                           " colours; it takes " + Quantity_Color::ColorToHex(*colour).ToCString() +
                            ", the one covering most of its area");
       }
     }
@@ -592,8 +591,8 @@ std::vector<ReaderBlock> readCadBlocks(const std::string& path, const std::strin
   }
   catch (const Standard_Failure& failure)
   {
-    throw errorAbout(path, std::string("OpenCASCADE failed on this file: ") +
-                               failure.GetMessageString());
+    throw errorAbout(path,
+                     std::string("OpenCASCADE failed on this file: ") + failure.GetMessageString());
   }
 }
 
@@ -648,7 +647,8 @@ vtkSmartPointer<vtkPolyData> readCadSurface(const std::string& path, const std::
       points->InsertNextPoint(q.x + m[3], q.y + m[7], q.z + m[11]);
       double t[3];
       n->GetTuple(i, t);
-      Vec placed = {c0.x * t[0] + c1.x * t[1] + c2.x * t[2], c0.y * t[0] + c1.y * t[1] + c2.y * t[2],
+      Vec placed = {c0.x * t[0] + c1.x * t[1] + c2.x * t[2],
+                    c0.y * t[0] + c1.y * t[1] + c2.y * t[2],
                     c0.z * t[0] + c1.z * t[1] + c2.z * t[2]};
       placed = unit(det < 0.0 ? scaled(placed, -1.0) : placed);
       normals->InsertNextTuple3(placed.x, placed.y, placed.z);

@@ -12,8 +12,8 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
-#include <cstdlib>
 #include <cstdint>
+#include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -32,7 +32,7 @@ namespace aniso
 {
 namespace
 {
-const char* const kExtensions[] = {".obj", ".ply", ".stl",  ".off",  ".vtk", ".vtp", ".vtm",
+const char* const kExtensions[] = {".obj",  ".ply", ".stl",  ".off", ".vtk",  ".vtp", ".vtm",
                                    ".gltf", ".glb", ".step", ".stp", ".iges", ".igs"};
 
 std::mutex& loadMutex()
@@ -298,8 +298,7 @@ void adoptFinishAndPlace(const ReaderBlock& raw, const std::string& directory,
       const MaterialLibrary library = materialLibraryFromJson(raw.material, directory, subject);
       if (library.materials().size() != 1)
       {
-        throw errorAbout(subject, "the reader sent " +
-                                      std::to_string(library.materials().size()) +
+        throw errorAbout(subject, "the reader sent " + std::to_string(library.materials().size()) +
                                       " materials for one part");
       }
       block.material = library.materials().front();
@@ -357,12 +356,15 @@ CadDeflection parseCadDeflection(const std::string& text, const std::string& sub
                                   "': expected a positive fraction of a part's size (0.001) or a "
                                   "length in millimetres (0.05mm)");
   }
-  if (!deflection.absolute && !(value < 1.0))
+  // A relative one within the declared cad-deflection's range (the window's).
+  const ParameterSpec& spec = parameterSpec("cad-deflection");
+  if (!deflection.absolute && !(value >= spec.minimum && value <= spec.maximum))
   {
     throw errorAbout(subject, "'" + text +
-                                  "': a relative deflection is a fraction of the part's size, "
-                                  "below 1 (for a length, write it in millimetres: " +
-                                  text + "mm)");
+                                  "': a relative deflection is a fraction of the part's "
+                                  "diagonal from " +
+                                  formatNumber(spec.minimum) + " to " + formatNumber(spec.maximum) +
+                                  " (for a length, write it in millimetres: " + text + "mm)");
   }
   deflection.value = value;
   return deflection;
@@ -418,13 +420,13 @@ LoadedBlocks loadMeshBlocks(const std::string& path, const MeshReadOptions& opti
   std::lock_guard<std::mutex> lock(loadMutex());
   VtkMessageCapture capture;
   std::vector<std::string> readerWarnings;
-  std::vector<ReaderBlock> raw = readingErrorsNamed(
-      path,
-      [&]
-      {
-        return readBlocksInReaderProcess(path, ext, fileSize, readerWarnings,
-                                         readArguments(ext, options));
-      });
+  std::vector<ReaderBlock> raw =
+      readingErrorsNamed(path,
+                         [&]
+                         {
+                           return readBlocksInReaderProcess(path, ext, fileSize, readerWarnings,
+                                                            readArguments(ext, options));
+                         });
   ObjNonFiniteEntries objNonFinite;
   if (ext == ".obj")
   {

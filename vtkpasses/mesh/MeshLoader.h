@@ -8,9 +8,9 @@
 //   to their surface like .vtk), .gltf/.glb (vtkGLTFReader: every mesh of the default scene
 //   with its node transforms applied), .step/.stp/.iges/.igs (OpenCASCADE, CadReader.h: the
 //   assembly's parts tessellated by MeshReadOptions, with the faces' own normals and their
-//   parameterisation's tangents; lengths in millimetres). PLY, STL and OFF have their own readers: VTK has none
-//   for OFF, and its PLY and STL readers are not safe on hostile files. loadMesh merges a file's
-//   parts into one surface; loadMeshBlocks keeps them apart.
+//   parameterisation's tangents; lengths in millimetres). PLY, STL and OFF have their own readers:
+//   VTK has none for OFF, and its PLY and STL readers are not safe on hostile files. loadMesh
+//   merges a file's parts into one surface; loadMeshBlocks keeps them apart.
 // glTF is Y-up by specification; the loader turns it into the Z-up world the way Blender's
 // importer does, (x, y, z) -> (x, -z, y), normals and tangents included; its texture origin is
 // the image's top left, so v becomes 1 - v (VTK's origin is the bottom left), as in Blender.
@@ -55,8 +55,8 @@ struct CadDeflection
   double value = 0.001;
   bool absolute = false;
 };
-// Throws aniso::Error "SUBJECT: reason" unless TEXT is a positive number (a fraction below 1)
-// or a positive number followed by "mm".
+// Throws aniso::Error "SUBJECT: reason" unless TEXT is a number in the declared cad-deflection's
+// range (core/parameters: 1e-6 to 0.5) or a positive number followed by "mm".
 CadDeflection parseCadDeflection(const std::string& text, const std::string& subject);
 std::string toString(const CadDeflection& deflection); // parses back to the same
 

@@ -33,10 +33,10 @@ constexpr const char* kReaderBlocksArgument = "blocks";
 // program, given READ_ARGUMENTS (KEY=VALUE) after its own; its warnings are appended to
 // WARNINGS. Throws aniso::Error "PATH: reason" (the reader's error, a crash, the time limit, a
 // program that cannot be started).
-vtkSmartPointer<vtkPolyData> readInReaderProcess(const std::string& path, const std::string& ext,
-                                                 uintmax_t fileSize,
-                                                 std::vector<std::string>& warnings,
-                                                 const std::vector<std::string>& readArguments = {});
+vtkSmartPointer<vtkPolyData>
+readInReaderProcess(const std::string& path, const std::string& ext, uintmax_t fileSize,
+                    std::vector<std::string>& warnings,
+                    const std::vector<std::string>& readArguments = {});
 
 // One part of a file as the reader program hands it back: the name the file gives it (empty
 // when it gives none; not necessarily unique), its surface, unsanitised (never null, possibly
@@ -46,7 +46,7 @@ struct ReaderBlock
 {
   ReaderBlock() = default;
   ReaderBlock(std::string name_, vtkSmartPointer<vtkPolyData> polyData_)
-    : name(std::move(name_)), polyData(std::move(polyData_))
+      : name(std::move(name_)), polyData(std::move(polyData_))
   {
   }
 
@@ -60,9 +60,10 @@ struct ReaderBlock
 };
 
 // The same for the file's parts (VtkReaders.h, readBlocksWithVtk), in file order, at least one.
-std::vector<ReaderBlock> readBlocksInReaderProcess(
-    const std::string& path, const std::string& ext, uintmax_t fileSize,
-    std::vector<std::string>& warnings, const std::vector<std::string>& readArguments = {});
+std::vector<ReaderBlock>
+readBlocksInReaderProcess(const std::string& path, const std::string& ext, uintmax_t fileSize,
+                          std::vector<std::string>& warnings,
+                          const std::vector<std::string>& readArguments = {});
 
 // Where the reader program is: $ANISO_MESH_READER when set, else beside the running executable,
 // else in ../lib/aniso/ from it (the installed layout), else where this build made it. Throws

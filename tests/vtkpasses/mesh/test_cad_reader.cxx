@@ -25,15 +25,14 @@
 #include <XCAFDoc_ColorTool.hxx>
 #include <XCAFDoc_DocumentTool.hxx>
 #include <XCAFDoc_ShapeTool.hxx>
-#include <gp_Ax1.hxx>
-#include <gp_Ax2.hxx>
-#include <gp_Trsf.hxx>
-
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <gp_Ax1.hxx>
+#include <gp_Ax2.hxx>
+#include <gp_Trsf.hxx>
 #include <gtest/gtest.h>
 #include <iterator>
 #include <map>
@@ -75,8 +74,8 @@ PartMatrix matrixOf(const gp_Trsf& trsf)
 // and height 12 along Z, blue) twice, as "pin-a" and "pin-b", at two placements.
 struct Reference
 {
-  gp_Trsf pins;  // the sub-assembly in the rig
-  gp_Trsf pinA;  // the pins in the sub-assembly
+  gp_Trsf pins; // the sub-assembly in the rig
+  gp_Trsf pinA; // the pins in the sub-assembly
   gp_Trsf pinB;
 };
 
@@ -100,8 +99,9 @@ Handle(TDocStd_Document) referenceDocument()
 
   const TDF_Label plate = shapes->AddShape(BRepPrimAPI_MakeBox(20.0, 10.0, 2.0).Shape(), false);
   TDataStd_Name::Set(plate, "plate");
-  colours->SetColor(plate, Quantity_Color(kPlateColour.r, kPlateColour.g, kPlateColour.b, Quantity_TOC_RGB),
-                    XCAFDoc_ColorSurf);
+  colours->SetColor(
+      plate, Quantity_Color(kPlateColour.r, kPlateColour.g, kPlateColour.b, Quantity_TOC_RGB),
+      XCAFDoc_ColorSurf);
   const TDF_Label pin = shapes->AddShape(
       BRepPrimAPI_MakeCylinder(gp_Ax2(gp_Pnt(0.0, 0.0, 0.0), gp_Dir(0.0, 0.0, 1.0)), kPinRadius,
                                kPinHeight)
@@ -370,7 +370,8 @@ TEST_F(CadReaderTest, CylinderTangentsRunAroundAndAlongItsAxis)
     const glm::dvec3 p = test::point(surface, i);
     // The outward normal of the side is radial.
     EXPECT_NEAR(glm::dot(n, glm::normalize(glm::dvec3(p.x, p.y, 0.0))), 1.0, 1e-6);
-    const glm::dvec3 circle = glm::normalize(glm::cross(glm::dvec3(0, 0, 1), glm::dvec3(p.x, p.y, 0)));
+    const glm::dvec3 circle =
+        glm::normalize(glm::cross(glm::dvec3(0, 0, 1), glm::dvec3(p.x, p.y, 0)));
     const glm::dvec3 tu = test::vec3(surface->GetPointData()->GetTangents(), i);
     worstAround = std::max(worstAround, std::acos(std::min(1.0, std::abs(glm::dot(tu, circle)))));
     const glm::dvec3 tv = test::vec3(v.polyData->GetPointData()->GetTangents(), i);
@@ -427,7 +428,8 @@ TEST_F(CadReaderTest, TruncatedAndGarbageFilesAreRefusedWithTheirPath)
   std::ofstream(cut, std::ios::binary) << text.substr(0, text.size() / 2);
   const std::string igesWhole = this->writeIges(referenceDocument(), "rig.iges");
   std::ifstream igesIn(igesWhole, std::ios::binary);
-  const std::string iges((std::istreambuf_iterator<char>(igesIn)), std::istreambuf_iterator<char>());
+  const std::string iges((std::istreambuf_iterator<char>(igesIn)),
+                         std::istreambuf_iterator<char>());
   const std::string igesCut = this->path("cut.iges");
   std::ofstream(igesCut, std::ios::binary) << iges.substr(0, iges.size() / 2);
   const std::string garbage = this->path("garbage.stp");
