@@ -34,7 +34,8 @@
 // RetError, RetVoid), when the file is cut short (a STEP file without its closing
 // "END-ISO-10303-21;", an IGES file without its terminate section), when nothing transfers, or
 // when no face of the file tessellates. A face that does not tessellate is left out with a
-// warning "PATH: part NAME: N faces did not tessellate (left out)".
+// warning "PATH: part NAME: N of its M faces did not tessellate (left out)"; a part none of
+// whose faces tessellates is left out with a warning too.
 #include "vtkpasses/mesh/MeshReaderProcess.h"
 
 #include <string>
