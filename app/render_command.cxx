@@ -85,13 +85,14 @@ Command renderCommand()
 {
   Command c;
   c.usage = "aniso render [MESH...] [options] -o FILE";
-  c.summary = "Render MESH (OBJ, PLY, STL, OFF, VTK, VTP, glTF) or a built-in mesh with an "
+  c.summary = "Render MESH (OBJ, PLY, STL, OFF, VTK, VTP, glTF, STEP, IGES) or a built-in mesh "
+              "with an "
               "anisotropic Ashikhmin-Shirley material under image-based lighting, without a "
               "window, to a PNG (tone-mapped 8-bit sRGB) or an EXR (linear float radiance, alpha "
               "= coverage). Several meshes make a scene of parts, drawn together with the camera "
               "fitting them all, each with its own material (--part): one a file, or one a "
-              "block of a file (OBJ groups and objects, VTM blocks, glTF mesh nodes). Needs an X "
-              "display; where there is none, run it under xvfb-run.";
+              "block of a file (OBJ groups and objects, VTM blocks, glTF mesh nodes, STEP and IGES "
+              "parts). Needs an X display; where there is none, run it under xvfb-run.";
   c.positionals = {"MESH"};
   c.lastPositionalRepeats = true;
   Option builtin = textOption("--builtin", "NAME", "render a built-in mesh instead of a file");
@@ -137,6 +138,16 @@ Command renderCommand()
       "tangent field: " + brushingModelSyntax() +
       "; by default the mesh's own, else from its UVs, else axis:1,0,0";
   c.options.push_back(textOption("--tangents", "MODEL", tangentsHelp));
+  // The declared cad-deflection is the window's (relative only); the command line also takes a
+  // length.
+  static const std::string deflectionDefault =
+      formatNumber(parameterSpec("cad-deflection").defaultValue[0]);
+  c.options.push_back(textOption(
+      "--cad-deflection", "F|Lmm",
+      "STEP and IGES: the largest distance of a triangle from its face, as a fraction F of each "
+      "part's bounding-box diagonal (0.0005: finer) or as a length in millimetres (0.05mm)",
+      deflectionDefault));
+  c.options.push_back(parameterOption("cad-angle"));
   c.options.push_back(textOption("--size", "WxH", "image size in pixels", "512x512"));
   c.options.push_back(textOption(
       "--view", "SIDE",
@@ -245,7 +256,8 @@ void checkOutput(const std::string& output)
 }
 
 // The parts of the command line: the built-in mesh, or every MESH file.
-std::vector<ScenePart> scenePartsOf(const Arguments& a, std::ostream& warnings)
+std::vector<ScenePart> scenePartsOf(const Arguments& a, std::ostream& warnings,
+                                    const MeshReadOptions& options)
 {
   if (a.has("--builtin"))
   {
@@ -259,7 +271,7 @@ std::vector<ScenePart> scenePartsOf(const Arguments& a, std::ostream& warnings)
     part.mesh = makeBuiltinMesh(parseBuiltinMesh(a.text("--builtin")));
     return {part};
   }
-  return loadParts(a.positionals, warnings);
+  return loadParts(a.positionals, warnings, options);
 }
 
 // PART's surface prepared with OPTIONS, the notes of its loading and preparation on OUT (each
@@ -363,6 +375,7 @@ int runRender(const std::vector<std::string>& args, std::ostream& out, std::ostr
     throw usageError("--view", "give either --view or --azimuth/--elevation");
   }
   SurfaceOptions surfaceOptions;
+  MeshReadOptions readOptions;
   try
   {
     settings.view.direction =
@@ -373,6 +386,9 @@ int runRender(const std::vector<std::string>& args, std::ostream& out, std::ostr
     {
       surfaceOptions.brushing = parseBrushingModel(a.text("--tangents"));
     }
+    readOptions.cadDeflection =
+        parseCadDeflection(a.text("--cad-deflection"), "--cad-deflection");
+    readOptions.cadAngleDegrees = a.real("--cad-angle");
   }
   catch (const Error& e)
   {
@@ -442,7 +458,7 @@ int runRender(const std::vector<std::string>& args, std::ostream& out, std::ostr
   MaterialLibrary library = partLibrary(a);
 
   // Then the inputs, each failing with its file's name.
-  std::vector<ScenePart> scene = scenePartsOf(a, err);
+  std::vector<ScenePart> scene = scenePartsOf(a, err, readOptions);
   adoptFileMaterials(library, scene);
   checkPartOptions(a, library);
   assignParts(a, library, scene);

@@ -78,9 +78,9 @@ void addPartOptions(Command& c)
   c.options.push_back(list);
 }
 
-FileMeshes meshesOfFile(const std::string& path)
+FileMeshes meshesOfFile(const std::string& path, const MeshReadOptions& options)
 {
-  LoadedBlocks loaded = loadMeshBlocks(path);
+  LoadedBlocks loaded = loadMeshBlocks(path, options);
   FileMeshes file;
   file.warnings = std::move(loaded.warnings);
   if (loaded.blocks.size() == 1)
@@ -119,7 +119,8 @@ std::vector<std::string> uniquePartNames(const std::vector<std::string>& names)
   return unique;
 }
 
-std::vector<ScenePart> loadParts(const std::vector<std::string>& paths, std::ostream& warnings)
+std::vector<ScenePart> loadParts(const std::vector<std::string>& paths, std::ostream& warnings,
+                                 const MeshReadOptions& options)
 {
   std::vector<ScenePart> parts;
   std::vector<std::string> failures; // of the files that did not load
@@ -129,7 +130,7 @@ std::vector<ScenePart> loadParts(const std::vector<std::string>& paths, std::ost
   {
     try
     {
-      FileMeshes file = meshesOfFile(path);
+      FileMeshes file = meshesOfFile(path, options);
       for (NamedMesh& named : file.meshes)
       {
         ScenePart part;

@@ -40,7 +40,7 @@ struct FileMeshes
   std::vector<NamedMesh> meshes;
   std::vector<std::string> warnings;
 };
-FileMeshes meshesOfFile(const std::string& path);
+FileMeshes meshesOfFile(const std::string& path, const MeshReadOptions& options = {});
 
 // NAMES made unique in order: the second "bolt" becomes "bolt 2", the third "bolt 3" (skipping
 // names given already).
@@ -63,7 +63,8 @@ struct ScenePart
 // skipped with one line "aniso: warning: PATH: reason (skipped)" on WARNINGS; when no file
 // loads, the error of the only file, or aniso::Error "PATH1, PATH2: no mesh could be loaded
 // (PATH1: reason; ...)".
-std::vector<ScenePart> loadParts(const std::vector<std::string>& paths, std::ostream& warnings);
+std::vector<ScenePart> loadParts(const std::vector<std::string>& paths, std::ostream& warnings,
+                                 const MeshReadOptions& options = {});
 
 // The materials the files give their parts, added to LIBRARY (MaterialLibrary::adopt: a file's
 // material keeps its name unless the library holds another material of that name, a built-in,

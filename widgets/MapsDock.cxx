@@ -46,6 +46,10 @@ MapsDock::MapsDock(SceneEditor* editor, QWidget* parent)
   panel_->addRow(label("tangents"), tangents_);
   connect(tangents_, &TangentEditor::edited, this,
           [this](const QString& text) { submit("tangents", text); });
+  // How STEP and IGES parts are tessellated: beside the tangents, which face-u and face-v take
+  // from the same faces.
+  panel_->addParameter("cad-deflection");
+  panel_->addParameter("cad-angle");
 
   connect(panel_, &ParameterPanel::errorOccurred, this, &MapsDock::errorOccurred);
   connect(editor->model(), &SceneModel::valueChanged, this, &MapsDock::sync);

@@ -4,6 +4,7 @@
 #include "core/maps/map_files.h"
 #include "core/maps/quaternion_map.h"
 #include "core/maps/tpr_map.h"
+#include "core/parameters/parameters.h"
 #include "vtkpasses/mesh/BrushingModel.h"
 #include "vtkpasses/mesh/BuiltinMeshes.h"
 #include "vtkpasses/mesh/LevelOfDetail.h"
@@ -48,7 +49,18 @@ SceneAssets::SceneAssets(SceneModel* model) : model_(model)
 
 std::shared_ptr<const LoadedBlocks> SceneAssets::blocks(const std::string& mesh)
 {
-  return blocks_.get(mesh,
+  // How CAD files are tessellated is part of what was read: the model's values when there is a
+  // model, else those set on these (staging) assets.
+  MeshReadOptions options = readOptions_;
+  if (model_)
+  {
+    options.cadDeflection.value = model_->real("cad-deflection");
+    options.cadDeflection.absolute = false;
+    options.cadAngleDegrees = model_->real("cad-angle");
+  }
+  const std::string key =
+      mesh + "\n" + toString(options.cadDeflection) + "\n" + formatNumber(options.cadAngleDegrees);
+  return blocks_.get(key,
                      [&]
                      {
                        auto loaded = std::make_shared<LoadedBlocks>();
@@ -61,7 +73,7 @@ std::shared_ptr<const LoadedBlocks> SceneAssets::blocks(const std::string& mesh)
                        }
                        else
                        {
-                         *loaded = loadMeshBlocks(mesh);
+                         *loaded = loadMeshBlocks(mesh, options);
                        }
                        return std::shared_ptr<const LoadedBlocks>(std::move(loaded));
                      });
@@ -83,9 +95,9 @@ std::vector<std::string> SceneAssets::blockNames(const std::string& mesh,
   return names;
 }
 
-std::shared_ptr<const SceneAssets::Surface>
-SceneAssets::surfaceEntry(const std::string& mesh, const std::string& block,
-                          const std::string& tangents)
+std::shared_ptr<const SceneAssets::Surface> SceneAssets::surfaceEntry(const std::string& mesh,
+                                                                      const std::string& block,
+                                                                      const std::string& tangents)
 {
   return surfaces_.get(
       mesh + "\n" + block + "\n" + tangents,
@@ -149,9 +161,8 @@ std::shared_ptr<const PreparedSurface> SceneAssets::surface(const std::string& m
   return surface(mesh, {}, tangents);
 }
 
-std::shared_ptr<const PreparedSurface> SceneAssets::surface(const std::string& mesh,
-                                                            const std::string& block,
-                                                            const std::string& tangents)
+std::shared_ptr<const PreparedSurface>
+SceneAssets::surface(const std::string& mesh, const std::string& block, const std::string& tangents)
 {
   std::shared_ptr<const Surface> entry = surfaceEntry(mesh, block, tangents);
   return std::shared_ptr<const PreparedSurface>(entry, &entry->prepared);

@@ -132,6 +132,10 @@ public:
   // kDefaultMaxTextureSide, the common limit of current implementations (llvmpipe's too).
   static constexpr int kDefaultMaxTextureSide = 16384;
   void setMaxTextureSide(int side) { maxTextureSide_ = side; }
+
+  // How mesh files are read (a CAD file's tessellation) by assets of no model; assets of a model
+  // read its cad-deflection and cad-angle. Part of the blocks' cache key.
+  void setMeshReadOptions(const MeshReadOptions& options) { readOptions_ = options; }
   int maxTextureSide() const { return maxTextureSide_; }
 
 private:
@@ -155,6 +159,7 @@ private:
 
   SceneModel* model_ = nullptr;
   int maxTextureSide_ = kDefaultMaxTextureSide;
+  MeshReadOptions readOptions_;
   RecentCache<std::shared_ptr<LoadedMesh>> meshes_{3};
   RecentCache<std::shared_ptr<const LoadedBlocks>> blocks_{8};
   // One entry per part of a scene of many (each with its tangents), so a scene's parts stay.

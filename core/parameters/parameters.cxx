@@ -245,8 +245,23 @@ std::vector<ParameterSpec> declare()
                        "units"))),
       ofMaterial(affecting(A::FrameCost | A::LitModels | A::SurfaceModels,
                 text("tangents", "Tangents", "auto",
-                     "tangent field: auto (the mesh's, else from UVs, else axis:1,0,0), uv, "
-                     "axis:X,Y,Z, around:X,Y,Z or radial:X,Y,Z"))),
+                     "tangent field: auto (the mesh's, else from UVs, else face-u on a STEP or "
+                     "IGES part, else axis:1,0,0), uv, axis:X,Y,Z, around:X,Y,Z, radial:X,Y,Z, "
+                     "or face-u, face-v: along a CAD face's own u or v (a turned face: round "
+                     "or along its axis)"))),
+      // How STEP and IGES parts are tessellated (vtkpasses/mesh/CadReader.h). 0.001 of a part's
+      // diagonal keeps a turned part's outline and highlight smooth at a full-window view; the
+      // command line also takes an absolute length ("--cad-deflection 0.05mm").
+      affecting(A::Meshes | A::FrameCost | A::LitModels | A::SurfaceModels,
+                number("cad-deflection", "CAD deflection", T::Real, 0.001, 1e-6, 0.5, 1e-4,
+                       S::Logarithmic, {},
+                       "STEP and IGES: the largest distance of a triangle from its face, as a "
+                       "fraction of the part's bounding-box diagonal (smaller: finer)")),
+      affecting(A::Meshes | A::FrameCost | A::LitModels | A::SurfaceModels,
+                number("cad-angle", "CAD angle", T::Real, 20.0, 0.5, 90.0, 0.5, S::Logarithmic,
+                       "deg",
+                       "STEP and IGES: the largest angle between the normals along a triangle's "
+                       "edge (smaller: finer on small radii)")),
       affecting(
           A::Display,
           choice("background", "Background",

@@ -40,6 +40,7 @@ enum class Affects : unsigned
   FrameCost = 1u << 4,     // what a frame costs per pixel and sample: learnt costs are forgotten
   LitModels = 1u << 5,     // what the lit models draw (their uniform material, lights, surface)
   SurfaceModels = 1u << 6, // what the surface models draw besides their own parameters
+  Meshes = 1u << 7,        // how mesh files are read (a CAD file's tessellation): read them again
 };
 
 constexpr Affects operator|(Affects a, Affects b)

@@ -262,8 +262,11 @@ TEST(Parameters, RolesAreTheListedOnes)
                                 "samples",      "lut-size",     "lut-samples",  "target-samples",
                                 "env-rotation", "height-scale", "quality-mode", "error-target",
                                 "exposure",     "tone-mapping", "background",   "background-color"};
-  const Names litModels = {"nu", "nv", "f0", "albedo", "tangents"};
-  const Names surfaceModels = {"f0", "albedo", "tangents"};
+  const Names litModels = {"nu",       "nv",           "f0",       "albedo",
+                           "tangents", "cad-deflection", "cad-angle"};
+  const Names surfaceModels = {"f0", "albedo", "tangents", "cad-deflection", "cad-angle"};
+  // The tessellation of CAD files: their parts are read again.
+  const Names meshes = {"cad-deflection", "cad-angle"};
   const Names none = {"env-rotation", "target-samples", "quality-mode", "error-target"};
 
   for (const ParameterSpec& spec : aniso::parameterSpecs())
@@ -279,11 +282,12 @@ TEST(Parameters, RolesAreTheListedOnes)
     EXPECT_EQ(spec.affects(Affects::FrameCost), keepsFrameCost.count(name) == 0) << name;
     EXPECT_EQ(spec.affects(Affects::LitModels), litModels.count(name) == 1) << name;
     EXPECT_EQ(spec.affects(Affects::SurfaceModels), surfaceModels.count(name) == 1) << name;
+    EXPECT_EQ(spec.affects(Affects::Meshes), meshes.count(name) == 1) << name;
     EXPECT_EQ(spec.roles == Affects::None, none.count(name) == 1) << name;
   }
   // Every name above is declared.
   for (const Names* names : {&uniforms, &variant, &luts, &material, &display, &keepsFrameCost,
-                             &litModels, &surfaceModels, &none})
+                             &litModels, &surfaceModels, &meshes, &none})
   {
     for (const std::string& name : *names)
     {

@@ -3,6 +3,7 @@
 #include "core/error.h"
 #include "core/frame.h"
 #include "core/parameters/parameters.h"
+#include "vtkpasses/mesh/CadReader.h"
 #include "vtkpasses/mesh/GeometryAccess.h"
 
 #include <algorithm>
@@ -159,7 +160,7 @@ std::vector<glm::dvec3> accumulateUvTangents(vtkPolyData* surface, vtkDataArray*
 
 std::string brushingModelSyntax()
 {
-  return "uv|axis:X,Y,Z|around:X,Y,Z[@CX,CY,CZ]|radial:X,Y,Z";
+  return "uv|axis:X,Y,Z|around:X,Y,Z[@CX,CY,CZ]|radial:X,Y,Z|face-u|face-v";
 }
 
 BrushingModel parseBrushingModel(const std::string& text, const std::string& subject)
@@ -174,13 +175,15 @@ BrushingModel parseBrushingModel(const std::string& text, const std::string& sub
   const std::string name = whole.substr(0, colon);
   const std::string args = colon == std::string::npos ? std::string() : whole.substr(colon + 1);
   BrushingModel model;
-  if (name == "uv")
+  if (name == "uv" || name == "face-u" || name == "face-v")
   {
     if (colon != std::string::npos)
     {
-      throw errorAbout(subject, "'" + whole + "': uv takes no parameters");
+      throw errorAbout(subject, "'" + whole + "': " + name + " takes no parameters");
     }
-    model.kind = BrushingKind::Uv;
+    model.kind = name == "uv"       ? BrushingKind::Uv
+                 : name == "face-u" ? BrushingKind::FaceU
+                                    : BrushingKind::FaceV;
     return model;
   }
   if (name != "axis" && name != "around" && name != "radial")
@@ -228,6 +231,10 @@ std::string toString(const BrushingModel& model)
            (model.centre ? "@" + formatTriple(*model.centre) : std::string());
   case BrushingKind::Radial:
     return "radial:" + formatTriple(model.vector);
+  case BrushingKind::FaceU:
+    return "face-u";
+  case BrushingKind::FaceV:
+    return "face-v";
   }
   return "uv";
 }
@@ -247,6 +254,20 @@ TangentStats computeBrushingTangents(vtkPolyData* surface, const BrushingModel& 
     throw errorAbout(
         subject, "tangents 'uv' need texture coordinates, and the mesh has none (use axis:X,Y,Z, "
                  "around:X,Y,Z or radial:X,Y,Z)");
+  }
+
+  vtkDataArray* faceTangents = nullptr;
+  if (model.kind == BrushingKind::FaceU || model.kind == BrushingKind::FaceV)
+  {
+    const char* name = model.kind == BrushingKind::FaceU ? kBRepTangentUArray : kBRepTangentVArray;
+    faceTangents = pd->GetArray(name);
+    if (!faceTangents || faceTangents->GetNumberOfComponents() != 3 ||
+        faceTangents->GetNumberOfTuples() != surface->GetNumberOfPoints())
+    {
+      throw errorAbout(subject, "tangents '" + toString(model) +
+                                    "' need the faces of a CAD part (a STEP or IGES file), and "
+                                    "this mesh has none");
+    }
   }
 
   const vtkIdType count = surface->GetNumberOfPoints();
@@ -299,6 +320,11 @@ TangentStats computeBrushingTangents(vtkPolyData* surface, const BrushingModel& 
     case BrushingKind::Radial:
       direction = p - model.vector;
       defined = glm::length(direction) > onAxis;
+      break;
+    case BrushingKind::FaceU:
+    case BrushingKind::FaceV:
+      direction = tupleAt(faceTangents, i);
+      defined = std::isfinite(glm::length(direction));
       break;
     }
     const double length = glm::length(direction);

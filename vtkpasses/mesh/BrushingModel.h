@@ -9,9 +9,16 @@
 //   around:X,Y,Z         turned/lathed parts: t = axis x (p - c) projected into the tangent plane,
 //   around:X,Y,Z@CX,CY,CZ  c = the given point on the axis, else the bounding-box centre.
 //   radial:X,Y,Z         brushing out from a point: t = (p - point) projected into the plane.
+//   face-u, face-v       a CAD part's own faces (STEP, IGES: CadReader.h): t = dS/du or dS/dv of
+//                        the face's surface at the point (the arrays "BRepTangentU" and
+//                        "BRepTangentV"), projected into the plane. OpenCASCADE's cylinders,
+//                        cones, spheres, tori and surfaces of revolution have u around their
+//                        axis, so face-u brushes a turned part round, face-v along its axis (a
+//                        cone's along its generatrix); a plane's u is its X direction.
 // Where the projection vanishes (the direction is along the normal, or p lies on the axis or at
 // the point), t falls back to the deterministic tangent of Frame::fromNormalTangent (core/frame.h,
-// the X axis projected, or Y when n is near X) and the point is counted. "Vanishes" means the
+// the X axis projected, or Y when n is near X) and the point is counted (face-u and face-v where the
+// face's derivative vanishes, at a pole or a cone's apex). "Vanishes" means the
 // projection is shorter than 1e-6 of the direction, or p is within 1e-9 of the mesh's size from
 // the axis or point.
 #include <cstdint>
@@ -28,7 +35,9 @@ enum class BrushingKind
   Uv,
   Axis,
   Around,
-  Radial
+  Radial,
+  FaceU,
+  FaceV
 };
 
 struct BrushingModel
@@ -38,7 +47,7 @@ struct BrushingModel
   std::optional<glm::dvec3> centre; // Around: a point on the axis; unset = bounding-box centre
 };
 
-// The CLI spelling "uv|axis:X,Y,Z|around:X,Y,Z[@CX,CY,CZ]|radial:X,Y,Z". Errors are aniso::Error
+// The CLI spelling "uv|axis:X,Y,Z|around:X,Y,Z[@CX,CY,CZ]|radial:X,Y,Z|face-u|face-v". Errors are aniso::Error
 // "SUBJECT: reason" (unknown model, missing or non-numeric components, zero-length axis).
 BrushingModel parseBrushingModel(const std::string& text,
                                  const std::string& subject = "--tangents");
@@ -53,7 +62,7 @@ struct TangentStats
 
 // Writes the float point array "Tangents" (unit, orthogonal to "Normals", set active) of a
 // triangle surface that has unit point normals. Uv needs "TCoords": without them it throws
-// aniso::Error "SUBJECT: reason".
+// aniso::Error "SUBJECT: reason"; so do face-u and face-v without their array.
 TangentStats computeBrushingTangents(vtkPolyData* surface, const BrushingModel& model,
                                      const std::string& subject);
 } // namespace aniso

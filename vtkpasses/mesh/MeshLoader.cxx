@@ -1,6 +1,8 @@
 #include "vtkpasses/mesh/MeshLoader.h"
 
 #include "core/error.h"
+#include "core/parameters/parameters.h"
+#include "vtkpasses/mesh/CadReader.h"
 #include "vtkpasses/mesh/MeshReaderProcess.h"
 #include "vtkpasses/mesh/OffReader.h"
 #include "vtkpasses/mesh/PlyReader.h"
@@ -11,6 +13,7 @@
 #include <cctype>
 #include <cmath>
 #include <cstdint>
+#include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -29,8 +32,8 @@ namespace aniso
 {
 namespace
 {
-const char* const kExtensions[] = {".obj", ".ply", ".stl",  ".off", ".vtk",
-                                   ".vtp", ".vtm", ".gltf", ".glb"};
+const char* const kExtensions[] = {".obj",  ".ply", ".stl",  ".off", ".vtk",  ".vtp", ".vtm",
+                                   ".gltf", ".glb", ".step", ".stp", ".iges", ".igs"};
 
 std::mutex& loadMutex()
 {
@@ -80,8 +83,22 @@ uintmax_t readingSize(const std::filesystem::path& file, const std::string& ext,
   return total;
 }
 
+// The reader program's arguments that carry OPTIONS (CadReader.h).
+std::vector<std::string> readArguments(const std::string& ext, const MeshReadOptions& options)
+{
+  if (!isCadExtension(ext))
+  {
+    return {};
+  }
+  const CadDeflection& d = options.cadDeflection;
+  return {std::string(d.absolute ? kCadAbsoluteDeflectionKey : kCadRelativeDeflectionKey) + "=" +
+              formatNumber(d.value),
+          std::string(kCadAngleKey) + "=" + formatNumber(options.cadAngleDegrees)};
+}
+
 vtkSmartPointer<vtkPolyData> readByExtension(const std::string& path, const std::string& ext,
-                                             uintmax_t fileSize, std::vector<std::string>& warnings)
+                                             uintmax_t fileSize, std::vector<std::string>& warnings,
+                                             const MeshReadOptions& options)
 {
   if (ext == ".ply")
   {
@@ -95,7 +112,7 @@ vtkSmartPointer<vtkPolyData> readByExtension(const std::string& path, const std:
   {
     return readOff(path);
   }
-  return readInReaderProcess(path, ext, fileSize, warnings);
+  return readInReaderProcess(path, ext, fileSize, warnings, readArguments(ext, options));
 }
 
 // Existence, type, readability and size, before any reader sees the file.
@@ -262,7 +279,8 @@ auto readingErrorsNamed(const std::string& path, Read&& read)
 // The formats whose files hold parts (loadMeshBlocks reads them in the reader program).
 bool hasBlocks(const std::string& ext)
 {
-  static const std::set<std::string> withBlocks = {".obj", ".vtm", ".gltf", ".glb"};
+  static const std::set<std::string> withBlocks = {".obj",  ".vtm", ".gltf", ".glb",
+                                                   ".step", ".stp", ".iges", ".igs"};
   return withBlocks.count(ext) > 0;
 }
 
@@ -280,8 +298,7 @@ void adoptFinishAndPlace(const ReaderBlock& raw, const std::string& directory,
       const MaterialLibrary library = materialLibraryFromJson(raw.material, directory, subject);
       if (library.materials().size() != 1)
       {
-        throw errorAbout(subject, "the reader sent " +
-                                      std::to_string(library.materials().size()) +
+        throw errorAbout(subject, "the reader sent " + std::to_string(library.materials().size()) +
                                       " materials for one part");
       }
       block.material = library.materials().front();
@@ -322,7 +339,43 @@ std::vector<std::string> uniqueNames(const std::vector<ReaderBlock>& blocks,
 }
 } // namespace
 
-LoadedMesh loadMesh(const std::string& path)
+CadDeflection parseCadDeflection(const std::string& text, const std::string& subject)
+{
+  CadDeflection deflection;
+  std::string number = text;
+  if (number.size() > 2 && number.compare(number.size() - 2, 2, "mm") == 0)
+  {
+    deflection.absolute = true;
+    number.resize(number.size() - 2);
+  }
+  char* end = nullptr;
+  const double value = std::strtod(number.c_str(), &end);
+  if (number.empty() || *end != '\0' || !std::isfinite(value) || !(value > 0.0))
+  {
+    throw errorAbout(subject, "'" + text +
+                                  "': expected a positive fraction of a part's size (0.001) or a "
+                                  "length in millimetres (0.05mm)");
+  }
+  // A relative one within the declared cad-deflection's range (the window's).
+  const ParameterSpec& spec = parameterSpec("cad-deflection");
+  if (!deflection.absolute && !(value >= spec.minimum && value <= spec.maximum))
+  {
+    throw errorAbout(subject, "'" + text +
+                                  "': a relative deflection is a fraction of the part's "
+                                  "diagonal from " +
+                                  formatNumber(spec.minimum) + " to " + formatNumber(spec.maximum) +
+                                  " (for a length, write it in millimetres: " + text + "mm)");
+  }
+  deflection.value = value;
+  return deflection;
+}
+
+std::string toString(const CadDeflection& deflection)
+{
+  return formatNumber(deflection.value) + (deflection.absolute ? "mm" : "");
+}
+
+LoadedMesh loadMesh(const std::string& path, const MeshReadOptions& options)
 {
   const std::filesystem::path file(path);
   const std::string ext = knownExtension(file, path);
@@ -334,7 +387,8 @@ LoadedMesh loadMesh(const std::string& path)
   // The validation's own VTK calls (polygon triangulation) stay quiet too.
   VtkMessageCapture capture;
   vtkSmartPointer<vtkPolyData> raw = readingErrorsNamed(
-      path, [&] { return readByExtension(path, ext, fileSize, mesh.report.readerWarnings); });
+      path,
+      [&] { return readByExtension(path, ext, fileSize, mesh.report.readerWarnings, options); });
   ObjNonFiniteEntries objNonFinite;
   if (ext == ".obj")
   {
@@ -347,7 +401,7 @@ LoadedMesh loadMesh(const std::string& path)
   return mesh;
 }
 
-LoadedBlocks loadMeshBlocks(const std::string& path)
+LoadedBlocks loadMeshBlocks(const std::string& path, const MeshReadOptions& options)
 {
   const std::filesystem::path file(path);
   const std::string ext = knownExtension(file, path);
@@ -357,7 +411,7 @@ LoadedBlocks loadMeshBlocks(const std::string& path)
   {
     MeshBlock block;
     block.name = stem;
-    block.mesh = loadMesh(path);
+    block.mesh = loadMesh(path, options);
     loaded.blocks.push_back(std::move(block));
     return loaded;
   }
@@ -366,8 +420,13 @@ LoadedBlocks loadMeshBlocks(const std::string& path)
   std::lock_guard<std::mutex> lock(loadMutex());
   VtkMessageCapture capture;
   std::vector<std::string> readerWarnings;
-  std::vector<ReaderBlock> raw = readingErrorsNamed(
-      path, [&] { return readBlocksInReaderProcess(path, ext, fileSize, readerWarnings); });
+  std::vector<ReaderBlock> raw =
+      readingErrorsNamed(path,
+                         [&]
+                         {
+                           return readBlocksInReaderProcess(path, ext, fileSize, readerWarnings,
+                                                            readArguments(ext, options));
+                         });
   ObjNonFiniteEntries objNonFinite;
   if (ext == ".obj")
   {

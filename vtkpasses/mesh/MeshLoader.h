@@ -6,9 +6,11 @@
 //   dataset: non-polygonal ones are reduced to their outer surface), .vtp (XML polydata), .vtm
 //   (XML multiblock, vtkXMLMultiBlockDataReader: every leaf dataset, non-polygonal ones reduced
 //   to their surface like .vtk), .gltf/.glb (vtkGLTFReader: every mesh of the default scene
-//   with its node transforms applied). PLY, STL and OFF have their own readers: VTK has none
-//   for OFF, and its PLY and STL readers are not safe on hostile files. loadMesh merges a file's
-//   parts into one surface; loadMeshBlocks keeps them apart.
+//   with its node transforms applied), .step/.stp/.iges/.igs (OpenCASCADE, CadReader.h: the
+//   assembly's parts tessellated by MeshReadOptions, with the faces' own normals and their
+//   parameterisation's tangents; lengths in millimetres). PLY, STL and OFF have their own readers:
+//   VTK has none for OFF, and its PLY and STL readers are not safe on hostile files. loadMesh
+//   merges a file's parts into one surface; loadMeshBlocks keeps them apart.
 // glTF is Y-up by specification; the loader turns it into the Z-up world the way Blender's
 // importer does, (x, y, z) -> (x, -z, y), normals and tangents included; its texture origin is
 // the image's top left, so v becomes 1 - v (VTK's origin is the bottom left), as in Blender.
@@ -45,13 +47,34 @@ class vtkPolyData;
 
 namespace aniso
 {
+// How far a CAD part's triangles may lie from its surface (BRepMesh's linear deflection): a
+// fraction of the part's bounding-box diagonal, or a length in millimetres (absolute). The text
+// form: "0.001" (relative) or "0.05mm" (absolute).
+struct CadDeflection
+{
+  double value = 0.001;
+  bool absolute = false;
+};
+// Throws aniso::Error "SUBJECT: reason" unless TEXT is a number in the declared cad-deflection's
+// range (core/parameters: 1e-6 to 0.5) or a positive number followed by "mm".
+CadDeflection parseCadDeflection(const std::string& text, const std::string& subject);
+std::string toString(const CadDeflection& deflection); // parses back to the same
+
+// How files are read. Default-constructed: as they always were (and CAD files at a deflection of
+// 0.001 of each part's diagonal and 20 degrees).
+struct MeshReadOptions
+{
+  CadDeflection cadDeflection;
+  double cadAngleDegrees = 20.0; // the largest angle between normals along a triangle's edge
+};
+
 struct LoadedMesh
 {
   vtkSmartPointer<vtkPolyData> polyData; // triangles, see MeshValidation.h for its arrays
   MeshReport report;
 };
 
-LoadedMesh loadMesh(const std::string& path);
+LoadedMesh loadMesh(const std::string& path, const MeshReadOptions& options = {});
 
 // A file as the parts (blocks) it holds, each with its name, instead of one merged surface:
 //   .obj: one part per g or o statement, named by its words (faces before any g or o, or after
@@ -63,6 +86,9 @@ LoadedMesh loadMesh(const std::string& path);
 //   .gltf/.glb: one part per node of the default scene that instances a mesh (its primitives
 //     merged), with its node transform applied and turned Z-up like loadMesh's, named by the
 //     node's name, else its mesh's, else "node I" (I the node's index in the file).
+//   .step/.stp/.iges/.igs: one part per leaf instance of the assembly (CadReader.h), named by
+//     the instance names (else product names) from the top joined by "/", with its placement
+//     and, for a coloured part, a painted material (F0 0.04, albedo the colour).
 //   every other format: one part named by the file's stem, exactly loadMesh's result.
 // Names are unique within the file: a repeat gets " 2", " 3", ... Each part is sanitised like
 // loadMesh's result (MeshValidation.h), with its own report (its source the file's path; what
@@ -92,7 +118,7 @@ struct LoadedBlocks
   std::vector<std::string> warnings; // "PATH: part NAME: reason" for each block skipped
 };
 
-LoadedBlocks loadMeshBlocks(const std::string& path);
+LoadedBlocks loadMeshBlocks(const std::string& path, const MeshReadOptions& options = {});
 
 // The extensions loadMesh and loadMeshBlocks accept, for help texts and file dialogs:
 // "*.obj *.ply ...".

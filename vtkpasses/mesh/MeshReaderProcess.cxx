@@ -322,7 +322,8 @@ namespace
 // per Data record, with the Name record before it. Throws as readInReaderProcess says.
 std::vector<ReaderBlock> runReaderProgram(const std::string& path, const std::string& ext,
                                           uintmax_t fileSize, bool blocks,
-                                          std::vector<std::string>& warnings)
+                                          std::vector<std::string>& warnings,
+                                          const std::vector<std::string>& readArguments)
 {
   std::string program;
   try
@@ -352,6 +353,10 @@ std::vector<ReaderBlock> runReaderProgram(const std::string& path, const std::st
   if (blocks)
   {
     argv.push_back(const_cast<char*>(kReaderBlocksArgument));
+  }
+  for (const std::string& argument : readArguments)
+  {
+    argv.push_back(const_cast<char*>(argument.c_str()));
   }
   argv.push_back(nullptr);
   pid_t child = -1;
@@ -437,15 +442,17 @@ std::vector<ReaderBlock> runReaderProgram(const std::string& path, const std::st
 
 vtkSmartPointer<vtkPolyData> readInReaderProcess(const std::string& path, const std::string& ext,
                                                  uintmax_t fileSize,
-                                                 std::vector<std::string>& warnings)
+                                                 std::vector<std::string>& warnings,
+                                                 const std::vector<std::string>& readArguments)
 {
-  return runReaderProgram(path, ext, fileSize, false, warnings).back().polyData;
+  return runReaderProgram(path, ext, fileSize, false, warnings, readArguments).back().polyData;
 }
 
 std::vector<ReaderBlock> readBlocksInReaderProcess(const std::string& path, const std::string& ext,
                                                    uintmax_t fileSize,
-                                                   std::vector<std::string>& warnings)
+                                                   std::vector<std::string>& warnings,
+                                                   const std::vector<std::string>& readArguments)
 {
-  return runReaderProgram(path, ext, fileSize, true, warnings);
+  return runReaderProgram(path, ext, fileSize, true, warnings, readArguments);
 }
 } // namespace aniso

@@ -7,7 +7,9 @@
 // 64 times FILE_SIZE, at least 512 MiB; the loader counts a .vtm's files in it), prints nothing,
 // and sends back its messages and the surface as VTK XML (VTK's own output, read back safely)
 // through a pipe; it is killed after kReaderTimeoutSeconds. Asked for the file's parts (a fourth
-// argument, "blocks"), it sends each part's name and surface in turn, the same way.
+// argument, "blocks"), it sends each part's name and surface in turn, the same way. Arguments
+// after those (KEY=VALUE, see CadReader.h) tell the readers how to read (a CAD file's
+// tessellation).
 #include "core/placement.h"
 
 #include <cstdint>
@@ -28,11 +30,13 @@ constexpr int kReaderTimeoutSeconds = 120;
 constexpr const char* kReaderBlocksArgument = "blocks";
 
 // The application's side: reads PATH (lower-case extension EXT, FILE_SIZE bytes) in the reader
-// program; its warnings are appended to WARNINGS. Throws aniso::Error "PATH: reason" (the
-// reader's error, a crash, the time limit, a program that cannot be started).
-vtkSmartPointer<vtkPolyData> readInReaderProcess(const std::string& path, const std::string& ext,
-                                                 uintmax_t fileSize,
-                                                 std::vector<std::string>& warnings);
+// program, given READ_ARGUMENTS (KEY=VALUE) after its own; its warnings are appended to
+// WARNINGS. Throws aniso::Error "PATH: reason" (the reader's error, a crash, the time limit, a
+// program that cannot be started).
+vtkSmartPointer<vtkPolyData>
+readInReaderProcess(const std::string& path, const std::string& ext, uintmax_t fileSize,
+                    std::vector<std::string>& warnings,
+                    const std::vector<std::string>& readArguments = {});
 
 // One part of a file as the reader program hands it back: the name the file gives it (empty
 // when it gives none; not necessarily unique), its surface, unsanitised (never null, possibly
@@ -42,7 +46,7 @@ struct ReaderBlock
 {
   ReaderBlock() = default;
   ReaderBlock(std::string name_, vtkSmartPointer<vtkPolyData> polyData_)
-    : name(std::move(name_)), polyData(std::move(polyData_))
+      : name(std::move(name_)), polyData(std::move(polyData_))
   {
   }
 
@@ -56,9 +60,10 @@ struct ReaderBlock
 };
 
 // The same for the file's parts (VtkReaders.h, readBlocksWithVtk), in file order, at least one.
-std::vector<ReaderBlock> readBlocksInReaderProcess(const std::string& path, const std::string& ext,
-                                                   uintmax_t fileSize,
-                                                   std::vector<std::string>& warnings);
+std::vector<ReaderBlock>
+readBlocksInReaderProcess(const std::string& path, const std::string& ext, uintmax_t fileSize,
+                          std::vector<std::string>& warnings,
+                          const std::vector<std::string>& readArguments = {});
 
 // Where the reader program is: $ANISO_MESH_READER when set, else beside the running executable,
 // else in ../lib/aniso/ from it (the installed layout), else where this build made it. Throws

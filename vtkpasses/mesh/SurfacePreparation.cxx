@@ -1,6 +1,7 @@
 #include "vtkpasses/mesh/SurfacePreparation.h"
 
 #include "core/error.h"
+#include "vtkpasses/mesh/CadReader.h"
 #include "vtkpasses/mesh/GeometryAccess.h"
 #include "vtkpasses/mesh/MeshValidation.h"
 
@@ -248,6 +249,10 @@ PreparedSurface prepareSurface(vtkPolyData* mesh, const SurfaceOptions& options,
     if (options.brushing)
     {
       model = *options.brushing;
+    }
+    else if (!pd->GetTCoords() && pd->GetArray(kBRepTangentUArray))
+    {
+      model.kind = BrushingKind::FaceU;
     }
     else if (!pd->GetTCoords())
     {

@@ -20,11 +20,12 @@
 //
 // Tangents, by SurfaceOptions::brushing (BrushingModel.h):
 //   unset   the mesh's own tangents when all are valid (built-in meshes carry the analytic
-//           dP/du; glTF TANGENT is defined along +u); else from the UVs; else axis:1,0,0
+//           dP/du; glTF TANGENT is defined along +u); else from the UVs; else face-u on a CAD
+//           part (its faces' dS/du: a turned face brushed round its axis); else axis:1,0,0
 //           (linear brushing along X), the common brushed-metal look.
 //   uv      the mesh's own tangents when all are valid, else computed from the UVs; with
 //           neither, an aniso::Error (the user asked for something the mesh cannot give).
-//   axis, around, radial   always generated from the model.
+//   axis, around, radial, face-u, face-v   always generated from the model.
 // A mesh tangent is invalid when it is not finite or its part orthogonal to the normal is
 // shorter than 1e-3 of it (within 0.06 degrees of the normal); one invalid tangent makes the
 // whole field be regenerated, since a half-kept field would have visible discontinuities.

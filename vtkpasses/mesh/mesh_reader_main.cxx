@@ -1,6 +1,9 @@
-// aniso-mesh-reader PATH EXT FILE_SIZE [blocks]: reads one mesh file (its parts, with "blocks")
-// with VTK's readers for the application (MeshReaderProcess.h), the result on standard output in
-// the records it expects.
+// aniso-mesh-reader PATH EXT FILE_SIZE [blocks] [KEY=VALUE...]: reads one mesh file (its parts,
+// with "blocks") with VTK's readers, or OpenCASCADE's for STEP and IGES (CadReader.h, which takes
+// the KEY=VALUE arguments), for the application (MeshReaderProcess.h), the result on standard
+// output in the records it expects.
+#include "core/error.h"
+#include "vtkpasses/mesh/CadReader.h"
 #include "vtkpasses/mesh/MeshReaderProcess.h"
 #include "vtkpasses/mesh/VtkReaders.h"
 
@@ -9,16 +12,18 @@
 #include <cstring>
 #include <string>
 #include <unistd.h>
+#include <vector>
 
 int main(int argc, char** argv)
 {
-  const bool blocks = argc == 5 && std::strcmp(argv[4], aniso::kReaderBlocksArgument) == 0;
-  if ((argc != 4 && !blocks) || ::isatty(STDOUT_FILENO))
+  const bool blocks = argc >= 5 && std::strcmp(argv[4], aniso::kReaderBlocksArgument) == 0;
+  if (argc < 4 || ::isatty(STDOUT_FILENO))
   {
-    std::fprintf(stderr, "usage: aniso-mesh-reader PATH EXT FILE_SIZE [blocks] (run by aniso, "
-                         "which reads its output)\n");
+    std::fprintf(stderr, "usage: aniso-mesh-reader PATH EXT FILE_SIZE [blocks] [KEY=VALUE...] "
+                         "(run by aniso, which reads its output)\n");
     return 2;
   }
+  const std::vector<std::string> readArguments(argv + (blocks ? 5 : 4), argv + argc);
   // The records go to the pipe that is standard output now; runMeshReader then points standard
   // output at /dev/null, so nothing a reader prints can mix with them.
   const int fd = ::dup(STDOUT_FILENO);
@@ -27,9 +32,30 @@ int main(int argc, char** argv)
     return 3;
   }
   const uintmax_t fileSize = std::strtoull(argv[3], nullptr, 10);
+  const std::string path = argv[1];
+  const std::string ext = argv[2];
+  if (aniso::isCadExtension(ext))
+  {
+    auto options = [&readArguments] { return aniso::parseCadArguments(readArguments); };
+    if (blocks)
+    {
+      return aniso::runMeshReaderBlocks(
+          fd, path, ext, fileSize,
+          [&](const std::string& p, const std::string& e, const aniso::VtkMessageCapture&,
+              std::vector<std::string>& warnings)
+          { return aniso::readCadBlocks(p, e, options(), warnings); });
+    }
+    return aniso::runMeshReader(
+        fd, path, ext, fileSize,
+        [&](const std::string& p, const std::string& e, const aniso::VtkMessageCapture&)
+        {
+          std::vector<std::string> warnings; // a merged surface has no part to tell them of
+          return aniso::readCadSurface(p, e, options(), warnings);
+        });
+  }
   if (blocks)
   {
-    return aniso::runMeshReaderBlocks(fd, argv[1], argv[2], fileSize, aniso::readBlocksWithVtk);
+    return aniso::runMeshReaderBlocks(fd, path, ext, fileSize, aniso::readBlocksWithVtk);
   }
-  return aniso::runMeshReader(fd, argv[1], argv[2], fileSize, aniso::readWithVtk);
+  return aniso::runMeshReader(fd, path, ext, fileSize, aniso::readWithVtk);
 }

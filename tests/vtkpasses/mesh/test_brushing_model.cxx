@@ -7,10 +7,12 @@
 #include "tests/vtkpasses/mesh/mesh_test_helpers.h"
 #include "vtkpasses/mesh/BrushingModel.h"
 #include "vtkpasses/mesh/BuiltinMeshes.h"
+#include "vtkpasses/mesh/CadReader.h"
 
 #include <cmath>
 #include <gtest/gtest.h>
 #include <vtkFloatArray.h>
+#include <vtkNew.h>
 
 namespace aniso
 {
@@ -231,6 +233,46 @@ TEST(BrushingTangents, UvWithoutTextureCoordinatesIsAClearError)
   }
 }
 
+// face-u and face-v take a CAD part's arrays: without them (a mesh of another format), an error
+// naming the part; with them, the array's direction projected into the tangent plane, and the
+// fallback where it is zero (a pole).
+TEST(BrushingTangents, FaceTangentsComeFromTheBRepArrays)
+{
+  vtkSmartPointer<vtkPolyData> plate = makePlate(2);
+  try
+  {
+    computeBrushingTangents(plate, model("face-v"), "part.stl");
+    FAIL() << "face-v needs the B-rep arrays";
+  }
+  catch (const Error& e)
+  {
+    EXPECT_EQ(std::string(e.what()),
+              "part.stl: tangents 'face-v' need the faces of a CAD part (a STEP or IGES file), "
+              "and this mesh has none");
+  }
+  vtkNew<vtkFloatArray> u;
+  u->SetName(kBRepTangentUArray);
+  u->SetNumberOfComponents(3);
+  u->SetNumberOfTuples(plate->GetNumberOfPoints());
+  for (vtkIdType i = 0; i < plate->GetNumberOfPoints(); ++i)
+  {
+    // Tilted out of the plate's plane (its normal is +Z): the projection keeps (0.6, 0.8, 0).
+    u->SetTuple3(i, 0.3, 0.4, i == 0 ? 0.0 : 2.0);
+  }
+  u->SetTuple3(1, 0.0, 0.0, 0.0); // a pole
+  plate->GetPointData()->AddArray(u);
+  const TangentStats stats = computeBrushingTangents(plate, model("face-u"), "plate");
+  EXPECT_EQ(stats.fallbackPoints, 1);
+  vtkDataArray* t = plate->GetPointData()->GetTangents();
+  for (vtkIdType i = 0; i < plate->GetNumberOfPoints(); ++i)
+  {
+    if (i != 1)
+    {
+      EXPECT_NEAR(glm::length(test::vec3(t, i) - glm::dvec3(0.6, 0.8, 0.0)), 0.0, 1e-6) << i;
+    }
+  }
+}
+
 TEST(BrushingModelParsing, AcceptsEverySpellingAndRoundTrips)
 {
   EXPECT_EQ(model("uv").kind, BrushingKind::Uv);
@@ -248,7 +290,9 @@ TEST(BrushingModelParsing, AcceptsEverySpellingAndRoundTrips)
   EXPECT_EQ(radial.vector, glm::dvec3(1e-3, -2, 7)); // a point: not normalised
   // Axes whose normalisation is inexact too ("around:1,0,1@0.5,0,0" did not read back to the
   // same model, one ulp off, before unit axes were kept as they are: a fuzzing finding).
-  for (const char* text : {"uv", "axis:0.6,0,0.8", "around:0,0,1@1,-2,3.5", "radial:1,2,3",
+  EXPECT_EQ(model("face-u").kind, BrushingKind::FaceU);
+  EXPECT_EQ(model("face-v").kind, BrushingKind::FaceV);
+  for (const char* text : {"uv", "face-u", "face-v", "axis:0.6,0,0.8", "around:0,0,1@1,-2,3.5", "radial:1,2,3",
                            "around:1,0,1@0.5,0,0", "axis:1,2,3", "axis:0.3,-0.4,0.5",
                            "around:7,1e-3,-2", "axis:1e-300,1e-300,1e-300"})
   {
@@ -264,9 +308,9 @@ TEST(BrushingModelParsing, RejectsMalformedSpellingsWithTheArgumentName)
 {
   const std::pair<const char*, const char*> cases[] = {
       {"", "--tangents: empty brushing model (expected "
-           "uv|axis:X,Y,Z|around:X,Y,Z[@CX,CY,CZ]|radial:X,Y,Z)"},
+           "uv|axis:X,Y,Z|around:X,Y,Z[@CX,CY,CZ]|radial:X,Y,Z|face-u|face-v)"},
       {"spiral:0,0,1", "--tangents: unknown brushing model 'spiral' (expected "
-                       "uv|axis:X,Y,Z|around:X,Y,Z[@CX,CY,CZ]|radial:X,Y,Z)"},
+                       "uv|axis:X,Y,Z|around:X,Y,Z[@CX,CY,CZ]|radial:X,Y,Z|face-u|face-v)"},
       {"axis", "--tangents: 'axis' needs X,Y,Z, as in axis:0,0,1"},
       {"axis:1,2", "--tangents: 'axis:1,2': the axis needs three comma-separated numbers X,Y,Z"},
       {"axis:1,2,3,", "--tangents: 'axis:1,2,3,': the axis needs three comma-separated numbers "
@@ -277,6 +321,7 @@ TEST(BrushingModelParsing, RejectsMalformedSpellingsWithTheArgumentName)
       {"around:0,0,1@1,2", "--tangents: 'around:0,0,1@1,2': the centre needs three "
                            "comma-separated numbers X,Y,Z"},
       {"uv:1,0,0", "--tangents: 'uv:1,0,0': uv takes no parameters"},
+      {"face-u:1", "--tangents: 'face-u:1': face-u takes no parameters"},
       {"radial:", "--tangents: 'radial:': the point needs three comma-separated numbers X,Y,Z"},
   };
   for (const auto& [text, expected] : cases)
