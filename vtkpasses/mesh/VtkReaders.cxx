@@ -1,6 +1,9 @@
 #include "vtkpasses/mesh/VtkReaders.h"
 
 #include "core/error.h"
+#include "core/formats/mtl.h"
+#include "core/formats/mtl_material.h"
+#include "core/parameters/material_library.h"
 #include "vtkpasses/mesh/GeometryAccess.h"
 
 #include <algorithm>
@@ -13,8 +16,11 @@
 #include <filesystem>
 #include <fstream>
 #include <limits>
+#include <map>
 #include <memory>
 #include <optional>
+#include <set>
+#include <sstream>
 #include <system_error>
 #include <unistd.h>
 #include <vector>
@@ -266,13 +272,19 @@ vtkSmartPointer<vtkPolyData> readObj(const std::string& path, const VtkMessageCa
 }
 
 // Where each g/o statement's block begins and which block each f, l and p statement belongs to.
+// A block is the cells of one g/o statement that use one material (usemtl), so a group whose
+// faces use several materials is several blocks.
 struct ObjStatements
 {
-  std::vector<std::string> names;   // one per block: its g/o statement's words ("" before any)
-  std::vector<int> points;          // the block of each p statement, in file order
-  std::vector<int> lines;           // l
-  std::vector<int> faces;           // f
-  std::vector<char> faceHasNormals; // its first vertex gives a normal index (v//vn, v/vt/vn)
+  std::vector<std::string> names;     // one per block: its g/o statement's words ("" before any)
+  std::vector<std::string> materials; // one per block: the usemtl name its cells use ("" none)
+  std::vector<int> groups;            // one per block: its g/o statement's ordinal (0 before any)
+  std::vector<int> materialLines;     // one per block: the line of its usemtl (0 none)
+  std::vector<int> points;            // the block of each p statement, in file order
+  std::vector<int> lines;             // l
+  std::vector<int> faces;             // f
+  std::vector<char> faceHasNormals;   // its first vertex gives a normal index (v//vn, v/vt/vn)
+  std::vector<std::pair<std::string, int>> libraries; // mtllib words and line, in file order
 };
 
 // The statements as vtkOBJReader tells them apart: the first word of a line after white space.
@@ -282,10 +294,16 @@ ObjStatements scanObjStatements(const std::string& path)
   std::ifstream in(path, std::ios::binary);
   std::string line;
   std::string pendingName;
+  int group = 0;
+  std::string material;
+  int materialLine = 0;
+  int lineNumber = 0;
+  std::map<std::pair<int, std::string>, int> blockOf; // (group, material) -> block
   int current = -1; // the block the next cell goes to; -1 until one comes
   auto isSpace = [](char c) { return std::isspace(static_cast<unsigned char>(c)) != 0; };
   while (std::getline(in, line))
   {
+    ++lineNumber;
     size_t start = 0;
     while (start < line.size() && isSpace(line[start]))
     {
@@ -297,7 +315,7 @@ ObjStatements scanObjStatements(const std::string& path)
       ++end;
     }
     const std::string command = line.substr(start, end - start);
-    if (command == "g" || command == "o")
+    auto rest = [&]
     {
       size_t first = end;
       while (first < line.size() && isSpace(line[first]))
@@ -309,8 +327,25 @@ ObjStatements scanObjStatements(const std::string& path)
       {
         --last;
       }
-      pendingName = line.substr(first, last - first);
+      return line.substr(first, last - first);
+    };
+    if (command == "g" || command == "o")
+    {
+      pendingName = rest();
+      ++group;
       current = -1;
+      continue;
+    }
+    if (command == "usemtl")
+    {
+      material = rest().substr(0, kMaxMtlNameLength);
+      materialLine = lineNumber;
+      current = -1;
+      continue;
+    }
+    if (command == "mtllib")
+    {
+      statements.libraries.emplace_back(rest(), lineNumber);
       continue;
     }
     std::vector<int>* cells = command == "f"   ? &statements.faces
@@ -323,8 +358,21 @@ ObjStatements scanObjStatements(const std::string& path)
     }
     if (current < 0)
     {
-      statements.names.push_back(pendingName);
-      current = static_cast<int>(statements.names.size()) - 1;
+      const auto key = std::make_pair(group, material);
+      const auto found = blockOf.find(key);
+      if (found != blockOf.end())
+      {
+        current = found->second;
+      }
+      else
+      {
+        statements.names.push_back(pendingName);
+        statements.materials.push_back(material);
+        statements.groups.push_back(group);
+        statements.materialLines.push_back(materialLine);
+        current = static_cast<int>(statements.names.size()) - 1;
+        blockOf.emplace(key, current);
+      }
     }
     cells->push_back(current);
     if (cells == &statements.faces)
@@ -469,15 +517,155 @@ std::vector<vtkSmartPointer<vtkPolyData>> splitIntoBlocks(vtkPolyData* input, si
   return result;
 }
 
+// The materials an OBJ's mtllib statements name, read in the reader program: each library
+// relative to the .obj's directory, the first definition of a name winning. A library that
+// cannot be read is one warning naming it; its materials are then unknown.
+class ObjMaterials
+{
+public:
+  ObjMaterials(const std::string& objPath, const ObjStatements& statements,
+               std::vector<std::string>& warnings)
+    : objPath_(objPath), warnings_(warnings)
+  {
+    const std::filesystem::path directory = std::filesystem::path(objPath).parent_path();
+    std::set<std::string> seen;
+    for (const auto& [words, line] : statements.libraries)
+    {
+      for (const std::string& name : libraryNames(directory, words))
+      {
+        const std::string file = (directory / name).lexically_normal().string();
+        if (!seen.insert(file).second)
+        {
+          continue;
+        }
+        try
+        {
+          libraries_.push_back({file, readMtlFile(file)});
+          const MtlLibrary& library = libraries_.back().second;
+          warnings_.insert(warnings_.end(), library.warnings.begin(), library.warnings.end());
+        }
+        catch (const Error& e)
+        {
+          warnings_.push_back(objPath_ + ":" + std::to_string(line) + ": mtllib " + name + ": " +
+                              e.what() + " (the parts load without its materials)");
+        }
+      }
+    }
+  }
+
+  // The material library document of the material NAME (usemtl's words at LINE), empty when
+  // NAME is empty or none of the libraries defines it (a warning, once per name).
+  std::string documentOf(const std::string& name, int line)
+  {
+    if (name.empty())
+    {
+      return {};
+    }
+    const auto known = documents_.find(name);
+    if (known != documents_.end())
+    {
+      return known->second;
+    }
+    std::string& document = documents_[name];
+    for (const auto& [file, library] : libraries_)
+    {
+      if (const MtlMaterial* mtl = library.find(name))
+      {
+        try
+        {
+          MaterialLibrary one;
+          one.put(materialFromMtl(*mtl, file, warnings_));
+          document = materialLibraryToJson(one);
+        }
+        catch (const Error& e)
+        {
+          warnings_.push_back(std::string(e.what()) + " (the parts load without it)");
+        }
+        return document;
+      }
+    }
+    warnings_.push_back(objPath_ + ":" + std::to_string(line) + ": usemtl " + name +
+                        ": no such material in " +
+                        (libraries_.empty() ? std::string("any mtllib read")
+                                            : "its material libraries") +
+                        " (its faces load without it)");
+    return document;
+  }
+
+private:
+  // mtllib names one or more files, separated by blanks; a name with blanks in it is read as a
+  // whole when a file of that name exists.
+  static std::vector<std::string> libraryNames(const std::filesystem::path& directory,
+                                               const std::string& words)
+  {
+    std::error_code ec;
+    if (words.empty() || std::filesystem::is_regular_file(directory / words, ec))
+    {
+      return words.empty() ? std::vector<std::string>{} : std::vector<std::string>{words};
+    }
+    std::vector<std::string> names;
+    std::istringstream split(words);
+    for (std::string name; split >> name;)
+    {
+      names.push_back(name);
+    }
+    return names;
+  }
+
+  const std::string& objPath_;
+  std::vector<std::string>& warnings_;
+  std::vector<std::pair<std::string, MtlLibrary>> libraries_;
+  std::map<std::string, std::string> documents_;
+};
+
+// The blocks' names: a g/o group whose cells use several materials is one part per material,
+// named "GROUP/MATERIAL" (the material alone outside any named group; the group alone for its
+// cells before any usemtl).
+std::vector<std::string> objBlockNames(const ObjStatements& statements)
+{
+  std::map<int, std::set<std::string>> materialsOfGroup;
+  for (size_t b = 0; b < statements.names.size(); ++b)
+  {
+    materialsOfGroup[statements.groups[b]].insert(statements.materials[b]);
+  }
+  std::vector<std::string> names;
+  for (size_t b = 0; b < statements.names.size(); ++b)
+  {
+    const std::string& group = statements.names[b];
+    const std::string& material = statements.materials[b];
+    if (materialsOfGroup[statements.groups[b]].size() <= 1 || material.empty())
+    {
+      names.push_back(group);
+    }
+    else
+    {
+      names.push_back(group.empty() ? material : group + "/" + material);
+    }
+  }
+  return names;
+}
+
 std::vector<ReaderBlock> readObjBlocks(const std::string& path, const VtkMessageCapture& capture,
                                        std::vector<std::string>& warnings)
 {
   vtkSmartPointer<vtkPolyData> whole = readObj(path, capture);
   dropMalformedArrays(whole, std::string(), warnings);
   const ObjStatements statements = scanObjStatements(path);
+  ObjMaterials materials(path, statements, warnings);
+  // The file as one part: its material when all its cells use one.
+  auto onePart = [&](const std::string& name)
+  {
+    ReaderBlock block(name, whole);
+    const std::set<std::string> used(statements.materials.begin(), statements.materials.end());
+    if (used.size() == 1)
+    {
+      block.material = materials.documentOf(*used.begin(), statements.materialLines.front());
+    }
+    return std::vector<ReaderBlock>{block};
+  };
   if (statements.names.size() <= 1)
   {
-    return {{statements.names.empty() ? std::string() : statements.names.front(), whole}};
+    return onePart(statements.names.empty() ? std::string() : statements.names.front());
   }
   // vtkOBJReader's cells against the statements: every p and l statement is one vertex or line
   // cell, except where it duplicates vertices (then it keeps none); every f statement is one
@@ -504,17 +692,20 @@ std::vector<ReaderBlock> readObjBlocks(const std::string& path, const VtkMessage
   {
     warnings.push_back("its groups could not be matched to the faces the OBJ reader kept: read "
                        "as one part");
-    return {{std::string(), whole}};
+    return onePart(std::string());
   }
   const std::vector<int> none;
   std::vector<vtkSmartPointer<vtkPolyData>> pieces =
       splitIntoBlocks(whole, statements.names.size(), verts ? statements.points : none,
                       lines ? statements.lines : none, faces);
+  const std::vector<std::string> names = objBlockNames(statements);
   // A block whose cells the reader dropped stays, without cells, for the loader to report.
   std::vector<ReaderBlock> blocks;
   for (size_t b = 0; b < pieces.size(); ++b)
   {
-    blocks.push_back({statements.names[b], pieces[b]});
+    blocks.push_back({names[b], pieces[b]});
+    blocks.back().material =
+        materials.documentOf(statements.materials[b], statements.materialLines[b]);
   }
   return blocks;
 }
