@@ -15,12 +15,16 @@ namespace aniso
 {
 namespace
 {
-bool isBlank(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f'; }
+bool isBlank(char c)
+{
+  return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f';
+}
 
 std::string lower(std::string_view s)
 {
   std::string out(s);
-  std::transform(out.begin(), out.end(), out.begin(), [](char c)
+  std::transform(out.begin(), out.end(), out.begin(),
+                 [](char c)
                  { return c >= 'A' && c <= 'Z' ? static_cast<char>(c - 'A' + 'a') : c; });
   return out;
 }
@@ -116,8 +120,7 @@ double scalarOf(const Words& w, const std::string& key, double low, double high)
 {
   if (w.words.size() != 2)
   {
-    throw Malformed{key + ": one value expected, " + std::to_string(w.words.size() - 1) +
-                    " given"};
+    throw Malformed{key + ": one value expected, " + std::to_string(w.words.size() - 1) + " given"};
   }
   return numberIn(w.words[1], key, low, high);
 }
@@ -240,9 +243,9 @@ MtlTexture textureOf(const Words& w, const std::string& key, int line)
 // this project has no use for are passed over.
 bool isPassedOver(const std::string& key)
 {
-  static const char* const kUnused[] = {"ka",    "ke",     "ni",     "illum",  "tf",    "map_ka",
-                                        "map_ke", "map_d", "disp",   "decal",  "refl",  "pc",
-                                        "pcr",   "map_ps", "sharpness", "map_aat", "tr_map"};
+  static const char* const kUnused[] = {
+      "ka",    "ke",   "ni", "illum", "tf",     "map_ka",    "map_ke",  "map_d", "disp",
+      "decal", "refl", "pc", "pcr",   "map_ps", "sharpness", "map_aat", "tr_map"};
   return std::find(std::begin(kUnused), std::end(kUnused), key) != std::end(kUnused);
 }
 
@@ -374,9 +377,8 @@ public:
   {
     if (warnings_ > library_.warnings.size())
     {
-      library_.warnings.push_back(path_ + ": " +
-                                  std::to_string(warnings_ - library_.warnings.size()) +
-                                  " more warnings");
+      library_.warnings.push_back(
+          path_ + ": " + std::to_string(warnings_ - library_.warnings.size()) + " more warnings");
     }
     return std::move(library_);
   }
@@ -488,7 +490,7 @@ MtlLibrary readMtlFile(const std::string& path)
   if (!std::filesystem::is_regular_file(path, ec))
   {
     throw errorAbout(path, ec || !std::filesystem::exists(path, ec) ? "no such file"
-                                                                     : "not a regular file");
+                                                                    : "not a regular file");
   }
   std::ifstream in(path, std::ios::binary);
   if (!in)

@@ -47,8 +47,8 @@ struct MtlMaterial
   std::string name;
   int line = 0; // its newmtl
   std::optional<MtlColor> kd, ks;
-  std::optional<double> ns;      // specular exponent, >= 0
-  std::optional<double> opacity; // d, or 1 - Tr; in [0, 1]
+  std::optional<double> ns;                // specular exponent, >= 0
+  std::optional<double> opacity;           // d, or 1 - Tr; in [0, 1]
   std::optional<double> pr, pm, ps, aniso; // in [0, 1]
   std::optional<double> anisor;            // any finite value
   int anisorLine = 0;

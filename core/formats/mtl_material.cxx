@@ -15,11 +15,20 @@ namespace fs = std::filesystem;
 constexpr double kDielectricF0 = 0.04;
 constexpr double kDefaultDiffuse = 0.8;
 
-double unit(double x) { return std::isfinite(x) ? std::clamp(x, 0.0, 1.0) : 0.0; }
+double unit(double x)
+{
+  return std::isfinite(x) ? std::clamp(x, 0.0, 1.0) : 0.0;
+}
 
-std::array<double, 3> unitColor(const MtlColor& c) { return {unit(c[0]), unit(c[1]), unit(c[2])}; }
+std::array<double, 3> unitColor(const MtlColor& c)
+{
+  return {unit(c[0]), unit(c[1]), unit(c[2])};
+}
 
-double mix(double a, double b, double t) { return a + (b - a) * t; }
+double mix(double a, double b, double t)
+{
+  return a + (b - a) * t;
+}
 
 double exponentInRange(double n)
 {
@@ -38,8 +47,7 @@ std::optional<std::string> textureFile(const MtlTexture& texture, const std::str
                                        std::vector<std::string>& warnings)
 {
   const fs::path written(texture.file);
-  const fs::path file =
-      written.is_absolute() ? written : fs::path(mtlPath).parent_path() / written;
+  const fs::path file = written.is_absolute() ? written : fs::path(mtlPath).parent_path() / written;
   std::error_code ec;
   if (!fs::is_regular_file(file, ec))
   {
@@ -114,8 +122,8 @@ Material materialFromMtl(const MtlMaterial& mtl, const std::string& mtlPath,
     const double roughness = mtl.pr   ? *mtl.pr
                              : mtl.ns ? std::sqrt(std::sqrt(2.0 / (std::max(*mtl.ns, 0.0) + 2.0)))
                                       : 1.0;
-    const AshikhminShirleyLobe lobe = ashikhminShirleyOfMetallicRoughness(
-        kd, metallic, roughness, mtl.aniso ? *mtl.aniso : 0.0);
+    const AshikhminShirleyLobe lobe =
+        ashikhminShirleyOfMetallicRoughness(kd, metallic, roughness, mtl.aniso ? *mtl.aniso : 0.0);
     set("nu", numberValue(lobe.nu));
     set("nv", numberValue(lobe.nv));
     setColor("f0", lobe.f0);
@@ -167,9 +175,8 @@ Material materialFromMtl(const MtlMaterial& mtl, const std::string& mtlPath,
     {
       set("height-map", textValue(*file));
       const ParameterSpec& scale = parameterSpec("height-scale");
-      set("height-scale",
-          numberValue(std::clamp(scale.defaultValue[0] * mtl.bump->bumpMultiplier, scale.minimum,
-                                 scale.maximum)));
+      set("height-scale", numberValue(std::clamp(scale.defaultValue[0] * mtl.bump->bumpMultiplier,
+                                                 scale.minimum, scale.maximum)));
     }
   }
   warnUnused(mtl.mapKs, "map_Ks", mtlPath, warnings);
@@ -180,8 +187,7 @@ Material materialFromMtl(const MtlMaterial& mtl, const std::string& mtlPath,
     if (*texture && (*texture)->transformed)
     {
       warnings.push_back(mtlPath + ":" + std::to_string((*texture)->line) + ": " +
-                         (*texture)->file +
-                         ": its -o/-s/-t texture transform is not applied");
+                         (*texture)->file + ": its -o/-s/-t texture transform is not applied");
     }
   }
   return material;

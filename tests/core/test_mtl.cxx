@@ -30,32 +30,31 @@ TEST(Mtl, ReadsTheClassicAndPbrStatementsOfEachMaterial)
   // Checks: every statement read into its field, keywords without case, comments, CRLF, a grey
   // Kd of one value, Tr as 1 - d, texture options before a file name with a space and
   // backslashes.
-  const MtlLibrary library =
-      parseMtl("# a comment\r\n"
-               "newmtl red plastic\r\n"
-               "  Kd 0.8 0.1 0.05   # trailing comment\r\n"
-               "Ks 0.5 0.5 0.5\r\n"
-               "Ns 96.5\r\n"
-               "Tr 0.25\r\n"
-               "illum 2\r\n"
-               "Ka 0 0 0\r\n"
-               "map_Kd -s 2 2 1 -bm 0.5 tex\\red paint.png\r\n"
-               "MAP_BUMP -bm 2.5 height.png\r\n"
-               "\n"
-               "newmtl brushed\n"
-               "kd 0.3\n"
-               "Pr 0.4\n"
-               "Pm 1\n"
-               "Ps 0.2\n"
-               "aniso 0.7\n"
-               "anisor 0.125\n"
-               "d -halo 0.5\n"
-               "norm -clamp on -imfchan r normal.png\n"
-               "map_Pm metal.png\n"
-               "map_Pr rough.png\n"
-               "map_Ks spec.png\n"
-               "map_Ns shine.png\n",
-               "lib.mtl");
+  const MtlLibrary library = parseMtl("# a comment\r\n"
+                                      "newmtl red plastic\r\n"
+                                      "  Kd 0.8 0.1 0.05   # trailing comment\r\n"
+                                      "Ks 0.5 0.5 0.5\r\n"
+                                      "Ns 96.5\r\n"
+                                      "Tr 0.25\r\n"
+                                      "illum 2\r\n"
+                                      "Ka 0 0 0\r\n"
+                                      "map_Kd -s 2 2 1 -bm 0.5 tex\\red paint.png\r\n"
+                                      "MAP_BUMP -bm 2.5 height.png\r\n"
+                                      "\n"
+                                      "newmtl brushed\n"
+                                      "kd 0.3\n"
+                                      "Pr 0.4\n"
+                                      "Pm 1\n"
+                                      "Ps 0.2\n"
+                                      "aniso 0.7\n"
+                                      "anisor 0.125\n"
+                                      "d -halo 0.5\n"
+                                      "norm -clamp on -imfchan r normal.png\n"
+                                      "map_Pm metal.png\n"
+                                      "map_Pr rough.png\n"
+                                      "map_Ks spec.png\n"
+                                      "map_Ns shine.png\n",
+                                      "lib.mtl");
   EXPECT_TRUE(library.warnings.empty()) << library.warnings.front();
   ASSERT_EQ(library.materials.size(), 2u);
   const MtlMaterial& red = library.materials[0];
@@ -99,29 +98,29 @@ TEST(Mtl, EachMalformedLineIsAWarningNamingFileAndLineAndIsSkipped)
 {
   // Checks: a line of each kind of fault warns "PATH:LINE:" and leaves the value before it; the
   // good lines around still count.
-  const std::string text = "Kd 1 1 1\n"                   // 1: before any newmtl
-                           "newmtl m\n"                   // 2
-                           "Kd 0.2 0.3 0.4\n"             // 3
-                           "Kd 1 2\n"                     // 4: two values
-                           "Ks nan 0 0\n"                 // 5: not finite
-                           "Ns -3\n"                      // 6: negative
-                           "Ns 1e999\n"                   // 7: overflow
-                           "d 1.5\n"                      // 8: out of [0, 1]
-                           "Pr 0.5 0.6\n"                 // 9: too many
-                           "Kd spectral green.rfl\n"      // 10: unsupported form
-                           "frobnicate 3\n"               // 11: unknown statement
-                           "map_Kd -bm\n"                 // 12: option without value
-                           "map_Kd -zoom 3 a.png\n"       // 13: unknown option
-                           "map_Kd -clamp on\n"           // 14: no file name
-                           "map_Kd -o x a.png\n"          // 15: -o without a number
-                           "Ns 12\n"                      // 16: fine
-                           "newmtl\n"                     // 17: no name
-                           "Kd 0 0 0\n"                   // 18: skipped silently
-                           "newmtl m\n"                   // 19: repeated
-                           "Kd 0 0 0\n"                   // 20: skipped silently
-                           "newmtl n\n"                   // 21
-                           "Ks 0x1p-2 0 0\n"              // 22: not a decimal number
-                           "Ks +0.5 .25 1e-1\n"           // 23: fine
+  const std::string text = "Kd 1 1 1\n"                    // 1: before any newmtl
+                           "newmtl m\n"                    // 2
+                           "Kd 0.2 0.3 0.4\n"              // 3
+                           "Kd 1 2\n"                      // 4: two values
+                           "Ks nan 0 0\n"                  // 5: not finite
+                           "Ns -3\n"                       // 6: negative
+                           "Ns 1e999\n"                    // 7: overflow
+                           "d 1.5\n"                       // 8: out of [0, 1]
+                           "Pr 0.5 0.6\n"                  // 9: too many
+                           "Kd spectral green.rfl\n"       // 10: unsupported form
+                           "frobnicate 3\n"                // 11: unknown statement
+                           "map_Kd -bm\n"                  // 12: option without value
+                           "map_Kd -zoom 3 a.png\n"        // 13: unknown option
+                           "map_Kd -clamp on\n"            // 14: no file name
+                           "map_Kd -o x a.png\n"           // 15: -o without a number
+                           "Ns 12\n"                       // 16: fine
+                           "newmtl\n"                      // 17: no name
+                           "Kd 0 0 0\n"                    // 18: skipped silently
+                           "newmtl m\n"                    // 19: repeated
+                           "Kd 0 0 0\n"                    // 20: skipped silently
+                           "newmtl n\n"                    // 21
+                           "Ks 0x1p-2 0 0\n"               // 22: not a decimal number
+                           "Ks +0.5 .25 1e-1\n"            // 23: fine
                            + std::string(5000, 'x') + "\n" // 24: too long
                            + std::string("Ns 1\0 2\n", 8); // 25: NUL
   const MtlLibrary library = parseMtl(text, "dir/bad.mtl");

@@ -64,8 +64,7 @@ TEST(MtlMaterial, MetallicRoughnessFollowsKhrMaterialsAnisotropy)
 {
   // Checks: alpha = r^2, alpha_t = mix(alpha, 1, s^2) along t, alpha_b = alpha, n = 2/alpha^2-2;
   // F0 = mix(0.04, base, m), albedo = base (1 - m), for a PBR material read from a .mtl.
-  const MtlMaterial mtl =
-      onlyMaterial("newmtl pbr\nKd 0.8 0.4 0.2\nPr 0.5\nPm 0.25\naniso 0.6\n");
+  const MtlMaterial mtl = onlyMaterial("newmtl pbr\nKd 0.8 0.4 0.2\nPr 0.5\nPm 0.25\naniso 0.6\n");
   std::vector<std::string> warnings;
   const Material m = materialFromMtl(mtl, "m.mtl", warnings);
   EXPECT_TRUE(warnings.empty());
@@ -80,8 +79,8 @@ TEST(MtlMaterial, MetallicRoughnessFollowsKhrMaterialsAnisotropy)
   EXPECT_NO_THROW(library.put(m)) << "every value within its declared range";
 
   // The function itself: a full metal without anisotropy is isotropic with F0 the base.
-  const AshikhminShirleyLobe metal = ashikhminShirleyOfMetallicRoughness({0.9, 0.6, 0.3}, 1.0,
-                                                                         std::sqrt(0.1), 0.0);
+  const AshikhminShirleyLobe metal =
+      ashikhminShirleyOfMetallicRoughness({0.9, 0.6, 0.3}, 1.0, std::sqrt(0.1), 0.0);
   EXPECT_NEAR(metal.nu, 198.0, 1e-9);
   EXPECT_NEAR(metal.nv, 198.0, 1e-9);
   EXPECT_NEAR(metal.f0[1], 0.6, 1e-12);
@@ -133,17 +132,17 @@ TEST(MtlMaterial, TexturesResolveAgainstTheMtlDirectoryAndMissingOnesWarn)
     std::ofstream(dir / name) << "not read here";
   }
   const std::string mtlPath = (dir / "lib.mtl").string();
-  const MtlMaterial mtl = onlyMaterial("newmtl textured\n"    // 1
-                                       "Kd 0.5 0.5 0.5\n"     // 2
-                                       "Pm 0.5\n"             // 3
-                                       "Pr 1\n"               // 4
-                                       "anisor 0.25\n"        // 5
-                                       "map_Kd tex/albedo.png\n" // 6
-                                       "norm n.png\n"         // 7
-                                       "bump -bm 2 h.png\n"   // 8
-                                       "map_Pm metal.png\n"   // 9
+  const MtlMaterial mtl = onlyMaterial("newmtl textured\n"        // 1
+                                       "Kd 0.5 0.5 0.5\n"         // 2
+                                       "Pm 0.5\n"                 // 3
+                                       "Pr 1\n"                   // 4
+                                       "anisor 0.25\n"            // 5
+                                       "map_Kd tex/albedo.png\n"  // 6
+                                       "norm n.png\n"             // 7
+                                       "bump -bm 2 h.png\n"       // 8
+                                       "map_Pm metal.png\n"       // 9
                                        "map_Ks -s 2 2 gone.png\n" // 10
-                                       "map_Pr rough.png\n",  // 11
+                                       "map_Pr rough.png\n",      // 11
                                        mtlPath);
   std::vector<std::string> warnings;
   Material m = materialFromMtl(mtl, mtlPath, warnings);

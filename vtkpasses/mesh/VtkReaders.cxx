@@ -525,7 +525,7 @@ class ObjMaterials
 public:
   ObjMaterials(const std::string& objPath, const ObjStatements& statements,
                std::vector<std::string>& warnings)
-    : objPath_(objPath), warnings_(warnings)
+      : objPath_(objPath), warnings_(warnings)
   {
     const std::filesystem::path directory = std::filesystem::path(objPath).parent_path();
     std::set<std::string> seen;
@@ -584,11 +584,10 @@ public:
         return document;
       }
     }
-    warnings_.push_back(objPath_ + ":" + std::to_string(line) + ": usemtl " + name +
-                        ": no such material in " +
-                        (libraries_.empty() ? std::string("any mtllib read")
-                                            : "its material libraries") +
-                        " (its faces load without it)");
+    warnings_.push_back(
+        objPath_ + ":" + std::to_string(line) + ": usemtl " + name + ": no such material in " +
+        (libraries_.empty() ? std::string("any mtllib read") : "its material libraries") +
+        " (its faces load without it)");
     return document;
   }
 
