@@ -385,5 +385,79 @@ TEST_F(ObjMaterialsTest, ATruncatedObjWithMaterialsLoadsAsWithoutThem)
     EXPECT_EQ(outcome(withMaterials), outcome(without));
   }
 }
+// Debian's assimp-testmodels (scripts/setup.sh installs it): OBJ files and libraries written by
+// other programs (3ds Max's exporter among them). Their .mtl values, read off the files, are the
+// reference.
+const fs::path kAssimpObj = "/usr/share/assimp/models/OBJ";
+
+TEST_F(ObjMaterialsTest, AssimpsCubeSwitchingMaterialsPerFaceIsSplitByMaterial)
+{
+  // Checks: cube_usemtl.obj, one group "cube" whose faces switch between mtl3 (defined in no
+  // library), mtl and mtl2, gives parts cube/mtl3 (2 faces, no material, a warning naming it),
+  // cube/mtl (6 faces: Ns 200, Ks 0.05, Kd 1) and cube/mtl2 (4 faces: Ns 16, Ks 0.375, Kd 1).
+  const std::string obj = (kAssimpObj / "cube_usemtl.obj").string();
+  ASSERT_TRUE(fs::exists(obj)) << "install assimp-testmodels (scripts/setup.sh)";
+  const LoadedBlocks loaded = loadMeshBlocks(obj);
+  ASSERT_EQ(namesOf(loaded), (std::vector<std::string>{"cube/mtl3", "cube/mtl", "cube/mtl2"}));
+  EXPECT_FALSE(loaded.blocks[0].material);
+  EXPECT_TRUE(warned(loaded.blocks[0], obj + ":21: usemtl mtl3: no such material"));
+  const std::array<std::pair<double, double>, 2> nsKs = {{{200.0, 0.05}, {16.0, 0.375}}};
+  const std::array<vtkIdType, 3> faces = {2, 6, 4};
+  for (size_t b = 0; b < 3; ++b)
+  {
+    EXPECT_EQ(loaded.blocks[b].mesh.polyData->GetNumberOfPolys(), faces[b]) << b;
+  }
+  for (size_t b = 1; b < 3; ++b)
+  {
+    ASSERT_TRUE(loaded.blocks[b].material);
+    const Material& m = *loaded.blocks[b].material;
+    EXPECT_DOUBLE_EQ(m.value("nu").number[0], nsKs[b - 1].first);
+    EXPECT_DOUBLE_EQ(m.value("nv").number[0], nsKs[b - 1].first);
+    expectColor(m, "f0", {nsKs[b - 1].second, nsKs[b - 1].second, nsKs[b - 1].second}, 1e-12);
+    expectColor(m, "albedo", {1, 1, 1}, 0.0);
+  }
+}
+
+TEST_F(ObjMaterialsTest, AssimpsSpiderPartsCarryTheirTexturedMaterials)
+{
+  // Checks: spider.obj's 19 groups are 19 parts, each of its usemtl material; group "OK" uses
+  // Skin (Kd 0.827451 0.792157 0.772549, Ks 0, Ns 0, map_Kd .\wal67ar_small.jpg, a Windows
+  // path beside the .mtl that exists); the legs share BeinTex.
+  const std::string obj = (kAssimpObj / "spider.obj").string();
+  ASSERT_TRUE(fs::exists(obj)) << "install assimp-testmodels (scripts/setup.sh)";
+  const LoadedBlocks loaded = loadMeshBlocks(obj);
+  ASSERT_EQ(loaded.blocks.size(), 19u);
+  for (const MeshBlock& block : loaded.blocks)
+  {
+    EXPECT_TRUE(block.material) << block.name;
+  }
+  const MeshBlock& head = blockNamed(loaded, "OK");
+  ASSERT_TRUE(head.material);
+  const Material& skin = *head.material;
+  EXPECT_EQ(skin.name, "Skin");
+  expectColor(skin, "albedo", {0.827451, 0.792157, 0.772549}, 0.0);
+  expectColor(skin, "f0", {0, 0, 0}, 0.0);
+  EXPECT_DOUBLE_EQ(skin.value("nu").number[0], 0.0);
+  EXPECT_EQ(fs::path(skin.value("albedo-map").text), kAssimpObj / "wal67ar_small.jpg");
+  ASSERT_TRUE(blockNamed(loaded, "Bein1Li").material);
+  EXPECT_EQ(blockNamed(loaded, "Bein1Li").material->name, "BeinTex");
+  EXPECT_EQ(*blockNamed(loaded, "Bein1Li").material, *blockNamed(loaded, "Bein4Li").material);
+}
+
+TEST_F(ObjMaterialsTest, AssimpsMaterialNamesWithSpacesAreMatched)
+{
+  // Checks: space_in_material_name.obj's "usemtl  Hard Shiny Plastic White " (blanks around)
+  // finds the .mtl's "newmtl Hard Shiny Plastic White" (Kd 0.141176 0.184314 0.411765, Ns 400,
+  // Ks 0).
+  const std::string obj = (kAssimpObj / "space_in_material_name.obj").string();
+  ASSERT_TRUE(fs::exists(obj)) << "install assimp-testmodels (scripts/setup.sh)";
+  const LoadedBlocks loaded = loadMeshBlocks(obj);
+  ASSERT_EQ(loaded.blocks.size(), 1u);
+  ASSERT_TRUE(loaded.blocks[0].material);
+  const Material& m = *loaded.blocks[0].material;
+  EXPECT_EQ(m.name, "Hard Shiny Plastic White");
+  expectColor(m, "albedo", {0.141176, 0.184314, 0.411765}, 0.0);
+  EXPECT_DOUBLE_EQ(m.value("nu").number[0], 400.0);
+}
 } // namespace
 } // namespace aniso
