@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <set>
 #include <system_error>
 
 namespace aniso
@@ -402,7 +403,7 @@ private:
                      " characters (its statements are skipped)");
       return;
     }
-    if (library_.find(name))
+    if (names_.count(name) > 0)
     {
       warn(line, "newmtl " + name + ": a second material of this name (the first is kept)");
       return;
@@ -416,6 +417,7 @@ private:
     MtlMaterial m;
     m.name = name;
     m.line = line;
+    names_.insert(name);
     library_.materials.push_back(std::move(m));
     currentIndex_ = library_.materials.size() - 1;
     skipping_ = false;
@@ -423,6 +425,7 @@ private:
 
   const std::string& path_;
   MtlLibrary library_;
+  std::set<std::string, std::less<>> names_; // a name's repeat found without a scan
   std::optional<size_t> currentIndex_;
   bool skipping_ = false;
   size_t warnings_ = 0;

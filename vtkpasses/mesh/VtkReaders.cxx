@@ -16,6 +16,7 @@
 #include <filesystem>
 #include <fstream>
 #include <limits>
+#include <list>
 #include <map>
 #include <memory>
 #include <optional>
@@ -543,6 +544,11 @@ public:
           libraries_.push_back({file, readMtlFile(file)});
           const MtlLibrary& library = libraries_.back().second;
           warnings_.insert(warnings_.end(), library.warnings.begin(), library.warnings.end());
+          for (const MtlMaterial& material : library.materials)
+          {
+            definitions_.emplace(material.name,
+                                 std::make_pair(&libraries_.back().first, &material));
+          }
         }
         catch (const Error& e)
         {
@@ -567,22 +573,21 @@ public:
       return known->second;
     }
     std::string& document = documents_[name];
-    for (const auto& [file, library] : libraries_)
+    const auto definition = definitions_.find(name);
+    if (definition != definitions_.end())
     {
-      if (const MtlMaterial* mtl = library.find(name))
+      const auto [file, mtl] = definition->second;
+      try
       {
-        try
-        {
-          MaterialLibrary one;
-          one.put(materialFromMtl(*mtl, file, warnings_));
-          document = materialLibraryToJson(one);
-        }
-        catch (const Error& e)
-        {
-          warnings_.push_back(std::string(e.what()) + " (the parts load without it)");
-        }
-        return document;
+        MaterialLibrary one;
+        one.put(materialFromMtl(*mtl, *file, warnings_));
+        document = materialLibraryToJson(one);
       }
+      catch (const Error& e)
+      {
+        warnings_.push_back(std::string(e.what()) + " (the parts load without it)");
+      }
+      return document;
     }
     warnings_.push_back(
         objPath_ + ":" + std::to_string(line) + ": usemtl " + name + ": no such material in " +
@@ -613,7 +618,10 @@ private:
 
   const std::string& objPath_;
   std::vector<std::string>& warnings_;
-  std::vector<std::pair<std::string, MtlLibrary>> libraries_;
+  // A list, so that the definitions' pointers into it stay valid as libraries are added.
+  std::list<std::pair<std::string, MtlLibrary>> libraries_;
+  // Each material name's first definition: its library's path and the material.
+  std::map<std::string, std::pair<const std::string*, const MtlMaterial*>> definitions_;
   std::map<std::string, std::string> documents_;
 };
 
