@@ -539,11 +539,24 @@ public:
         {
           continue;
         }
+        std::error_code ec;
+        const uintmax_t size = std::filesystem::file_size(file, ec);
+        if (!ec && size <= kMaxMtlFileBytes && bytesRead_ + size > kMaxLibraryBytes)
+        {
+          warn(objPath_ + ":" + std::to_string(line) + ": mtllib " + name + ": past the " +
+               std::to_string(kMaxLibraryBytes >> 20) +
+               " MiB of material libraries a file may name (not read)");
+          continue;
+        }
+        bytesRead_ += ec ? 0 : size;
         try
         {
           libraries_.push_back({file, readMtlFile(file)});
           const MtlLibrary& library = libraries_.back().second;
-          warnings_.insert(warnings_.end(), library.warnings.begin(), library.warnings.end());
+          for (const std::string& w : library.warnings)
+          {
+            warn(w);
+          }
           for (const MtlMaterial& material : library.materials)
           {
             definitions_.emplace(material.name,
@@ -552,8 +565,8 @@ public:
         }
         catch (const Error& e)
         {
-          warnings_.push_back(objPath_ + ":" + std::to_string(line) + ": mtllib " + name + ": " +
-                              e.what() + " (the parts load without its materials)");
+          warn(objPath_ + ":" + std::to_string(line) + ": mtllib " + name + ": " + e.what() +
+               " (the parts load without its materials)");
         }
       }
     }
@@ -580,23 +593,47 @@ public:
       try
       {
         MaterialLibrary one;
-        one.put(materialFromMtl(*mtl, *file, warnings_));
+        std::vector<std::string> told;
+        one.put(materialFromMtl(*mtl, *file, told));
+        for (const std::string& w : told)
+        {
+          warn(w);
+        }
         document = materialLibraryToJson(one);
       }
       catch (const Error& e)
       {
-        warnings_.push_back(std::string(e.what()) + " (the parts load without it)");
+        warn(std::string(e.what()) + " (the parts load without it)");
       }
       return document;
     }
-    warnings_.push_back(
-        objPath_ + ":" + std::to_string(line) + ": usemtl " + name + ": no such material in " +
-        (libraries_.empty() ? std::string("any mtllib read") : "its material libraries") +
-        " (its faces load without it)");
+    warn(objPath_ + ":" + std::to_string(line) + ": usemtl " + name + ": no such material in " +
+         (libraries_.empty() ? std::string("any mtllib read") : "its material libraries") +
+         " (its faces load without it)");
     return document;
   }
 
 private:
+  // Every part carries the file's warnings, so a file of many libraries or materials must not
+  // make them without end.
+  static constexpr size_t kMaxWarnings = 200;
+  // Within the reader program's smallest memory budget (MeshReaderProcess.h), whatever the
+  // .obj's size.
+  static constexpr uintmax_t kMaxLibraryBytes = 4 * uintmax_t(kMaxMtlFileBytes);
+
+  void warn(const std::string& warning)
+  {
+    if (told_ < kMaxWarnings)
+    {
+      warnings_.push_back(warning);
+    }
+    else if (told_ == kMaxWarnings)
+    {
+      warnings_.push_back(objPath_ + ": more warnings about its materials are left out");
+    }
+    ++told_;
+  }
+
   // mtllib names one or more files, separated by blanks; a name with blanks in it is read as a
   // whole when a file of that name exists.
   static std::vector<std::string> libraryNames(const std::filesystem::path& directory,
@@ -623,6 +660,8 @@ private:
   // Each material name's first definition: its library's path and the material.
   std::map<std::string, std::pair<const std::string*, const MtlMaterial*>> definitions_;
   std::map<std::string, std::string> documents_;
+  size_t told_ = 0;
+  uintmax_t bytesRead_ = 0;
 };
 
 // The blocks' names: a g/o group whose cells use several materials is one part per material,

@@ -385,6 +385,30 @@ TEST_F(ObjMaterialsTest, ATruncatedObjWithMaterialsLoadsAsWithoutThem)
     EXPECT_EQ(outcome(withMaterials), outcome(without));
   }
 }
+TEST_F(ObjMaterialsTest, WarningsAboutMaterialsAreCapped)
+{
+  // Checks: an OBJ of 300 usemtl names that no library defines, a face each, loads its 300
+  // parts with 200 such warnings and one saying that more are left out (every part carries the
+  // file's warnings, so they must not grow with the file).
+  std::string text = kTetraVertices;
+  for (int i = 0; i < 300; ++i)
+  {
+    text += "g part" + std::to_string(i) + "\nusemtl m" + std::to_string(i) + "\nf 1 2 3\n";
+  }
+  const std::string obj = this->write("many.obj", text);
+  const LoadedBlocks loaded = loadMeshBlocks(obj);
+  ASSERT_EQ(loaded.blocks.size(), 300u);
+  int unknown = 0;
+  int leftOut = 0;
+  for (const std::string& w : loaded.blocks[0].mesh.report.readerWarnings)
+  {
+    unknown += w.find(": no such material") != std::string::npos;
+    leftOut += w == obj + ": more warnings about its materials are left out";
+  }
+  EXPECT_EQ(unknown, 200);
+  EXPECT_EQ(leftOut, 1);
+}
+
 // Debian's assimp-testmodels (scripts/setup.sh installs it): OBJ files and libraries written by
 // other programs (3ds Max's exporter among them). Their .mtl values, read off the files, are the
 // reference.
