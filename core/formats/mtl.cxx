@@ -30,6 +30,63 @@ std::string lower(std::string_view s)
   return out;
 }
 
+// Whether TEXT is well-formed UTF-8 (no overlong forms, surrogates or code points past
+// U+10FFFF): names and file names go into JSON documents, which hold nothing else.
+bool isUtf8(std::string_view text)
+{
+  size_t i = 0;
+  while (i < text.size())
+  {
+    const auto byte = [&](size_t k) { return static_cast<unsigned char>(text[k]); };
+    const unsigned char c = byte(i);
+    size_t length = 0;
+    unsigned lowest = 0;
+    if (c < 0x80)
+    {
+      ++i;
+      continue;
+    }
+    if (c >= 0xC2 && c <= 0xDF)
+    {
+      length = 2;
+      lowest = 0x80;
+    }
+    else if (c >= 0xE0 && c <= 0xEF)
+    {
+      length = 3;
+      lowest = 0x800;
+    }
+    else if (c >= 0xF0 && c <= 0xF4)
+    {
+      length = 4;
+      lowest = 0x10000;
+    }
+    else
+    {
+      return false;
+    }
+    if (i + length > text.size())
+    {
+      return false;
+    }
+    unsigned code = c & (0x7Fu >> length);
+    for (size_t k = 1; k < length; ++k)
+    {
+      if ((byte(i + k) & 0xC0) != 0x80)
+      {
+        return false;
+      }
+      code = (code << 6) | (byte(i + k) & 0x3Fu);
+    }
+    if (code < lowest || code > 0x10FFFF || (code >= 0xD800 && code <= 0xDFFF))
+    {
+      return false;
+    }
+    i += length;
+  }
+  return true;
+}
+
 // A line's words, and where each begins (a texture's file name is the rest of the line from a
 // word on).
 struct Words
@@ -236,6 +293,10 @@ MtlTexture textureOf(const Words& w, const std::string& key, int line)
     throw Malformed{key + ": a file name longer than " + std::to_string(kMaxMtlNameLength) +
                     " characters"};
   }
+  if (!isUtf8(file))
+  {
+    throw Malformed{key + ": a file name that is not UTF-8"};
+  }
   texture.file = std::move(file);
   return texture;
 }
@@ -401,6 +462,11 @@ private:
     {
       warn(line, "newmtl: a name longer than " + std::to_string(kMaxMtlNameLength) +
                      " characters (its statements are skipped)");
+      return;
+    }
+    if (!isUtf8(name))
+    {
+      warn(line, "newmtl: a name that is not UTF-8 (its statements are skipped)");
       return;
     }
     if (names_.count(name) > 0)

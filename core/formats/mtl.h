@@ -14,7 +14,8 @@
 //
 // Robust to any bytes: a malformed line (a number that is no finite number or out of its range,
 // too few or too many values, an unknown statement or texture option, a statement before any
-// newmtl, a repeated material name, a line over kMaxMtlLineLength) is skipped with a warning
+// newmtl, a repeated material name, a name or file name that is not UTF-8, a line over
+// kMaxMtlLineLength) is skipped with a warning
 // "PATH:LINE: reason"; parseMtl never throws. At most kMaxMtlMaterials materials and
 // kMaxMtlWarnings warnings (then one telling how many more) are kept.
 #include <array>

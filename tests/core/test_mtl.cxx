@@ -148,6 +148,33 @@ TEST(Mtl, EachMalformedLineIsAWarningNamingFileAndLineAndIsSkipped)
   EXPECT_TRUE(hasWarning(library, "dir/bad.mtl:19: ", "the first is kept"));
 }
 
+TEST(Mtl, NamesAndFileNamesMustBeUtf8)
+{
+  // Checks: a material name or texture file name that is not UTF-8 (a lone continuation byte,
+  // an overlong '/', a surrogate, a truncated sequence) is a warning, the line skipped (they go
+  // into JSON documents); UTF-8 names of two, three and four bytes are read.
+  const MtlLibrary library =
+      parseMtl("newmtl Stahl geb\xc3\xbcrstet \xe9\x8b\xbc \xf0\x9f\x94\xa9\n"
+               "map_Kd \xe6\x9d\xbf.png\n"
+               "newmtl bad\x80name\n"
+               "newmtl over\xc0\xafong\n"
+               "newmtl sur\xed\xa0\x80rogate\n"
+               "newmtl cut\xe6\x9d\n"
+               "newmtl ok\n"
+               "map_Kd tex\xff.png\n",
+               "u.mtl");
+  ASSERT_EQ(library.materials.size(), 2u);
+  EXPECT_EQ(library.materials[0].name, "Stahl geb\xc3\xbcrstet \xe9\x8b\xbc \xf0\x9f\x94\xa9");
+  EXPECT_EQ(library.materials[0].mapKd->file, "\xe6\x9d\xbf.png");
+  EXPECT_FALSE(library.materials[1].mapKd);
+  for (int line : {3, 4, 5, 6, 8})
+  {
+    EXPECT_TRUE(hasWarning(library, "u.mtl:" + std::to_string(line) + ": ", "not UTF-8"))
+        << "line " << line;
+  }
+  EXPECT_EQ(library.warnings.size(), 5u);
+}
+
 TEST(Mtl, WarningsAreCappedWithACountOfTheRest)
 {
   // Checks: a file of 1000 bad lines keeps kMaxMtlWarnings warnings and one that counts the

@@ -13,6 +13,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <exception>
 #include <filesystem>
 #include <fstream>
 #include <limits>
@@ -601,9 +602,9 @@ public:
         }
         document = materialLibraryToJson(one);
       }
-      catch (const Error& e)
+      catch (const std::exception& e) // aniso::Error, or the JSON writer's
       {
-        warn(std::string(e.what()) + " (the parts load without it)");
+        warn(*file + ": " + name + ": " + e.what() + " (the parts load without it)");
       }
       return document;
     }
