@@ -118,7 +118,7 @@ Material materialFromMtl(const MtlMaterial& mtl, const std::string& mtlPath,
 
   if (mtl.hasPbrKeys())
   {
-    const double metallic = mtl.pm ? *mtl.pm : (mtl.mapPm ? 1.0 : 0.0);
+    const double metallic = mtl.pm ? *mtl.pm : (metallicMap ? 1.0 : 0.0);
     const double roughness = mtl.pr   ? *mtl.pr
                              : mtl.ns ? std::sqrt(std::sqrt(2.0 / (std::max(*mtl.ns, 0.0) + 2.0)))
                                       : 1.0;

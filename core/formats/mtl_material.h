@@ -4,8 +4,8 @@
 // With any key of the PBR extension (Pr, Pm, aniso, anisor, map_Pr, map_Pm) the material is
 // metallic-roughness, mapped as glTF's KHR_materials_anisotropy does
 // (ashikhminShirleyOfMetallicRoughness): base colour Kd, metallic Pm (0 when absent, 1 when
-// only map_Pm gives it), roughness Pr (absent: the roughness of the Blinn-Phong exponent Ns,
-// alpha = sqrt(2 / (Ns + 2)); neither: 1), anisotropy strength aniso (0 when absent).
+// only a map_Pm that exists gives it), roughness Pr (absent: the roughness of the Blinn-Phong
+// exponent Ns, alpha = sqrt(2 / (Ns + 2)); neither: 1), anisotropy strength aniso (0 when absent).
 // Without them it is Phong: albedo = Kd, F0 = Ks, n_u = n_v = Ns. Ns is a Phong exponent in the
 // specification, whose lobe about the mirror direction matches a Blinn-Phong lobe (the AS
 // material with n_u = n_v) of about four times the exponent; writers differ (Blender writes

@@ -98,6 +98,30 @@ TEST(MtlMaterial, PbrWithoutRoughnessTakesItFromNs)
   expectColor(m, "f0", 0.04, 0.04, 0.04);
 }
 
+TEST(MtlMaterial, AMetallicMapAloneMakesTheMetallicOneOnlyWhenItExists)
+{
+  // Checks: map_Pm without Pm: metallic 1 (F0 = Kd, the map mixes it) when the map exists; when
+  // it does not, the MTL default metallic 0 (F0 0.04, albedo Kd).
+  const fs::path dir = fs::temp_directory_path() / "aniso_test_mtl_metallic_map";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  const std::string mtlPath = (dir / "m.mtl").string();
+  const MtlMaterial mtl = onlyMaterial("newmtl m\nKd 0.6 0.4 0.2\nmap_Pm metal.png\n", mtlPath);
+  std::vector<std::string> warnings;
+  Material m = materialFromMtl(mtl, mtlPath, warnings);
+  expectColor(m, "f0", 0.04, 0.04, 0.04);
+  expectColor(m, "albedo", 0.6, 0.4, 0.2);
+  EXPECT_EQ(warnings.size(), 1u);
+  std::ofstream(dir / "metal.png") << "not read here";
+  warnings.clear();
+  m = materialFromMtl(mtl, mtlPath, warnings);
+  expectColor(m, "f0", 0.6, 0.4, 0.2);
+  expectColor(m, "albedo", 0.6, 0.4, 0.2);
+  EXPECT_EQ(m.value("metallic-map").text, (dir / "metal.png").string());
+  EXPECT_TRUE(warnings.empty());
+  fs::remove_all(dir);
+}
+
 TEST(MtlMaterial, PhongTakesKdKsAndNsAsTheyAre)
 {
   // Checks: without PBR keys albedo = Kd, F0 = Ks clamped to [0, 1], n_u = n_v = Ns clamped to
