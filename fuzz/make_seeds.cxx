@@ -1,7 +1,9 @@
 // Writes the seed corpora of the fuzz harnesses into DIR/<harness>/: small meshes through VTK's
 // own PLY and STL writers (ASCII and binary, with and without normals and texture coordinates),
 // OFF files, a default session through the session writer, and every declared parameter's
-// default spelled as the CLI reads it. Usage: fuzz_make_seeds DIR
+// default spelled as the CLI reads it, and material libraries (.mtl) of every statement the MTL
+// reader knows, spelt as the format's specification and its PBR extension write them.
+// Usage: fuzz_make_seeds DIR
 #include "core/image/image.h"
 #include "core/parameters/parameters.h"
 #include "scene/SceneModel.h"
@@ -71,7 +73,7 @@ int main(int argc, char** argv)
   }
   const fs::path dir = argv[1];
   for (const char* sub :
-       {"ply", "stl", "off", "session", "text_values", "image", "material_library"})
+       {"ply", "stl", "off", "session", "text_values", "image", "material_library", "mtl"})
   {
     fs::create_directories(dir / sub);
   }
@@ -118,6 +120,20 @@ int main(int argc, char** argv)
     // The built-in metals through the library writer.
     const std::string text = aniso::materialLibraryToJson(aniso::builtinMaterials());
     std::ofstream(dir / "material_library" / "builtin.json", std::ios::binary) << text;
+  }
+  {
+    // Material libraries: a Phong material as VTK's OBJ exporter writes one, metallic-roughness
+    // keys of the PBR extension, textures with their options.
+    std::ofstream(dir / "mtl" / "phong.mtl", std::ios::binary)
+        << "# wavefront mtl file\n\nnewmtl mtl1\nKa 0 0 0\nKd 0.8 0.2 0.1\nKs 0.45 0.425 "
+           "0.35\nNs 40\nTr 1\nillum 3\n";
+    std::ofstream(dir / "mtl" / "pbr.mtl", std::ios::binary)
+        << "newmtl brushed\nKd 0.9 0.8 0.5\nPr 0.3\nPm 0.75\nPs 0.1\naniso 0.8\nanisor "
+           "0.25\nd 1\nmap_Pm metal.png\nmap_Pr rough.png\nnorm -bm 1 normal.png\n";
+    std::ofstream(dir / "mtl" / "textures.mtl", std::ios::binary)
+        << "newmtl a\r\nKd 1\r\nmap_Kd -s 2 2 1 -o 0.5 -clamp on tex\\albedo map.png\r\n"
+           "map_Bump -bm 0.5 -imfchan l height.png\r\nbump h.png\r\nmap_Ks -mm 0 1 s.png\r\n"
+           "map_Ns -texres 512 -blendu off n.png\r\nnewmtl b\r\nKs 0.04\r\nNs 1000\r\n";
   }
   const auto& specs = aniso::parameterSpecs();
   for (size_t i = 0; i < specs.size(); ++i)

@@ -19,7 +19,7 @@ shift || true
 harnesses=("$@")
 if [ ${#harnesses[@]} -eq 0 ]; then
   harnesses=(fuzz_ply fuzz_stl fuzz_off fuzz_text_values fuzz_session fuzz_image
-    fuzz_material_library)
+    fuzz_material_library fuzz_mtl)
 fi
 build="${ANISO_FUZZ_BUILD_DIR:-$root/build-fuzz}"
 out="${ANISO_FUZZ_OUT:-$root/out/fuzz}"

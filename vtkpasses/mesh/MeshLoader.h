@@ -80,6 +80,14 @@ LoadedMesh loadMesh(const std::string& path, const MeshReadOptions& options = {}
 //   .obj: one part per g or o statement, named by its words (faces before any g or o, or after
 //     one without words: named by the file's stem); a statement followed by no face, line or
 //     point before the next g or o makes no part. Each part has the vertices its faces use.
+//     Materials: the libraries its mtllib statements name (relative to the .obj) are read in
+//     the reader program (core/formats/mtl, mapped by core/formats/mtl_material). A group whose
+//     faces use one material (usemtl, which holds across g and o until the next usemtl) carries
+//     it; a group whose faces use several is one part per material, named "GROUP/MATERIAL"
+//     (the material alone outside any named group; the faces before the group's first usemtl
+//     keep the group's name, without material). A missing library, a usemtl of a material no
+//     library defines, a malformed .mtl line and a missing texture are warnings in the parts'
+//     readerWarnings naming the file; the parts load without what failed (docs/FORMATS.md).
 //   .vtm: one part per leaf dataset, depth first, named by the NAME metadata of each level from
 //     the top joined by "/" ("outer/inner"), "block I" for a level without a name (I its index
 //     among its siblings, as in the file's index attributes).

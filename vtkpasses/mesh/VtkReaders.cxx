@@ -1,6 +1,9 @@
 #include "vtkpasses/mesh/VtkReaders.h"
 
 #include "core/error.h"
+#include "core/formats/mtl.h"
+#include "core/formats/mtl_material.h"
+#include "core/parameters/material_library.h"
 #include "vtkpasses/mesh/GeometryAccess.h"
 #include "vtkpasses/mesh/GltfReader.h"
 
@@ -11,11 +14,16 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <exception>
 #include <filesystem>
 #include <fstream>
 #include <limits>
+#include <list>
+#include <map>
 #include <memory>
 #include <optional>
+#include <set>
+#include <sstream>
 #include <system_error>
 #include <unistd.h>
 #include <vector>
@@ -170,13 +178,19 @@ vtkSmartPointer<vtkPolyData> readObj(const std::string& path, const VtkMessageCa
 }
 
 // Where each g/o statement's block begins and which block each f, l and p statement belongs to.
+// A block is the cells of one g/o statement that use one material (usemtl), so a group whose
+// faces use several materials is several blocks.
 struct ObjStatements
 {
-  std::vector<std::string> names;   // one per block: its g/o statement's words ("" before any)
-  std::vector<int> points;          // the block of each p statement, in file order
-  std::vector<int> lines;           // l
-  std::vector<int> faces;           // f
-  std::vector<char> faceHasNormals; // its first vertex gives a normal index (v//vn, v/vt/vn)
+  std::vector<std::string> names;     // one per block: its g/o statement's words ("" before any)
+  std::vector<std::string> materials; // one per block: the usemtl name its cells use ("" none)
+  std::vector<int> groups;            // one per block: its g/o statement's ordinal (0 before any)
+  std::vector<int> materialLines;     // one per block: the line of its usemtl (0 none)
+  std::vector<int> points;            // the block of each p statement, in file order
+  std::vector<int> lines;             // l
+  std::vector<int> faces;             // f
+  std::vector<char> faceHasNormals;   // its first vertex gives a normal index (v//vn, v/vt/vn)
+  std::vector<std::pair<std::string, int>> libraries; // mtllib words and line, in file order
 };
 
 // The statements as vtkOBJReader tells them apart: the first word of a line after white space.
@@ -186,10 +200,16 @@ ObjStatements scanObjStatements(const std::string& path)
   std::ifstream in(path, std::ios::binary);
   std::string line;
   std::string pendingName;
+  int group = 0;
+  std::string material;
+  int materialLine = 0;
+  int lineNumber = 0;
+  std::map<std::pair<int, std::string>, int> blockOf; // (group, material) -> block
   int current = -1; // the block the next cell goes to; -1 until one comes
   auto isSpace = [](char c) { return std::isspace(static_cast<unsigned char>(c)) != 0; };
   while (std::getline(in, line))
   {
+    ++lineNumber;
     size_t start = 0;
     while (start < line.size() && isSpace(line[start]))
     {
@@ -201,7 +221,7 @@ ObjStatements scanObjStatements(const std::string& path)
       ++end;
     }
     const std::string command = line.substr(start, end - start);
-    if (command == "g" || command == "o")
+    auto rest = [&]
     {
       size_t first = end;
       while (first < line.size() && isSpace(line[first]))
@@ -213,8 +233,25 @@ ObjStatements scanObjStatements(const std::string& path)
       {
         --last;
       }
-      pendingName = line.substr(first, last - first);
+      return line.substr(first, last - first);
+    };
+    if (command == "g" || command == "o")
+    {
+      pendingName = rest();
+      ++group;
       current = -1;
+      continue;
+    }
+    if (command == "usemtl")
+    {
+      material = rest().substr(0, kMaxMtlNameLength);
+      materialLine = lineNumber;
+      current = -1;
+      continue;
+    }
+    if (command == "mtllib")
+    {
+      statements.libraries.emplace_back(rest(), lineNumber);
       continue;
     }
     std::vector<int>* cells = command == "f"   ? &statements.faces
@@ -227,8 +264,21 @@ ObjStatements scanObjStatements(const std::string& path)
     }
     if (current < 0)
     {
-      statements.names.push_back(pendingName);
-      current = static_cast<int>(statements.names.size()) - 1;
+      const auto key = std::make_pair(group, material);
+      const auto found = blockOf.find(key);
+      if (found != blockOf.end())
+      {
+        current = found->second;
+      }
+      else
+      {
+        statements.names.push_back(pendingName);
+        statements.materials.push_back(material);
+        statements.groups.push_back(group);
+        statements.materialLines.push_back(materialLine);
+        current = static_cast<int>(statements.names.size()) - 1;
+        blockOf.emplace(key, current);
+      }
     }
     cells->push_back(current);
     if (cells == &statements.faces)
@@ -373,15 +423,200 @@ std::vector<vtkSmartPointer<vtkPolyData>> splitIntoBlocks(vtkPolyData* input, si
   return result;
 }
 
+// The materials an OBJ's mtllib statements name, read in the reader program: each library
+// relative to the .obj's directory, the first definition of a name winning. A library that
+// cannot be read is one warning naming it; its materials are then unknown.
+class ObjMaterials
+{
+public:
+  ObjMaterials(const std::string& objPath, const ObjStatements& statements,
+               std::vector<std::string>& warnings)
+      : objPath_(objPath), warnings_(warnings)
+  {
+    const std::filesystem::path directory = std::filesystem::path(objPath).parent_path();
+    std::set<std::string> seen;
+    for (const auto& [words, line] : statements.libraries)
+    {
+      for (const std::string& name : libraryNames(directory, words))
+      {
+        const std::string file = (directory / name).lexically_normal().string();
+        if (!seen.insert(file).second)
+        {
+          continue;
+        }
+        std::error_code ec;
+        const uintmax_t size = std::filesystem::file_size(file, ec);
+        if (!ec && size <= kMaxMtlFileBytes && bytesRead_ + size > kMaxLibraryBytes)
+        {
+          warn(objPath_ + ":" + std::to_string(line) + ": mtllib " + name + ": past the " +
+               std::to_string(kMaxLibraryBytes >> 20) +
+               " MiB of material libraries a file may name (not read)");
+          continue;
+        }
+        bytesRead_ += ec ? 0 : size;
+        try
+        {
+          libraries_.push_back({file, readMtlFile(file)});
+          const MtlLibrary& library = libraries_.back().second;
+          for (const std::string& w : library.warnings)
+          {
+            warn(w);
+          }
+          for (const MtlMaterial& material : library.materials)
+          {
+            definitions_.emplace(material.name,
+                                 std::make_pair(&libraries_.back().first, &material));
+          }
+        }
+        catch (const Error& e)
+        {
+          warn(objPath_ + ":" + std::to_string(line) + ": mtllib " + name + ": " + e.what() +
+               " (the parts load without its materials)");
+        }
+      }
+    }
+  }
+
+  // The material library document of the material NAME (usemtl's words at LINE), empty when
+  // NAME is empty or none of the libraries defines it (a warning, once per name).
+  std::string documentOf(const std::string& name, int line)
+  {
+    if (name.empty())
+    {
+      return {};
+    }
+    const auto known = documents_.find(name);
+    if (known != documents_.end())
+    {
+      return known->second;
+    }
+    std::string& document = documents_[name];
+    const auto definition = definitions_.find(name);
+    if (definition != definitions_.end())
+    {
+      const auto [file, mtl] = definition->second;
+      try
+      {
+        MaterialLibrary one;
+        std::vector<std::string> told;
+        one.put(materialFromMtl(*mtl, *file, told));
+        for (const std::string& w : told)
+        {
+          warn(w);
+        }
+        document = materialLibraryToJson(one);
+      }
+      catch (const std::exception& e) // aniso::Error, or the JSON writer's
+      {
+        warn(*file + ": " + name + ": " + e.what() + " (the parts load without it)");
+      }
+      return document;
+    }
+    warn(objPath_ + ":" + std::to_string(line) + ": usemtl " + name + ": no such material in " +
+         (libraries_.empty() ? std::string("any mtllib read") : "its material libraries") +
+         " (its faces load without it)");
+    return document;
+  }
+
+private:
+  // Every part carries the file's warnings, so a file of many libraries or materials must not
+  // make them without end.
+  static constexpr size_t kMaxWarnings = 200;
+  // Within the reader program's smallest memory budget (MeshReaderProcess.h), whatever the
+  // .obj's size.
+  static constexpr uintmax_t kMaxLibraryBytes = 4 * uintmax_t(kMaxMtlFileBytes);
+
+  void warn(const std::string& warning)
+  {
+    if (told_ < kMaxWarnings)
+    {
+      warnings_.push_back(warning);
+    }
+    else if (told_ == kMaxWarnings)
+    {
+      warnings_.push_back(objPath_ + ": more warnings about its materials are left out");
+    }
+    ++told_;
+  }
+
+  // mtllib names one or more files, separated by blanks; a name with blanks in it is read as a
+  // whole when a file of that name exists.
+  static std::vector<std::string> libraryNames(const std::filesystem::path& directory,
+                                               const std::string& words)
+  {
+    std::error_code ec;
+    if (words.empty() || std::filesystem::is_regular_file(directory / words, ec))
+    {
+      return words.empty() ? std::vector<std::string>{} : std::vector<std::string>{words};
+    }
+    std::vector<std::string> names;
+    std::istringstream split(words);
+    for (std::string name; split >> name;)
+    {
+      names.push_back(name);
+    }
+    return names;
+  }
+
+  const std::string& objPath_;
+  std::vector<std::string>& warnings_;
+  // A list, so that the definitions' pointers into it stay valid as libraries are added.
+  std::list<std::pair<std::string, MtlLibrary>> libraries_;
+  // Each material name's first definition: its library's path and the material.
+  std::map<std::string, std::pair<const std::string*, const MtlMaterial*>> definitions_;
+  std::map<std::string, std::string> documents_;
+  size_t told_ = 0;
+  uintmax_t bytesRead_ = 0;
+};
+
+// The blocks' names: a g/o group whose cells use several materials is one part per material,
+// named "GROUP/MATERIAL" (the material alone outside any named group; the group alone for its
+// cells before any usemtl).
+std::vector<std::string> objBlockNames(const ObjStatements& statements)
+{
+  std::map<int, std::set<std::string>> materialsOfGroup;
+  for (size_t b = 0; b < statements.names.size(); ++b)
+  {
+    materialsOfGroup[statements.groups[b]].insert(statements.materials[b]);
+  }
+  std::vector<std::string> names;
+  for (size_t b = 0; b < statements.names.size(); ++b)
+  {
+    const std::string& group = statements.names[b];
+    const std::string& material = statements.materials[b];
+    if (materialsOfGroup[statements.groups[b]].size() <= 1 || material.empty())
+    {
+      names.push_back(group);
+    }
+    else
+    {
+      names.push_back(group.empty() ? material : group + "/" + material);
+    }
+  }
+  return names;
+}
+
 std::vector<ReaderBlock> readObjBlocks(const std::string& path, const VtkMessageCapture& capture,
                                        std::vector<std::string>& warnings)
 {
   vtkSmartPointer<vtkPolyData> whole = readObj(path, capture);
   dropMalformedArrays(whole, std::string(), warnings);
   const ObjStatements statements = scanObjStatements(path);
+  ObjMaterials materials(path, statements, warnings);
+  // The file as one part: its material when all its cells use one.
+  auto onePart = [&](const std::string& name)
+  {
+    ReaderBlock block(name, whole);
+    const std::set<std::string> used(statements.materials.begin(), statements.materials.end());
+    if (used.size() == 1)
+    {
+      block.material = materials.documentOf(*used.begin(), statements.materialLines.front());
+    }
+    return std::vector<ReaderBlock>{block};
+  };
   if (statements.names.size() <= 1)
   {
-    return {{statements.names.empty() ? std::string() : statements.names.front(), whole}};
+    return onePart(statements.names.empty() ? std::string() : statements.names.front());
   }
   // vtkOBJReader's cells against the statements: every p and l statement is one vertex or line
   // cell, except where it duplicates vertices (then it keeps none); every f statement is one
@@ -408,17 +643,20 @@ std::vector<ReaderBlock> readObjBlocks(const std::string& path, const VtkMessage
   {
     warnings.push_back("its groups could not be matched to the faces the OBJ reader kept: read "
                        "as one part");
-    return {{std::string(), whole}};
+    return onePart(std::string());
   }
   const std::vector<int> none;
   std::vector<vtkSmartPointer<vtkPolyData>> pieces =
       splitIntoBlocks(whole, statements.names.size(), verts ? statements.points : none,
                       lines ? statements.lines : none, faces);
+  const std::vector<std::string> names = objBlockNames(statements);
   // A block whose cells the reader dropped stays, without cells, for the loader to report.
   std::vector<ReaderBlock> blocks;
   for (size_t b = 0; b < pieces.size(); ++b)
   {
-    blocks.push_back({statements.names[b], pieces[b]});
+    blocks.push_back({names[b], pieces[b]});
+    blocks.back().material =
+        materials.documentOf(statements.materials[b], statements.materialLines[b]);
   }
   return blocks;
 }

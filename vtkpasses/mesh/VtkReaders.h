@@ -32,7 +32,10 @@ vtkSmartPointer<vtkPolyData> readWithVtk(const std::string& path, const std::str
 //     vtkOBJReader keeps one cell per f, l and p statement, in file order, except that it drops
 //     the faces without normals when other faces have normals and it has to duplicate vertices;
 //     when its cells cannot be matched to the statements so, the file is one block and WARNINGS
-//     says why.
+//     says why. A g/o statement's cells that use several materials (usemtl) are one block per
+//     material, named "GROUP/MATERIAL"; each block's material is the ReaderBlock::material
+//     document of its usemtl material from the mtllib libraries (MeshLoader.h), and what went
+//     wrong with them is in WARNINGS.
 //   .vtm: one block per leaf of the composite tree, depth first, named by the NAME metadata of
 //     each level from the top joined by "/" ("outer/inner"); a level without a name is
 //     "block I", I its index among its siblings (the file's index attribute). An empty leaf is a
