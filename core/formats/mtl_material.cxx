@@ -1,6 +1,10 @@
 #include "core/formats/mtl_material.h"
 
+#include "core/brdf/ashikhmin_shirley.h"
+#include "core/models/gltf_material.h"
+
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <filesystem>
 #include <optional>
@@ -23,11 +27,6 @@ double unit(double x)
 std::array<double, 3> unitColor(const MtlColor& c)
 {
   return {unit(c[0]), unit(c[1]), unit(c[2])};
-}
-
-double mix(double a, double b, double t)
-{
-  return a + (b - a) * t;
 }
 
 double exponentInRange(double n)
@@ -70,36 +69,6 @@ void warnUnused(const std::optional<MtlTexture>& texture, const std::string& key
 }
 } // namespace
 
-double exponentOfBeckmannAlpha(double alpha)
-{
-  if (!(alpha > 0.0))
-  {
-    return exponentInRange(parameterSpec("nu").maximum);
-  }
-  return exponentInRange(2.0 / (alpha * alpha) - 2.0);
-}
-
-AshikhminShirleyLobe ashikhminShirleyOfMetallicRoughness(const std::array<double, 3>& baseColor,
-                                                         double metallic, double roughness,
-                                                         double anisotropyStrength)
-{
-  const double m = unit(metallic);
-  const double r = unit(roughness);
-  const double s = unit(anisotropyStrength);
-  const double alpha = r * r;
-  const double alphaT = mix(alpha, 1.0, s * s);
-  AshikhminShirleyLobe lobe;
-  lobe.nu = exponentOfBeckmannAlpha(alphaT);
-  lobe.nv = exponentOfBeckmannAlpha(alpha);
-  for (int c = 0; c < 3; ++c)
-  {
-    const double base = unit(baseColor[c]);
-    lobe.f0[c] = mix(kDielectricF0, base, m);
-    lobe.albedo[c] = base * (1.0 - m);
-  }
-  return lobe;
-}
-
 Material materialFromMtl(const MtlMaterial& mtl, const std::string& mtlPath,
                          std::vector<std::string>& warnings)
 {
@@ -119,16 +88,24 @@ Material materialFromMtl(const MtlMaterial& mtl, const std::string& mtlPath,
   if (mtl.hasPbrKeys())
   {
     const double metallic = mtl.pm ? *mtl.pm : (metallicMap ? 1.0 : 0.0);
+    // Without Pr, the roughness whose alpha = roughness^2 matches the exponent Ns.
     const double roughness = mtl.pr   ? *mtl.pr
-                             : mtl.ns ? std::sqrt(std::sqrt(2.0 / (std::max(*mtl.ns, 0.0) + 2.0)))
+                             : mtl.ns ? std::sqrt(roughnessFromExponent(*mtl.ns))
                                       : 1.0;
-    const AshikhminShirleyLobe lobe =
-        ashikhminShirleyOfMetallicRoughness(kd, metallic, roughness, mtl.aniso ? *mtl.aniso : 0.0);
+    // glTF's metallic-roughness with KHR_materials_anisotropy, rotation 0 (the tangent is the
+    // anisotropy direction), the dielectric F0 glTF's default 0.04.
+    GltfFactors factors;
+    factors.baseColor = {kd[0], kd[1], kd[2]};
+    factors.metallic = metallic;
+    factors.roughness = roughness;
+    factors.anisotropyStrength = mtl.aniso ? *mtl.aniso : 0.0;
+    const GltfAsValues lobe = gltfToAs(factors);
     set("nu", numberValue(lobe.nu));
     set("nv", numberValue(lobe.nv));
-    setColor("f0", lobe.f0);
+    set("f0", colorValue(lobe.f0.x, lobe.f0.y, lobe.f0.z));
     // With a metallic map the shader does the metallic's share of the albedo (see the header).
-    setColor("albedo", metallicMap ? kd : lobe.albedo);
+    set("albedo", metallicMap ? colorValue(kd[0], kd[1], kd[2])
+                              : colorValue(lobe.albedo.x, lobe.albedo.y, lobe.albedo.z));
     if (metallicMap)
     {
       set("metallic-map", textValue(*metallicMap));

@@ -2,8 +2,8 @@
 // An MTL material (mtl.h) as the project's Ashikhmin-Shirley material (material_library.h).
 //
 // With any key of the PBR extension (Pr, Pm, aniso, anisor, map_Pr, map_Pm) the material is
-// metallic-roughness, mapped as glTF's KHR_materials_anisotropy does
-// (ashikhminShirleyOfMetallicRoughness): base colour Kd, metallic Pm (0 when absent, 1 when
+// metallic-roughness, mapped as glTF's KHR_materials_anisotropy is (gltfToAs,
+// core/models/gltf_material.h, with rotation 0 and the default dielectric F0 0.04): base colour Kd, metallic Pm (0 when absent, 1 when
 // only a map_Pm that exists gives it), roughness Pr (absent: the roughness of the Blinn-Phong
 // exponent Ns, alpha = sqrt(2 / (Ns + 2)); neither: 1), anisotropy strength aniso (0 when absent).
 // Without them it is Phong: albedo = Kd, F0 = Ks, n_u = n_v = Ns. Ns is a Phong exponent in the
@@ -28,32 +28,11 @@
 #include "core/formats/mtl.h"
 #include "core/parameters/material_library.h"
 
-#include <array>
 #include <string>
 #include <vector>
 
 namespace aniso
 {
-// The Blinn-Phong exponent of a Beckmann roughness ALPHA, n = 2 / alpha^2 - 2, clamped to the
-// declared range of nu and nv (alpha 0 gives the range's top). Never NaN.
-double exponentOfBeckmannAlpha(double alpha);
-
-struct AshikhminShirleyLobe
-{
-  double nu = 0.0; // along the tangent t
-  double nv = 0.0; // along the bitangent b
-  std::array<double, 3> f0{0.0, 0.0, 0.0};
-  std::array<double, 3> albedo{0.0, 0.0, 0.0};
-};
-
-// glTF's KHR_materials_anisotropy correspondence: alpha = roughness^2, alpha_t =
-// mix(alpha, 1, strength^2) along the tangent, alpha_b = alpha; n_u, n_v their
-// exponentOfBeckmannAlpha; F0 = mix(0.04, baseColor, metallic); albedo =
-// baseColor (1 - metallic). Inputs are clamped to [0, 1].
-AshikhminShirleyLobe ashikhminShirleyOfMetallicRoughness(const std::array<double, 3>& baseColor,
-                                                         double metallic, double roughness,
-                                                         double anisotropyStrength);
-
 // MTL's material, named as there, as above. MTL_PATH is the .mtl's path (texture files are read
 // against its directory; it names the file in WARNINGS, "MTL_PATH:LINE: reason").
 Material materialFromMtl(const MtlMaterial& mtl, const std::string& mtlPath,

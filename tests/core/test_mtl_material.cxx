@@ -46,20 +46,6 @@ MtlMaterial onlyMaterial(const std::string& text, const std::string& path = "m.m
   return library.materials.front();
 }
 
-TEST(MtlMaterial, BeckmannAlphaGivesTheBlinnPhongExponentInTheDeclaredRange)
-{
-  // Checks: n = 2/alpha^2 - 2 at a few alphas, alpha 1 the broadest lobe (0), alpha 0 and
-  // alphas whose n exceeds nu's declared maximum clamped to it.
-  const double top = parameterSpec("nu").maximum;
-  EXPECT_DOUBLE_EQ(exponentOfBeckmannAlpha(1.0), 0.0);
-  EXPECT_DOUBLE_EQ(exponentOfBeckmannAlpha(0.5), 6.0);
-  EXPECT_DOUBLE_EQ(exponentOfBeckmannAlpha(0.1), 198.0);
-  EXPECT_DOUBLE_EQ(exponentOfBeckmannAlpha(0.0), top);
-  EXPECT_DOUBLE_EQ(exponentOfBeckmannAlpha(1e-4), top);
-  EXPECT_DOUBLE_EQ(exponentOfBeckmannAlpha(2.0), 0.0); // beyond 1: clamped, never negative
-  EXPECT_FALSE(std::isnan(exponentOfBeckmannAlpha(std::nan(""))));
-}
-
 TEST(MtlMaterial, MetallicRoughnessFollowsKhrMaterialsAnisotropy)
 {
   // Checks: alpha = r^2, alpha_t = mix(alpha, 1, s^2) along t, alpha_b = alpha, n = 2/alpha^2-2;
@@ -78,13 +64,37 @@ TEST(MtlMaterial, MetallicRoughnessFollowsKhrMaterialsAnisotropy)
   MaterialLibrary library;
   EXPECT_NO_THROW(library.put(m)) << "every value within its declared range";
 
-  // The function itself: a full metal without anisotropy is isotropic with F0 the base.
-  const AshikhminShirleyLobe metal =
-      ashikhminShirleyOfMetallicRoughness({0.9, 0.6, 0.3}, 1.0, std::sqrt(0.1), 0.0);
-  EXPECT_NEAR(metal.nu, 198.0, 1e-9);
-  EXPECT_NEAR(metal.nv, 198.0, 1e-9);
-  EXPECT_NEAR(metal.f0[1], 0.6, 1e-12);
-  EXPECT_NEAR(metal.albedo[0], 0.0, 1e-12);
+  // A full metal without anisotropy is isotropic with F0 the base and no diffuse albedo:
+  // r = 0.1^(1/4), alpha = sqrt(0.1), n = 2 / 0.1 - 2 = 18.
+  const Material metal = materialFromMtl(
+      onlyMaterial("newmtl metal\nKd 0.9 0.6 0.3\nPr " + std::to_string(std::pow(0.1, 0.25)) +
+                   "\nPm 1\n"),
+      "m.mtl", warnings);
+  EXPECT_NEAR(metal.value("nu").number[0], 18.0, 1e-4);
+  EXPECT_NEAR(metal.value("nv").number[0], 18.0, 1e-4);
+  expectColor(metal, "f0", 0.9, 0.6, 0.3);
+  expectColor(metal, "albedo", 0.0, 0.0, 0.0);
+}
+
+TEST(MtlMaterial, PbrExponentsStayInTheDeclaredRange)
+{
+  // Checks: Pr 0 (alpha 0, an infinite exponent) gives nu's declared maximum on both axes; Pr 1
+  // with full anisotropy the broadest lobe, 0.
+  const double top = parameterSpec("nu").maximum;
+  std::vector<std::string> warnings;
+  const Material mirror =
+      materialFromMtl(onlyMaterial("newmtl m\nPr 0\naniso 0\n"), "m.mtl", warnings);
+  EXPECT_DOUBLE_EQ(mirror.value("nu").number[0], top);
+  EXPECT_DOUBLE_EQ(mirror.value("nv").number[0], top);
+  const Material broad =
+      materialFromMtl(onlyMaterial("newmtl b\nPr 1\naniso 1\n"), "m.mtl", warnings);
+  EXPECT_DOUBLE_EQ(broad.value("nu").number[0], 0.0);
+  EXPECT_DOUBLE_EQ(broad.value("nv").number[0], 0.0);
+  // r = 0.5 along b (alpha 0.25, n 30); s = 1: alpha_t = 1, n_u = 0.
+  const Material streak =
+      materialFromMtl(onlyMaterial("newmtl s\nPr 0.5\naniso 1\n"), "m.mtl", warnings);
+  EXPECT_NEAR(streak.value("nu").number[0], 0.0, 1e-12);
+  EXPECT_NEAR(streak.value("nv").number[0], 30.0, 1e-9);
 }
 
 TEST(MtlMaterial, PbrWithoutRoughnessTakesItFromNs)
