@@ -73,8 +73,12 @@ GltfFactors asToGltf(double nu, double nv, const glm::dvec3& f0, const glm::dvec
 glm::dvec2 gltfAnisotropyDirection(const glm::dvec2& textureRg, double rotation);
 
 // KHR_texture_transform on a glTF texture coordinate (origin top left): uv' = offset +
-// R (scale * uv), R = [[cos r, sin r], [-sin r, cos r]] (translation * rotation * scale of the
-// extension's GLSL, its rotation turning the image clockwise on screen).
+// R (scale * uv), R = [[cos r, sin r], [-sin r, cos r]] (rows): the UVs turned counter-clockwise
+// in glTF's u-right, v-down texture space, the image clockwise, as the extension's text says and
+// the implementations (Blender's importer and exporter, Babylon.js, three.js) and Khronos'
+// TextureTransformTest sample model agree. The extension's GLSL listing, read as GLSL reads
+// mat3 (column by column), is the transpose, the opposite turn: KhronosGroup/glTF issue 1563
+// records that the listing disagrees with the implementations and the sample model.
 struct GltfTextureTransform
 {
   glm::dvec2 offset{0.0};

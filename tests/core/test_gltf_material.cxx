@@ -181,5 +181,41 @@ TEST(GltfMaterial, AnisotropyTextureDirectionAndTextureTransform)
   EXPECT_NEAR(uv.x, 0.0, 1e-15);
   EXPECT_NEAR(uv.y, -1.0, 1e-15);
 }
+TEST(GltfMaterial, TextureTransformTurnsAsBlendersImporterAndExporterDo)
+{
+  // Checks: the rotation's direction and the order translation * rotation * scale against an
+  // independent reference, the conversion of glTF-Blender-IO (texture_transform_blender_to_gltf):
+  // a Mapping node in Blender's UV space (origin bottom left, V up) maps (U, V) to
+  // offset + Rccw(rotation) (scale * (U, V)) and is written as glTF offset
+  // (offset.x - scale.y sin r, 1 - offset.y - scale.y cos r), the same rotation and scale.
+  // glTF's texture coordinate of (U, V) is (U, 1 - V). Both sides must map every point alike.
+  struct Mapping
+  {
+    glm::dvec2 offset;
+    double rotation;
+    glm::dvec2 scale;
+  };
+  for (const Mapping& blender : {Mapping{{0.0, 0.0}, kPi / 8.0, {1.0, 1.0}},
+                                 Mapping{{0.3, -0.2}, 1.1, {2.0, 1.5}},
+                                 Mapping{{-0.5, 0.7}, -2.4, {0.5, 3.0}}})
+  {
+    const double c = std::cos(blender.rotation);
+    const double s = std::sin(blender.rotation);
+    GltfTextureTransform gltf;
+    gltf.offset = {blender.offset.x - blender.scale.y * s,
+                   1.0 - blender.offset.y - blender.scale.y * c};
+    gltf.rotation = blender.rotation;
+    gltf.scale = blender.scale;
+    for (const glm::dvec2 in : {glm::dvec2(0.0, 0.0), glm::dvec2(1.0, 0.0), glm::dvec2(0.25, 0.8)})
+    {
+      const glm::dvec2 scaled = blender.scale * in;
+      const glm::dvec2 out =
+          blender.offset + glm::dvec2(c * scaled.x - s * scaled.y, s * scaled.x + c * scaled.y);
+      const glm::dvec2 uv = applyTextureTransform(gltf, {in.x, 1.0 - in.y});
+      EXPECT_NEAR(uv.x, out.x, 1e-12) << blender.rotation;
+      EXPECT_NEAR(uv.y, 1.0 - out.y, 1e-12) << blender.rotation;
+    }
+  }
+}
 } // namespace
 } // namespace aniso
