@@ -247,6 +247,11 @@ private:
   {
     std::string json;
     GltfTextureTransform transform; // applied to TEXCOORD_0 of its primitives
+    // A constant anisotropyRotation left after the swap of n_u and n_v (gltfToAs): json turns the
+    // tangent by it with a 1x1 TPR map; a part without TEXCOORD_0 (no map can be sampled) takes
+    // jsonWithoutMap and its TANGENTs turned by it at load instead.
+    double tangentRotation = 0.0;
+    std::string jsonWithoutMap;
     bool done = false;
   };
 
@@ -538,10 +543,6 @@ const Reader::MaterialOut& Reader::material(int index)
     map.data = {float(std::cos(rotationLeft)), float(std::sin(rotationLeft)), 0.0f};
     tpr = std::move(map);
   }
-  if (tpr)
-  {
-    material.values["tpr"] = textValue(bake("tpr", *tpr));
-  }
   material.values["nu"] = numberValue(as.nu);
   material.values["nv"] = numberValue(as.nv);
   if (metallicMap)
@@ -621,9 +622,22 @@ const Reader::MaterialOut& Reader::material(int index)
     }
   }
   out.transform = transform.value_or(GltfTextureTransform{});
-  MaterialLibrary library;
-  library.put(material);
-  out.json = materialLibraryToJson(library);
+  const auto json = [](const Material& one)
+  {
+    MaterialLibrary library;
+    library.put(one);
+    return materialLibraryToJson(library);
+  };
+  if (rotationLeft != 0.0)
+  {
+    out.tangentRotation = rotationLeft;
+    out.jsonWithoutMap = json(material);
+  }
+  if (tpr)
+  {
+    material.values["tpr"] = textValue(bake("tpr", *tpr));
+  }
+  out.json = json(material);
   return out;
 }
 
@@ -924,6 +938,33 @@ vtkSmartPointer<vtkPolyData> Reader::primitives(const tinygltf::Mesh& mesh,
   return polyData;
 }
 
+// Turns POLYDATA's tangents by ANGLE about its normals, t' = cos t + sin (n x t)
+// (KHR_materials_anisotropy's direction with the bitangent n x t); false when it has no normals
+// or tangents.
+bool turnTangents(vtkPolyData* polyData, double angle)
+{
+  vtkDataArray* normals = polyData->GetPointData()->GetNormals();
+  vtkDataArray* tangents = polyData->GetPointData()->GetTangents();
+  if (!normals || !tangents)
+  {
+    return false;
+  }
+  const double c = std::cos(angle);
+  const double s = std::sin(angle);
+  for (vtkIdType i = 0; i < tangents->GetNumberOfTuples(); ++i)
+  {
+    double n[3];
+    double t[3];
+    normals->GetTuple(i, n);
+    tangents->GetTuple(i, t);
+    const glm::dvec3 nv(n[0], n[1], n[2]);
+    const glm::dvec3 tv(t[0], t[1], t[2]);
+    const glm::dvec3 turned = c * tv + s * glm::cross(nv, tv);
+    tangents->SetTuple3(i, turned.x, turned.y, turned.z);
+  }
+  return true;
+}
+
 glm::dmat4 localMatrix(const tinygltf::Node& node)
 {
   if (node.matrix.size() == 16)
@@ -999,14 +1040,24 @@ void Reader::addNode(int node, const glm::dmat4& parent, int depth, bool placeIn
       ReaderBlock block;
       block.name = groups.size() == 1 ? name : name + "/primitive " + std::to_string(which.front());
       GltfTextureTransform transform;
-      if (m >= 0)
+      const MaterialOut* out = m >= 0 ? &material(m) : nullptr;
+      if (out)
       {
-        const MaterialOut& out = material(m);
-        block.material = out.json;
-        transform = out.transform;
+        block.material = out->json;
+        transform = out->transform;
       }
       block.polyData = primitives(mesh, which, transform, placeInGeometry ? kYUpToZUp * world : kYUpToZUp,
                                   "part " + block.name);
+      if (out && out->tangentRotation != 0.0 && !block.polyData->GetPointData()->GetTCoords())
+      {
+        block.material = out->jsonWithoutMap;
+        if (!turnTangents(block.polyData, out->tangentRotation))
+        {
+          warn("part " + block.name + ": material " + materialName(m) +
+               ": anisotropyRotation is not rendered (the part has neither TEXCOORD_0 nor "
+               "NORMAL and TANGENT)");
+        }
+      }
       if (!placeInGeometry)
       {
         for (int r = 0; r < 4; ++r)

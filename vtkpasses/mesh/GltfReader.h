@@ -17,7 +17,9 @@
 // surface stays in the mesh's frame and the node's world transform (parents' composed, TRS or
 // matrix) is ReaderBlock::placement, turned Z-up too (C W C^-1).
 // Materials: ReaderBlock::material, one library material per glTF material, named by it, else
-// "material I". Texture images (files, data: URIs, .glb buffer views) are copied into
+// "material I". A constant anisotropyRotation left after gltfToAs' swap turns the tangent
+// through a 1x1 TPR map; on a part without TEXCOORD_0 (no map can be sampled there) the part's
+// TANGENTs are turned about its NORMALs at load instead and its material has no map. Texture images (files, data: URIs, .glb buffer views) are copied into
 // defaultCacheDirectory()/gltf (core/lut/lut_cache.h; the system's temporary directory when
 // there is none) under the hash of their bytes; maps derived from them (linear albedo, metalness,
 // TPR) are baked there as EXR, so the material names files. A texture that is missing or does

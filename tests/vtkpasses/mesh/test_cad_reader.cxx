@@ -4,6 +4,7 @@
 // names, colours and placements are the reference; a cylinder's tangents are compared with the
 // analytic circle tangent and axis.
 #include "core/error.h"
+#include "tests/vtkpasses/mesh/mesh_test_files.h"
 #include "tests/vtkpasses/mesh/mesh_test_helpers.h"
 #include "vtkpasses/mesh/BrushingModel.h"
 #include "vtkpasses/mesh/CadReader.h"
@@ -139,7 +140,7 @@ Handle(TDocStd_Document) cylinderDocument()
   return document;
 }
 
-class CadReaderTest : public ::testing::Test
+class CadReaderTest : public test::MeshFilesTest
 {
 protected:
   static void SetUpTestSuite()
@@ -147,18 +148,6 @@ protected:
     // The writers report on standard output; the test's output stays readable without them.
     Message::DefaultMessenger()->RemovePrinters(STANDARD_TYPE(Message_PrinterOStream));
   }
-
-  void SetUp() override
-  {
-    this->Dir = fs::temp_directory_path() /
-                ("aniso-test-cad-reader-" + std::to_string(::getpid()) + "-" +
-                 ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::remove_all(this->Dir);
-    fs::create_directories(this->Dir);
-  }
-  void TearDown() override { fs::remove_all(this->Dir); }
-
-  std::string path(const std::string& name) const { return (this->Dir / name).string(); }
 
   std::string writeStep(const Handle(TDocStd_Document) & document, const std::string& name) const
   {
@@ -180,7 +169,6 @@ protected:
     return this->path(name);
   }
 
-  fs::path Dir;
 };
 
 const MeshBlock* blockNamed(const LoadedBlocks& loaded, const std::string& name)

@@ -5,6 +5,8 @@
 #include "core/error.h"
 #include "core/image/image.h"
 #include "core/parameters/material_library.h"
+#include "tests/vtkpasses/mesh/gltf_test_files.h"
+#include "tests/vtkpasses/mesh/mesh_test_files.h"
 #include "tests/vtkpasses/mesh/mesh_test_helpers.h"
 #include "vtkpasses/mesh/GltfWriter.h"
 #include "vtkpasses/mesh/MeshLoader.h"
@@ -33,34 +35,13 @@ namespace aniso
 namespace
 {
 namespace fs = std::filesystem;
+using test::accessor;
+using test::squareMesh;
+using test::writeModel;
 constexpr double kPi = 3.14159265358979323846;
 
-class GltfReaderTest : public ::testing::Test
+class GltfReaderTest : public test::MeshFilesTest
 {
-protected:
-  void SetUp() override
-  {
-    this->Dir = fs::temp_directory_path() /
-                ("aniso-test-gltf-" + std::to_string(::getpid()) + "-" +
-                 ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::remove_all(this->Dir);
-    fs::create_directories(this->Dir);
-  }
-  void TearDown() override { fs::remove_all(this->Dir); }
-
-  std::string path(const std::string& name) const { return (this->Dir / name).string(); }
-  std::string write(const std::string& name, const std::string& content) const
-  {
-    std::ofstream(this->Dir / name, std::ios::binary) << content;
-    return this->path(name);
-  }
-  static std::string read(const std::string& file)
-  {
-    std::ifstream in(file, std::ios::binary);
-    return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-  }
-
-  fs::path Dir;
 };
 
 void expectBounds(vtkPolyData* mesh, const std::array<double, 6>& expected, double tolerance)
@@ -112,65 +93,6 @@ bool mentions(const std::vector<std::string>& lines, const std::string& a, const
   return false;
 }
 
-// A float accessor of TYPE over VALUES in MODEL's first buffer.
-int accessor(tinygltf::Model& model, const std::vector<float>& values, int type, int components)
-{
-  if (model.buffers.empty())
-  {
-    model.buffers.emplace_back();
-  }
-  std::vector<unsigned char>& data = model.buffers[0].data;
-  tinygltf::BufferView view;
-  view.buffer = 0;
-  view.byteOffset = data.size();
-  view.byteLength = values.size() * sizeof(float);
-  data.resize(data.size() + view.byteLength);
-  std::memcpy(data.data() + view.byteOffset, values.data(), view.byteLength);
-  model.bufferViews.push_back(view);
-  tinygltf::Accessor a;
-  a.bufferView = int(model.bufferViews.size()) - 1;
-  a.componentType = TINYGLTF_COMPONENT_TYPE_FLOAT;
-  a.count = values.size() / size_t(components);
-  a.type = type;
-  if (type == TINYGLTF_TYPE_VEC3)
-  {
-    a.minValues = {-1e9, -1e9, -1e9};
-    a.maxValues = {1e9, 1e9, 1e9};
-  }
-  model.accessors.push_back(a);
-  return int(model.accessors.size()) - 1;
-}
-
-// A square in glTF's XZ plane ([-1, 1]^2, facing +Y), non-indexed triangles, with NORMAL +Y,
-// TANGENT +Z (w 1) and TEXCOORD_0, as the primitive of a new mesh of MATERIAL.
-int squareMesh(tinygltf::Model& model, const std::string& name, int material)
-{
-  const float p[6][3] = {{-1, 0, 1}, {1, 0, 1}, {1, 0, -1}, {-1, 0, 1}, {1, 0, -1}, {-1, 0, -1}};
-  std::vector<float> positions;
-  std::vector<float> normals;
-  std::vector<float> tangents;
-  std::vector<float> uvs;
-  for (const auto& q : p)
-  {
-    positions.insert(positions.end(), {q[0], q[1], q[2]});
-    normals.insert(normals.end(), {0, 1, 0});
-    tangents.insert(tangents.end(), {0, 0, 1, 1});
-    uvs.insert(uvs.end(), {(q[0] + 1) / 2, (q[2] + 1) / 2});
-  }
-  tinygltf::Primitive primitive;
-  primitive.mode = TINYGLTF_MODE_TRIANGLES;
-  primitive.material = material;
-  primitive.attributes["POSITION"] = accessor(model, positions, TINYGLTF_TYPE_VEC3, 3);
-  primitive.attributes["NORMAL"] = accessor(model, normals, TINYGLTF_TYPE_VEC3, 3);
-  primitive.attributes["TANGENT"] = accessor(model, tangents, TINYGLTF_TYPE_VEC4, 4);
-  primitive.attributes["TEXCOORD_0"] = accessor(model, uvs, TINYGLTF_TYPE_VEC2, 2);
-  tinygltf::Mesh mesh;
-  mesh.name = name;
-  mesh.primitives.push_back(primitive);
-  model.meshes.push_back(mesh);
-  return int(model.meshes.size()) - 1;
-}
-
 // Two nodes: a red painted bracket (dielectric, roughness 0.5) and a brushed metal shaft
 // (metallic, roughness 0.4, KHR_materials_anisotropy strength 0.6 along the tangent).
 tinygltf::Model bracketAndShaft()
@@ -203,13 +125,6 @@ tinygltf::Model bracketAndShaft()
   model.scenes.push_back(scene);
   model.defaultScene = 0;
   return model;
-}
-
-void writeModel(const tinygltf::Model& model, const std::string& file)
-{
-  tinygltf::TinyGLTF writer;
-  const bool binary = fs::path(file).extension() == ".glb";
-  ASSERT_TRUE(writer.WriteGltfSceneToFile(&model, file, true, true, !binary, binary)) << file;
 }
 
 TEST_F(GltfReaderTest, TwoNodesGiveTwoPartsWithTheirNamesMaterialsTangentsAndPlacements)
@@ -311,12 +226,7 @@ TEST_F(GltfReaderTest, AHierarchysTransformsAndTheAnisotropyExtensionAreRead)
   // pi/2: n_u = 30 (across), n_v = 2 / 0.52^2 - 2. Material 1's texture: texel 0 RG (1, 0.5) is
   // the tangent, texel 1 (0.5, 1) the bitangent, B 1 so the strength is 0.6.
   this->write("triangle.bin", triangleBuffer());
-  Image texture;
-  texture.width = 2;
-  texture.height = 1;
-  texture.channels = 3;
-  texture.data = {1.0f, 0.5f, 1.0f, 0.5f, 1.0f, 1.0f};
-  writeImage(this->path("aniso.png"), texture);
+  this->writeTexture("aniso.png", 2, 1, 3, {1.0f, 0.5f, 1.0f, 0.5f, 1.0f, 1.0f});
   const std::string file = this->write(
       "arm.gltf",
       triangleJson(R"("materials":[{"name":"turned","pbrMetallicRoughness":{"roughnessFactor":0.5},)"
@@ -346,7 +256,7 @@ TEST_F(GltfReaderTest, AHierarchysTransformsAndTheAnisotropyExtensionAreRead)
   EXPECT_EQ(hand.material->value("tpr").text, "");
 
   // The textured material: on the finger, made a scene node.
-  std::string text = read(file);
+  std::string text = test::readText(file);
   text.replace(text.find(R"("nodes":[0])"), 11, R"("nodes":[2])");
   const LoadedBlocks finger = loadMeshBlocks(this->write("finger.gltf", text));
   ASSERT_EQ(finger.blocks.size(), 1u);
@@ -368,6 +278,66 @@ TEST_F(GltfReaderTest, AHierarchysTransformsAndTheAnisotropyExtensionAreRead)
   EXPECT_NEAR(map.data[c + 1], 1.0, 1e-4);
 }
 
+TEST_F(GltfReaderTest, AConstantRotationWithoutTexcoordsTurnsTheTangents)
+{
+  // Checks: anisotropyRotation r = pi/6 (no swap: |r| <= pi/4) is a 1x1 TPR map
+  // (cos r, sin r) on a part with TEXCOORD_0, the file's tangents kept; a part without
+  // TEXCOORD_0 (where no map can be sampled) gets no map and its tangents turned by r instead.
+  // Reference: the extension's direction cos r T + sin r B, B = N x T w, in glTF's frame: T +Z,
+  // N +Y, B +X, so (sin r, 0, cos r), which is Z-up (sin r, -cos r, 0).
+  const double r = kPi / 6.0;
+  tinygltf::Model model;
+  model.asset.version = "2.0";
+  tinygltf::Material brushed;
+  brushed.name = "brushed";
+  brushed.pbrMetallicRoughness.roughnessFactor = 0.4;
+  tinygltf::Value::Object anisotropy;
+  anisotropy["anisotropyStrength"] = tinygltf::Value(0.8);
+  anisotropy["anisotropyRotation"] = tinygltf::Value(r);
+  brushed.extensions["KHR_materials_anisotropy"] = tinygltf::Value(anisotropy);
+  model.extensionsUsed.push_back("KHR_materials_anisotropy");
+  model.materials = {brushed};
+  tinygltf::Node mapped;
+  mapped.name = "mapped";
+  mapped.mesh = squareMesh(model, "mapped", 0);
+  tinygltf::Node bare;
+  bare.name = "bare";
+  bare.mesh = squareMesh(model, "bare", 0, {0, 0, 1}, false);
+  model.nodes = {mapped, bare};
+  tinygltf::Scene scene;
+  scene.nodes = {0, 1};
+  model.scenes.push_back(scene);
+  const std::string file = this->path("turned.gltf");
+  writeModel(model, file);
+  const LoadedBlocks loaded = loadMeshBlocks(file);
+  ASSERT_EQ(loaded.blocks.size(), 2u);
+  for (const MeshBlock& block : loaded.blocks)
+  {
+    SCOPED_TRACE(block.name);
+    ASSERT_TRUE(block.material);
+    EXPECT_EQ(block.material->name, "brushed");
+    vtkDataArray* tangents = block.mesh.polyData->GetPointData()->GetTangents();
+    ASSERT_NE(tangents, nullptr);
+    const bool withUvs = block.name == "mapped";
+    EXPECT_EQ(block.mesh.polyData->GetPointData()->GetTCoords() != nullptr, withUvs);
+    const glm::dvec3 expected =
+        withUvs ? glm::dvec3(0, -1, 0) : glm::dvec3(std::sin(r), -std::cos(r), 0);
+    for (vtkIdType i = 0; i < tangents->GetNumberOfTuples(); ++i)
+    {
+      EXPECT_NEAR(glm::distance(test::vec3(tangents, i), expected), 0.0, 1e-6) << i;
+    }
+    const std::string tpr = block.material->value("tpr").text;
+    EXPECT_EQ(tpr.empty(), !withUvs);
+    if (withUvs && !tpr.empty())
+    {
+      const Image map = readImage(tpr);
+      ASSERT_EQ(map.width * map.height, 1);
+      EXPECT_NEAR(map.data[0], std::cos(r), 1e-4);
+      EXPECT_NEAR(map.data[1], std::sin(r), 1e-4);
+    }
+  }
+}
+
 TEST_F(GltfReaderTest, TexturesBecomeMapsAndAMissingOneIsAWarningNamingIt)
 {
   // Checks: baseColorTexture becomes a linear albedo map (sRGB decoded), normalTexture the
@@ -375,12 +345,7 @@ TEST_F(GltfReaderTest, TexturesBecomeMapsAndAMissingOneIsAWarningNamingIt)
   // missing is a warning naming the file and the texture, and the material loads without it;
   // emissive is a warning. Reference: the sRGB curve at 0.5, 0.21404.
   this->write("triangle.bin", triangleBuffer());
-  Image grey;
-  grey.width = 1;
-  grey.height = 1;
-  grey.channels = 3;
-  grey.data = {0.5f, 0.5f, 0.5f};
-  writeImage(this->path("grey.png"), grey);
+  this->writeTexture("grey.png", 1, 1, 3, {0.5f, 0.5f, 0.5f});
   const std::string file = this->write(
       "maps.gltf",
       triangleJson(R"("materials":[{"name":"painted","emissiveFactor":[1,0,0],)"
@@ -513,10 +478,10 @@ TEST_F(GltfReaderTest, TruncatedAndMalformedFilesAreRefusedWithTheirName)
   // errors that begin with the file's path. Reference: the files made here.
   const std::string glb = this->path("whole.glb");
   writeModel(bracketAndShaft(), glb);
-  const std::string glbBytes = read(glb);
+  const std::string glbBytes = test::readText(glb);
   const std::string gltf = this->path("whole.gltf");
   writeModel(bracketAndShaft(), gltf);
-  const std::string gltfText = read(gltf);
+  const std::string gltfText = test::readText(gltf);
   for (const auto& [name, content] : std::vector<std::pair<std::string, std::string>>{
            {"cut.glb", glbBytes.substr(0, glbBytes.size() / 2)},
            {"cut.gltf", gltfText.substr(0, gltfText.size() / 2)},

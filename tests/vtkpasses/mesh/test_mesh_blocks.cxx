@@ -3,6 +3,7 @@
 // vtkSTLWriter) from VTK's sources, whose cell counts are the reference, or written by hand, whose
 // definition is the reference; the merged loadMesh of the same file is the cross-check.
 #include "core/error.h"
+#include "tests/vtkpasses/mesh/mesh_test_files.h"
 #include "tests/vtkpasses/mesh/mesh_test_helpers.h"
 #include "vtkpasses/mesh/MeshLoader.h"
 #include "vtkpasses/mesh/PartPlacement.h"
@@ -39,30 +40,9 @@ namespace
 {
 namespace fs = std::filesystem;
 
-class MeshBlocksTest : public ::testing::Test
+class MeshBlocksTest : public test::MeshFilesTest
 {
 protected:
-  void SetUp() override
-  {
-    this->Dir = fs::temp_directory_path() /
-                ("aniso-test-mesh-blocks-" +
-                 std::to_string(::testing::UnitTest::GetInstance()->random_seed()) + "-" +
-                 std::to_string(::getpid()) + "-" +
-                 ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::remove_all(this->Dir);
-    fs::create_directories(this->Dir);
-  }
-  void TearDown() override { fs::remove_all(this->Dir); }
-
-  std::string path(const std::string& name) const { return (this->Dir / name).string(); }
-
-  std::string write(const std::string& name, const std::string& content) const
-  {
-    std::ofstream out(this->Dir / name, std::ios::binary);
-    out << content;
-    return this->path(name);
-  }
-
   // Loads and checks that nothing reached stderr meanwhile (VTK's output is captured).
   static LoadedBlocks loadQuietly(const std::string& file)
   {
@@ -118,7 +98,6 @@ protected:
     }
   }
 
-  fs::path Dir;
 };
 
 std::vector<std::string> namesOf(const LoadedBlocks& loaded)

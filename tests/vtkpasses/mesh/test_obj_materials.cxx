@@ -5,6 +5,7 @@
 // PBR keys, materials switching inside a group, malformed lines and missing files.
 #include "core/error.h"
 #include "core/parameters/material_library.h"
+#include "tests/vtkpasses/mesh/mesh_test_files.h"
 #include "vtkpasses/mesh/MeshLoader.h"
 
 #include <array>
@@ -33,43 +34,11 @@ namespace aniso
 namespace
 {
 namespace fs = std::filesystem;
+using test::readText;
 
-class ObjMaterialsTest : public ::testing::Test
+class ObjMaterialsTest : public test::MeshFilesTest
 {
-protected:
-  void SetUp() override
-  {
-    this->Dir = fs::temp_directory_path() /
-                ("aniso-test-obj-materials-" + std::to_string(::getpid()) + "-" +
-                 ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::remove_all(this->Dir);
-    fs::create_directories(this->Dir);
-  }
-  void TearDown() override
-  {
-    if (!std::getenv("ANISO_KEEP_TEST_FILES"))
-    {
-      fs::remove_all(this->Dir);
-    }
-  }
-
-  std::string path(const std::string& name) const { return (this->Dir / name).string(); }
-
-  std::string write(const std::string& name, const std::string& content) const
-  {
-    std::ofstream out(this->Dir / name, std::ios::binary);
-    out << content;
-    return this->path(name);
-  }
-
-  fs::path Dir;
 };
-
-std::string readText(const std::string& file)
-{
-  std::ifstream in(file, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
 
 const MeshBlock& blockNamed(const LoadedBlocks& loaded, const std::string& name)
 {
