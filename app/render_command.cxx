@@ -12,6 +12,7 @@
 #include "core/quality/adaptive_quality.h"
 #include "vtkpasses/mesh/BrushingModel.h"
 #include "vtkpasses/mesh/BuiltinMeshes.h"
+#include "vtkpasses/mesh/GltfWriter.h"
 #include "vtkpasses/mesh/MeshLoader.h"
 #include "vtkpasses/mesh/PartPlacement.h"
 #include "vtkpasses/mesh/SurfacePreparation.h"
@@ -169,10 +170,19 @@ Command renderCommand()
   jitter.choices = {"on", "off"};
   c.options.push_back(jitter);
   Option output =
-      textOption("--output", "FILE", "the image to write: .png or .exr (not with --list-parts)");
+      textOption("--output", "FILE",
+                 "the image to write: .png or .exr (not with --list-parts; may be left out with "
+                 "--export-gltf)");
   output.alias = "-o";
   output.required = true;
   c.options.push_back(output);
+  c.options.push_back(textOption(
+      "--export-gltf", "FILE",
+      "write the scene's visible parts as glTF 2.0 (.glb, or .gltf with its buffer inside): "
+      "each part's prepared surface (normals, tangents, UVs) in its own frame, its placement as "
+      "its node's matrix, and the material it is drawn with, the library's or the command "
+      "line's, as metallic-roughness with KHR_materials_anisotropy (maps are not written); "
+      "besides the image, or instead of it without -o"));
   c.options.push_back(
       flagOption("--time", "print the median frame time and the samples per second"));
   addPartOptions(c);
@@ -183,12 +193,13 @@ Command renderCommand()
               "  aniso render --builtin plate --tpr circular --view +z --time -o disc.png\n"
               "  aniso render --builtin sphere --model ward --light dir:1,-1,1:3 -o ward.png\n"
               "  aniso render body.stl lid.stl --part 'lid*=satin gold' --hide body -o lid.png\n"
-              "  aniso render *.ply --materials shop.json --part '*=brushed steel' --list-parts\n";
+              "  aniso render *.ply --materials shop.json --part '*=brushed steel' --list-parts\n"
+              "  aniso render scene.glb --part 'shaft*=brushed steel' --export-gltf out.glb\n";
   return c;
 }
 
 // MESH is optional when --builtin is given: parse with it, then without if it is missing.
-// --output is required unless --list-parts is given.
+// --output is required unless --list-parts or --export-gltf is given.
 Arguments parse(Command command, const std::vector<std::string>& args)
 {
   for (Option& option : command.options)
@@ -200,7 +211,8 @@ Arguments parse(Command command, const std::vector<std::string>& args)
   }
   const auto checkOutputGiven = [](const Arguments& a)
   {
-    if (!a.helpRequested && !a.has("--list-parts") && !a.has("--output"))
+    if (!a.helpRequested && !a.has("--list-parts") && !a.has("--output") &&
+        !a.has("--export-gltf"))
     {
       throw usageError("-o", "missing FILE (required)");
     }
@@ -235,12 +247,13 @@ std::string lowercaseExtension(const std::string& path)
   return ext;
 }
 
-void checkOutput(const std::string& output)
+// OUTPUT must end in FIRST or SECOND and its directory exist.
+void checkOutput(const std::string& output, const char* first = ".png", const char* second = ".exr")
 {
   const std::string ext = lowercaseExtension(output);
-  if (ext != ".png" && ext != ".exr")
+  if (ext != first && ext != second)
   {
-    throw usageError(output, "output file must end in .png or .exr");
+    throw usageError(output, std::string("output file must end in ") + first + " or " + second);
   }
   std::error_code ec;
   const fs::path parent =
@@ -274,7 +287,8 @@ std::vector<ScenePart> scenePartsOf(const Arguments& a, std::ostream& warnings,
   return loadParts(a.positionals, warnings, options);
 }
 
-// PART's surface prepared with OPTIONS, the notes of its loading and preparation on OUT (each
+// PART's surface prepared with OPTIONS in the part's own frame (a tangent model's axes are the
+// part's; placedSurface places it), the notes of its loading and preparation on OUT (each
 // naming the part when there are several). A note of the loading that an earlier part of the
 // same file gave already (what the reader said about the file) is in PRINTED and not repeated.
 vtkSmartPointer<vtkPolyData> preparedSurface(const ScenePart& part, const SurfaceOptions& options,
@@ -293,11 +307,6 @@ vtkSmartPointer<vtkPolyData> preparedSurface(const ScenePart& part, const Surfac
   for (const std::string& note : prepared.report.notes())
   {
     out << prefix << note << "\n";
-  }
-  // Prepared in the part's own frame (a tangent model's axes are the part's), then placed.
-  if (part.placement != kIdentityPlacement)
-  {
-    return placedSurface(prepared.polyData, part.placement);
   }
   return prepared.polyData;
 }
@@ -364,9 +373,14 @@ int runRender(const std::vector<std::string>& args, std::ostream& out, std::ostr
   std::ostringstream unreported;
   std::ostream& report = listing ? unreported : out;
   const std::string output = a.text("--output");
-  if (!listing)
+  const std::string exported = a.has("--export-gltf") ? a.text("--export-gltf") : std::string();
+  if (!listing && !output.empty())
   {
     checkOutput(output);
+  }
+  if (!listing && !exported.empty())
+  {
+    checkOutput(exported, ".glb", ".gltf");
   }
   RenderSettings settings;
   std::tie(settings.width, settings.height) = parseImageSize(a.text("--size"), "--size", kMaxSide);
@@ -477,6 +491,24 @@ int runRender(const std::vector<std::string>& args, std::ostream& out, std::ostr
       surfaces[i] = preparedSurface(
           scene[i], scene[i].material ? surfaceOptionsOf(*scene[i].material) : surfaceOptions,
           several, printed, out);
+    }
+  }
+  if (!exported.empty())
+  {
+    std::vector<GltfPart> written = gltfPartsOf(scene, surfaces, materialOfParameters(parameters));
+    writeGltfScene(exported, written);
+    out << "render: exported " << written.size() << (written.size() == 1 ? " part" : " parts")
+        << " to " << exported << "\n";
+    if (output.empty())
+    {
+      return 0;
+    }
+  }
+  for (std::size_t i = 0; i < scene.size(); ++i)
+  {
+    if (surfaces[i] && scene[i].placement != kIdentityPlacement)
+    {
+      surfaces[i] = placedSurface(surfaces[i], scene[i].placement);
     }
   }
   settings.environment = openEnvironment(parameters.text("env"));

@@ -319,6 +319,40 @@ SurfaceOptions surfaceOptionsOf(const Material& material)
   return options;
 }
 
+Material materialOfParameters(const ParameterSet& parameters)
+{
+  Material material = defaultMaterial("command line");
+  for (std::string_view key : materialKeys())
+  {
+    if (!isMaterialMapKey(key))
+    {
+      material.values[std::string(key)] = parameters.value(key);
+    }
+  }
+  return material;
+}
+
+std::vector<GltfPart> gltfPartsOf(const std::vector<ScenePart>& parts,
+                                  const std::vector<vtkSmartPointer<vtkPolyData>>& surfaces,
+                                  const Material& commandLine)
+{
+  std::vector<GltfPart> out;
+  for (std::size_t i = 0; i < parts.size(); ++i)
+  {
+    if (!parts[i].visible)
+    {
+      continue;
+    }
+    GltfPart part;
+    part.name = parts[i].name;
+    part.polyData = surfaces[i];
+    part.material = parts[i].material ? *parts[i].material : commandLine;
+    part.placement = parts[i].placement;
+    out.push_back(std::move(part));
+  }
+  return out;
+}
+
 MaterialSettings librarySettingsOf(const Material& material, const ParameterSet& commandLine,
                                    std::optional<double> quality, std::ostream& out)
 {

@@ -8,6 +8,7 @@
 #include "app/cli.h"
 #include "core/parameters/material_library.h"
 #include "core/placement.h"
+#include "vtkpasses/mesh/GltfWriter.h"
 #include "vtkpasses/mesh/MeshLoader.h"
 #include "vtkpasses/mesh/SurfacePreparation.h"
 #include "vtkpasses/render/MaterialSettings.h"
@@ -16,6 +17,8 @@
 #include <ostream>
 #include <string>
 #include <vector>
+#include <vtkPolyData.h>
+#include <vtkSmartPointer.h>
 
 namespace aniso::cli
 {
@@ -101,4 +104,14 @@ SurfaceOptions surfaceOptionsOf(const Material& material);
 // on OUT says how many). Throws aniso::Error naming the material or the map file.
 MaterialSettings librarySettingsOf(const Material& material, const ParameterSet& parameters,
                                    std::optional<double> quality, std::ostream& out);
+// The command line's material as a library material named "command line": PARAMETERS' values
+// of the material keys (n_u, n_v, F0, albedo, ...; its maps are the command line's options, not
+// kept here).
+Material materialOfParameters(const ParameterSet& parameters);
+
+// The visible PARTS for writeGltfScene: each its SURFACES[i] (prepared, in the part's own frame),
+// placement and material (its library material, else COMMAND_LINE).
+std::vector<GltfPart> gltfPartsOf(const std::vector<ScenePart>& parts,
+                                  const std::vector<vtkSmartPointer<vtkPolyData>>& surfaces,
+                                  const Material& commandLine);
 } // namespace aniso::cli
