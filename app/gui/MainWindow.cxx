@@ -10,6 +10,7 @@
 #include "scene/Autosave.h"
 #include "scene/LutScheduler.h"
 #include "scene/SceneShading.h"
+#include "vtkpasses/mesh/GltfWriter.h"
 #include "vtkpasses/mesh/MeshLoader.h"
 #include "vtkpasses/render/LitModelMaterial.h"
 #include "vtkpasses/render/OffscreenRenderer.h"
@@ -52,6 +53,7 @@
 #include <algorithm>
 #include <cmath>
 #include <vtkGenericOpenGLRenderWindow.h>
+#include <vtkPolyData.h>
 #include <vtkInteractorStyleTrackballCamera.h>
 #include <vtkRenderWindowInteractor.h>
 
@@ -288,6 +290,23 @@ void MainWindow::createMenus()
       QKeySequence::SaveAs);
   file->addAction(tr("E&xport Screenshot…"), this, &MainWindow::chooseAndExportScreenshot,
                   QKeySequence(tr("Ctrl+E")));
+  file->addAction(tr("Export Scene as &glTF…"), this,
+                  [this]
+                  {
+                    QString path = QFileDialog::getSaveFileName(
+                        this, tr("Export the scene as glTF"), "scene.glb",
+                        tr("glTF 2.0 (*.glb *.gltf)"));
+                    if (path.isEmpty())
+                    {
+                      return;
+                    }
+                    const QString suffix = lowerSuffix(path);
+                    if (suffix != "glb" && suffix != "gltf")
+                    {
+                      path += ".glb";
+                    }
+                    exportGltf(path);
+                  });
   file->addSeparator();
   file->addAction(tr("&Quit"), this, &QWidget::close, QKeySequence::Quit);
 
@@ -771,6 +790,48 @@ bool MainWindow::saveSession(const QString& path)
         sessionPath_ = path;
         addRecent(path);
         statusBar()->showMessage(tr("Saved %1").arg(path), 5000);
+      });
+}
+
+bool MainWindow::exportGltf(const QString& path)
+{
+  return attempt(
+      [&]
+      {
+        const std::string file = path.toStdString();
+        std::vector<std::shared_ptr<const PreparedSurface>> surfaces; // alive while writing
+        std::vector<GltfPart> parts;
+        const std::vector<ScenePart>& scene = model_.parts();
+        for (std::size_t i = 0; i < scene.size(); ++i)
+        {
+          if (!scene[i].visible)
+          {
+            continue;
+          }
+          GltfPart part;
+          part.name = scene[i].name;
+          part.material = model_.partMaterial(int(i));
+          part.placement = scene[i].placement;
+          try
+          {
+            surfaces.push_back(assets_.surface(scene[i].mesh, scene[i].block,
+                                               part.material.value("tangents").text));
+          }
+          catch (const Error& e)
+          {
+            throw errorAbout(file, "part " + part.name + ": " + e.what());
+          }
+          part.polyData = surfaces.back()->polyData;
+          parts.push_back(std::move(part));
+        }
+        if (parts.empty())
+        {
+          throw errorAbout(file, "no visible part to export");
+        }
+        writeGltfScene(file, parts);
+        statusBar()->showMessage(tr("Exported %n part(s) to %1", nullptr, int(parts.size()))
+                                     .arg(path),
+                                 5000);
       });
 }
 

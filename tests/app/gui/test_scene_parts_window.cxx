@@ -8,6 +8,7 @@
 // part back; a session of the scene reopens with the same parts and materials.
 #include "app/gui/MainWindow.h"
 #include "app/gui/SceneView.h"
+#include "vtkpasses/mesh/MeshLoader.h"
 #include "vtkpasses/render/OffscreenRenderer.h"
 #include "core/lut/lut_cache.h"
 #include "vtkpasses/render/AnisoMaterial.h"
@@ -425,6 +426,82 @@ private slots:
     }
     QVERIFY(checked > 0);
     QVERIFY2(along == checked, qPrintable(QString("%1 of %2").arg(along).arg(checked)));
+  }
+
+  // File > Export Scene as glTF (MainWindow::exportGltf): the scene's parts read back through
+  // loadMeshBlocks (the glTF reader, an independent path) with their names, triangles, surfaces
+  // in their own frames (the bounds of the spheres written), placements and library materials
+  // (n_u, n_v, F0, albedo to rounding); a hidden part is left out; a file that cannot be written
+  // is reported naming it and gives false.
+  void sceneExportsAsGltf()
+  {
+    QTemporaryDir dir;
+    const QString left = dir.filePath("left.ply");
+    const QString right = dir.filePath("right.ply");
+    const long long leftTriangles = writeSphere(left, -1.5);
+    const long long rightTriangles = writeSphere(right, 1.5);
+    aniso::MainWindow window;
+    window.setErrorDialogs(false);
+    QVERIFY(window.openMesh(left));
+    QVERIFY(window.addMeshes({right}));
+    aniso::SceneModel* model = window.model();
+    std::vector<ScenePart> parts = model->parts();
+    QCOMPARE(parts.size(), std::size_t(2));
+    parts[1].material = "satin gold";
+    // A quarter turn about Z and a move.
+    parts[1].placement = {0, -1, 0, 0.5, 1, 0, 0, 2, 0, 0, 1, -1, 0, 0, 0, 1};
+    model->setParts(parts, model->materials());
+    const QString file = dir.filePath("scene.glb");
+    QVERIFY(window.exportGltf(file));
+    const aniso::LoadedBlocks back = aniso::loadMeshBlocks(file.toStdString());
+    QCOMPARE(back.blocks.size(), std::size_t(2));
+    const long long triangles[2] = {leftTriangles, rightTriangles};
+    const double centres[2] = {-1.5, 1.5};
+    for (std::size_t i = 0; i < 2; ++i)
+    {
+      const aniso::MeshBlock& block = back.blocks[i];
+      QCOMPARE(block.name, parts[i].name);
+      QCOMPARE(static_cast<long long>(block.mesh.polyData->GetNumberOfPolys()), triangles[i]);
+      double bounds[6];
+      block.mesh.polyData->GetBounds(bounds);
+      QVERIFY(std::abs(bounds[0] - (centres[i] - 1.0)) < 1e-3);
+      QVERIFY(std::abs(bounds[1] - (centres[i] + 1.0)) < 1e-3);
+      for (std::size_t k = 0; k < 16; ++k)
+      {
+        QVERIFY(std::abs(block.placement[k] - parts[i].placement[k]) < 1e-9);
+      }
+      QVERIFY(block.material.has_value());
+      const aniso::Material& drawn = model->partMaterial(int(i));
+      QCOMPARE(block.material->name, drawn.name);
+      for (const char* key : {"nu", "nv"})
+      {
+        const double n = drawn.value(key).number[0];
+        QVERIFY2(std::abs(block.material->value(key).number[0] - n) < 1e-4 * (1.0 + n), key);
+      }
+      for (const char* key : {"f0", "albedo"})
+      {
+        for (std::size_t c = 0; c < 3; ++c)
+        {
+          QVERIFY2(std::abs(block.material->value(key).number[c] - drawn.value(key).number[c]) <
+                       1e-5,
+                   key);
+        }
+      }
+    }
+    QCOMPARE(back.blocks[1].material->name, std::string("satin gold"));
+
+    parts[0].visible = false;
+    model->setParts(parts, model->materials());
+    const QString one = dir.filePath("one.gltf");
+    QVERIFY(window.exportGltf(one));
+    const aniso::LoadedBlocks visible = aniso::loadMeshBlocks(one.toStdString());
+    QCOMPARE(visible.blocks.size(), std::size_t(1));
+
+    QSignalSpy errors(&window, &aniso::MainWindow::errorReported);
+    const QString nowhere = dir.filePath("absent/scene.glb");
+    QVERIFY(!window.exportGltf(nowhere));
+    QCOMPARE(errors.count(), 1);
+    QVERIFY(errors.at(0).at(0).toString().contains(nowhere));
   }
 
   // A part whose file is gone is skipped with a warning naming the part and the file; the other
