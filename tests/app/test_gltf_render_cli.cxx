@@ -25,7 +25,8 @@
 //  - --list-parts prints the file's parts with their glTF material names; --export-gltf writes
 //    the scene's parts (with their placements, the file's or --part's materials) that read back
 //    through loadMeshBlocks with the same names, triangles, bounds, placements and n_u, n_v, F0,
-//    albedo; without -o it writes no image, with -o both.
+//    albedo; without -o it writes no image, with -o both. An export file of another extension,
+//    or in a folder that does not exist, is refused naming it.
 #include "core/image/image.h"
 #include "core/parameters/material_library.h"
 #include "tests/app/cli_runner.h"
@@ -102,41 +103,24 @@ int domeMesh(tinygltf::Model& model, bool texcoords)
       }
     }
   }
-  tinygltf::Primitive primitive;
-  primitive.mode = TINYGLTF_MODE_TRIANGLES;
-  primitive.material = 0;
-  using aniso::test::accessor;
-  primitive.attributes["POSITION"] = accessor(model, positions, TINYGLTF_TYPE_VEC3, 3);
-  primitive.attributes["NORMAL"] = accessor(model, positions, TINYGLTF_TYPE_VEC3, 3);
-  primitive.attributes["TANGENT"] = accessor(model, tangents, TINYGLTF_TYPE_VEC4, 4);
-  if (texcoords)
-  {
-    primitive.attributes["TEXCOORD_0"] = accessor(model, uvs, TINYGLTF_TYPE_VEC2, 2);
-  }
-  tinygltf::Mesh mesh;
-  mesh.name = "dome";
-  mesh.primitives.push_back(primitive);
-  model.meshes.push_back(mesh);
-  return int(model.meshes.size()) - 1;
+  return aniso::test::triangleMesh(model, "dome", 0, positions, positions, tangents,
+                                   texcoords ? uvs : std::vector<float>());
 }
 
 tinygltf::Model plateModel(const Plate& plate)
 {
   tinygltf::Model model;
   model.asset.version = "2.0";
-  tinygltf::Material brushed;
-  brushed.name = "brushed";
-  brushed.pbrMetallicRoughness.baseColorFactor = {0.9, 0.9, 0.9, 1.0};
-  brushed.pbrMetallicRoughness.metallicFactor = 1.0;
-  brushed.pbrMetallicRoughness.roughnessFactor = 0.3;
-  tinygltf::Value::Object anisotropy;
-  anisotropy["anisotropyStrength"] = tinygltf::Value(0.9);
-  anisotropy["anisotropyRotation"] = tinygltf::Value(plate.rotation);
+  tinygltf::Material brushed = aniso::test::metallicRoughness(model, "brushed", {0.9, 0.9, 0.9},
+                                                              1.0, 0.3, 0.9, plate.rotation);
   if (plate.texture)
   {
     tinygltf::Value::Object texture;
     texture["index"] = tinygltf::Value(0);
+    tinygltf::Value::Object anisotropy =
+        brushed.extensions["KHR_materials_anisotropy"].Get<tinygltf::Value::Object>();
     anisotropy["anisotropyTexture"] = tinygltf::Value(texture);
+    brushed.extensions["KHR_materials_anisotropy"] = tinygltf::Value(anisotropy);
     tinygltf::Image image;
     image.uri = "direction.png";
     model.images.push_back(image);
@@ -144,8 +128,6 @@ tinygltf::Model plateModel(const Plate& plate)
     t.source = 0;
     model.textures.push_back(t);
   }
-  brushed.extensions["KHR_materials_anisotropy"] = tinygltf::Value(anisotropy);
-  model.extensionsUsed.push_back("KHR_materials_anisotropy");
   model.materials = {brushed};
   tinygltf::Node node;
   node.name = "plate";
@@ -344,30 +326,20 @@ TEST_F(GltfRenderCli, RotationPiOverTwoTurnsTheHighlightAQuarter)
   // The profiles through the centre: rows kSide/2 - 1 and kSide/2 of one, those columns of the
   // other, each averaged with its mirror image (the scene is mirror symmetric too) to halve the
   // sampling noise.
-  const auto row = [&](int i)
+  const auto profile = [](const Image& image, int i, bool columns)
   {
     double sum = 0.0;
-    for (int x : {i, kSide - 1 - i})
+    for (int at : {i, kSide - 1 - i})
     {
-      for (int y : {kSide / 2 - 1, kSide / 2})
+      for (int middle : {kSide / 2 - 1, kSide / 2})
       {
-        sum += luminance(along, x, y);
+        sum += columns ? luminance(image, middle, at) : luminance(image, at, middle);
       }
     }
     return sum;
   };
-  const auto column = [&](int i)
-  {
-    double sum = 0.0;
-    for (int y : {i, kSide - 1 - i})
-    {
-      for (int x : {kSide / 2 - 1, kSide / 2})
-      {
-        sum += luminance(across, x, y);
-      }
-    }
-    return sum;
-  };
+  const auto row = [&](int i) { return profile(along, i, false); };
+  const auto column = [&](int i) { return profile(across, i, true); };
   double difference = 0.0;
   double norm = 0.0;
   for (int i = 0; i < kSide / 2; ++i)
@@ -414,12 +386,8 @@ TEST_F(GltfRenderCli, ListPartsShowsTheFilesMaterialsAndExportReadsBack)
   Plate square;
   square.dome = false;
   tinygltf::Model model = plateModel(square);
-  tinygltf::Material paint;
-  paint.name = "paint";
-  paint.pbrMetallicRoughness.baseColorFactor = {0.7, 0.1, 0.1, 1.0};
-  paint.pbrMetallicRoughness.metallicFactor = 0.0;
-  paint.pbrMetallicRoughness.roughnessFactor = 0.6;
-  model.materials.push_back(paint);
+  model.materials.push_back(
+      aniso::test::metallicRoughness(model, "paint", {0.7, 0.1, 0.1}, 0.0, 0.6));
   tinygltf::Node lid;
   lid.name = "lid";
   lid.mesh = aniso::test::squareMesh(model, "lid", 1);
@@ -498,7 +466,7 @@ TEST_F(GltfRenderCli, ListPartsShowsTheFilesMaterialsAndExportReadsBack)
   }
 }
 
-TEST_F(GltfRenderCli, ExportToAnUnknownExtensionIsRefused)
+TEST_F(GltfRenderCli, AnExportFileThatCannotBeWrittenIsRefusedNamingIt)
 {
   Plate square;
   square.dome = false;
@@ -507,5 +475,10 @@ TEST_F(GltfRenderCli, ExportToAnUnknownExtensionIsRefused)
   EXPECT_NE(r.exitCode, 0);
   EXPECT_NE(r.err.find("scene.obj"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find(".glb or .gltf"), std::string::npos) << r.err;
+  const std::string nowhere = path("absent/scene.glb").string();
+  const Outcome missing = run({"render", file, "--export-gltf", nowhere});
+  EXPECT_NE(missing.exitCode, 0);
+  EXPECT_NE(missing.err.find(nowhere), std::string::npos) << missing.err;
+  EXPECT_FALSE(aniso_test::fs::exists(nowhere));
 }
 } // namespace

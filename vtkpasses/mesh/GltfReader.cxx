@@ -590,37 +590,36 @@ const Reader::MaterialOut& Reader::material(int index)
       }
     }
   }
-  if (m.normalTexture.index >= 0)
+  // A texture used as it is: its file as map KEY when it decodes; a FACTOR (normalTexture's
+  // scale, occlusionTexture's strength) other than 1 is not rendered.
+  const auto plainMap = [&](const auto& info, const char* slot, const char* key,
+                            const char* factorName, double factor)
   {
-    const TextureRef ref = refOf(m.normalTexture, "normalTexture");
+    if (info.index < 0)
+    {
+      return false;
+    }
+    const TextureRef ref = refOf(info, slot);
     use(ref);
     const std::string file = imageFile(ref, subject);
-    if (!file.empty() && decoded(ref, subject))
+    if (file.empty() || !decoded(ref, subject))
     {
-      material.values["normal-map"] = textValue(file);
-      material.values["bump"] = textValue("normal");
-      if (m.normalTexture.scale != 1.0)
-      {
-        warn(subject + ": normalTexture's scale " + std::to_string(m.normalTexture.scale) +
-             " is not rendered (1 is)");
-      }
+      return false;
     }
-  }
-  if (m.occlusionTexture.index >= 0)
+    material.values[key] = textValue(file);
+    if (factor != 1.0)
+    {
+      warn(subject + ": " + slot + "'s " + factorName + " " + std::to_string(factor) +
+           " is not rendered (1 is)");
+    }
+    return true;
+  };
+  if (plainMap(m.normalTexture, "normalTexture", "normal-map", "scale", m.normalTexture.scale))
   {
-    const TextureRef ref = refOf(m.occlusionTexture, "occlusionTexture");
-    use(ref);
-    const std::string file = imageFile(ref, subject);
-    if (!file.empty() && decoded(ref, subject))
-    {
-      material.values["ao-map"] = textValue(file);
-      if (m.occlusionTexture.strength != 1.0)
-      {
-        warn(subject + ": occlusionTexture's strength " +
-             std::to_string(m.occlusionTexture.strength) + " is not rendered (1 is)");
-      }
-    }
+    material.values["bump"] = textValue("normal");
   }
+  plainMap(m.occlusionTexture, "occlusionTexture", "ao-map", "strength",
+           m.occlusionTexture.strength);
   out.transform = transform.value_or(GltfTextureTransform{});
   const auto json = [](const Material& one)
   {

@@ -6,8 +6,10 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cerrno>
 #include <cstring>
 #include <filesystem>
+#include <fstream>
 #include <limits>
 #include <map>
 #include <tiny_gltf.h>
@@ -27,9 +29,10 @@ glm::dvec3 toYUp(const glm::dvec3& v)
   return {v.x, v.z, -v.y};
 }
 
-// Appends VALUES (floats) to the buffer as an accessor of TYPE with COUNT elements.
-int addAccessor(tinygltf::Model& model, const std::vector<float>& values, int type, size_t count,
-                int target, bool bounds)
+// Appends LENGTH bytes at DATA to the buffer (4-byte aligned) as a buffer view of TARGET, and an
+// accessor of COUNT elements of TYPE and COMPONENT_TYPE over it.
+int addAccessor(tinygltf::Model& model, const void* data, size_t length, int target, size_t count,
+                int type, int componentType)
 {
   tinygltf::Buffer& buffer = model.buffers.front();
   while (buffer.data.size() % 4 != 0)
@@ -39,16 +42,27 @@ int addAccessor(tinygltf::Model& model, const std::vector<float>& values, int ty
   tinygltf::BufferView view;
   view.buffer = 0;
   view.byteOffset = buffer.data.size();
-  view.byteLength = values.size() * sizeof(float);
+  view.byteLength = length;
   view.target = target;
-  const auto* bytes = reinterpret_cast<const unsigned char*>(values.data());
-  buffer.data.insert(buffer.data.end(), bytes, bytes + view.byteLength);
+  const auto* bytes = static_cast<const unsigned char*>(data);
+  buffer.data.insert(buffer.data.end(), bytes, bytes + length);
   model.bufferViews.push_back(view);
   tinygltf::Accessor accessor;
   accessor.bufferView = int(model.bufferViews.size()) - 1;
-  accessor.componentType = TINYGLTF_COMPONENT_TYPE_FLOAT;
+  accessor.componentType = componentType;
   accessor.count = count;
   accessor.type = type;
+  model.accessors.push_back(accessor);
+  return int(model.accessors.size()) - 1;
+}
+
+// VALUES (floats) as an accessor of TYPE with COUNT elements; with BOUNDS, its min and max.
+int addAccessor(tinygltf::Model& model, const std::vector<float>& values, int type, size_t count,
+                int target, bool bounds)
+{
+  const int index = addAccessor(model, values.data(), values.size() * sizeof(float), target, count,
+                                type, TINYGLTF_COMPONENT_TYPE_FLOAT);
+  tinygltf::Accessor& accessor = model.accessors[size_t(index)];
   if (bounds)
   {
     const size_t components = values.size() / std::max<size_t>(count, 1);
@@ -60,28 +74,14 @@ int addAccessor(tinygltf::Model& model, const std::vector<float>& values, int ty
       accessor.maxValues[i % components] = std::max(accessor.maxValues[i % components], double(values[i]));
     }
   }
-  model.accessors.push_back(accessor);
-  return int(model.accessors.size()) - 1;
+  return index;
 }
 
 int addIndices(tinygltf::Model& model, const std::vector<uint32_t>& indices)
 {
-  tinygltf::Buffer& buffer = model.buffers.front();
-  tinygltf::BufferView view;
-  view.buffer = 0;
-  view.byteOffset = buffer.data.size();
-  view.byteLength = indices.size() * sizeof(uint32_t);
-  view.target = TINYGLTF_TARGET_ELEMENT_ARRAY_BUFFER;
-  const auto* bytes = reinterpret_cast<const unsigned char*>(indices.data());
-  buffer.data.insert(buffer.data.end(), bytes, bytes + view.byteLength);
-  model.bufferViews.push_back(view);
-  tinygltf::Accessor accessor;
-  accessor.bufferView = int(model.bufferViews.size()) - 1;
-  accessor.componentType = TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT;
-  accessor.count = indices.size();
-  accessor.type = TINYGLTF_TYPE_SCALAR;
-  model.accessors.push_back(accessor);
-  return int(model.accessors.size()) - 1;
+  return addAccessor(model, indices.data(), indices.size() * sizeof(uint32_t),
+                     TINYGLTF_TARGET_ELEMENT_ARRAY_BUFFER, indices.size(), TINYGLTF_TYPE_SCALAR,
+                     TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT);
 }
 
 tinygltf::Material gltfMaterial(const Material& material, tinygltf::Model& model)
@@ -255,8 +255,16 @@ void writeGltfScene(const std::string& path, const std::vector<GltfPart>& parts)
   }
   std::string ext = std::filesystem::path(path).extension().string();
   std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+  // Through a stream of our own: tinygltf's file writer reports no failure to open or write.
+  std::ofstream out(path, std::ios::binary | std::ios::trunc);
+  if (!out)
+  {
+    throw errorAbout(path, std::string("cannot be written (") + std::strerror(errno) + ")");
+  }
   tinygltf::TinyGLTF writer;
-  if (!writer.WriteGltfSceneToFile(&model, path, true, true, true, ext == ".glb"))
+  const bool written = writer.WriteGltfSceneToStream(&model, out, true, ext == ".glb");
+  out.close();
+  if (!written || !out)
   {
     throw errorAbout(path, "the glTF file could not be written");
   }

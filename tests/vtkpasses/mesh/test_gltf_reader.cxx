@@ -99,19 +99,10 @@ tinygltf::Model bracketAndShaft()
 {
   tinygltf::Model model;
   model.asset.version = "2.0";
-  tinygltf::Material paint;
-  paint.name = "red paint";
-  paint.pbrMetallicRoughness.baseColorFactor = {0.8, 0.05, 0.05, 1.0};
-  paint.pbrMetallicRoughness.metallicFactor = 0.0;
-  paint.pbrMetallicRoughness.roughnessFactor = 0.5;
-  tinygltf::Material metal;
-  metal.pbrMetallicRoughness.baseColorFactor = {0.91, 0.92, 0.93, 1.0};
-  metal.pbrMetallicRoughness.metallicFactor = 1.0;
-  metal.pbrMetallicRoughness.roughnessFactor = 0.4;
-  tinygltf::Value::Object anisotropy;
-  anisotropy["anisotropyStrength"] = tinygltf::Value(0.6);
-  metal.extensions["KHR_materials_anisotropy"] = tinygltf::Value(anisotropy);
-  model.extensionsUsed.push_back("KHR_materials_anisotropy");
+  const tinygltf::Material paint =
+      test::metallicRoughness(model, "red paint", {0.8, 0.05, 0.05}, 0.0, 0.5);
+  const tinygltf::Material metal =
+      test::metallicRoughness(model, "", {0.91, 0.92, 0.93}, 1.0, 0.4, 0.6);
   model.materials = {paint, metal};
   tinygltf::Node bracket;
   bracket.name = "bracket";
@@ -288,15 +279,7 @@ TEST_F(GltfReaderTest, AConstantRotationWithoutTexcoordsTurnsTheTangents)
   const double r = kPi / 6.0;
   tinygltf::Model model;
   model.asset.version = "2.0";
-  tinygltf::Material brushed;
-  brushed.name = "brushed";
-  brushed.pbrMetallicRoughness.roughnessFactor = 0.4;
-  tinygltf::Value::Object anisotropy;
-  anisotropy["anisotropyStrength"] = tinygltf::Value(0.8);
-  anisotropy["anisotropyRotation"] = tinygltf::Value(r);
-  brushed.extensions["KHR_materials_anisotropy"] = tinygltf::Value(anisotropy);
-  model.extensionsUsed.push_back("KHR_materials_anisotropy");
-  model.materials = {brushed};
+  model.materials = {test::metallicRoughness(model, "brushed", {1.0, 1.0, 1.0}, 1.0, 0.4, 0.8, r)};
   tinygltf::Node mapped;
   mapped.name = "mapped";
   mapped.mesh = squareMesh(model, "mapped", 0);
