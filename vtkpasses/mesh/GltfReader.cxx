@@ -468,11 +468,7 @@ const Reader::MaterialOut& Reader::material(int index)
     use(ref);
     if (std::optional<Image> image = decoded(ref, subject))
     {
-      Image metal;
-      metal.width = image->width;
-      metal.height = image->height;
-      metal.channels = 1;
-      metal.data.resize(size_t(image->width) * size_t(image->height));
+      Image metal(image->width, image->height, 1);
       double roughness = 0.0;
       const int c = image->channels;
       for (size_t i = 0; i < metal.data.size(); ++i)
@@ -499,11 +495,7 @@ const Reader::MaterialOut& Reader::material(int index)
     use(ref);
     if (std::optional<Image> image = decoded(ref, subject))
     {
-      Image map;
-      map.width = image->width;
-      map.height = image->height;
-      map.channels = 3;
-      map.data.assign(size_t(image->width) * size_t(image->height) * 3, 0.0f);
+      Image map(image->width, image->height, 3);
       const int c = image->channels;
       double strength = 0.0;
       double low = 1.0;

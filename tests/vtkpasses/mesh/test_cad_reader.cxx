@@ -90,6 +90,18 @@ Reference reference()
   return r;
 }
 
+// The pin: a cylinder (radius kPinRadius, height kPinHeight, along Z) named "pin".
+TDF_Label addPin(const Handle(XCAFDoc_ShapeTool) & shapes)
+{
+  const TDF_Label pin = shapes->AddShape(
+      BRepPrimAPI_MakeCylinder(gp_Ax2(gp_Pnt(0.0, 0.0, 0.0), gp_Dir(0.0, 0.0, 1.0)), kPinRadius,
+                               kPinHeight)
+          .Shape(),
+      false);
+  TDataStd_Name::Set(pin, "pin");
+  return pin;
+}
+
 Handle(TDocStd_Document) referenceDocument()
 {
   Handle(TDocStd_Document) document;
@@ -103,12 +115,7 @@ Handle(TDocStd_Document) referenceDocument()
   colours->SetColor(
       plate, Quantity_Color(kPlateColour.r, kPlateColour.g, kPlateColour.b, Quantity_TOC_RGB),
       XCAFDoc_ColorSurf);
-  const TDF_Label pin = shapes->AddShape(
-      BRepPrimAPI_MakeCylinder(gp_Ax2(gp_Pnt(0.0, 0.0, 0.0), gp_Dir(0.0, 0.0, 1.0)), kPinRadius,
-                               kPinHeight)
-          .Shape(),
-      false);
-  TDataStd_Name::Set(pin, "pin");
+  const TDF_Label pin = addPin(shapes);
   colours->SetColor(pin, Quantity_Color(kPinColour.r, kPinColour.g, kPinColour.b, Quantity_TOC_RGB),
                     XCAFDoc_ColorSurf);
 
@@ -131,12 +138,7 @@ Handle(TDocStd_Document) cylinderDocument()
   Handle(TDocStd_Document) document;
   XCAFApp_Application::GetApplication()->NewDocument("MDTV-XCAF", document);
   const Handle(XCAFDoc_ShapeTool) shapes = XCAFDoc_DocumentTool::ShapeTool(document->Main());
-  const TDF_Label pin = shapes->AddShape(
-      BRepPrimAPI_MakeCylinder(gp_Ax2(gp_Pnt(0.0, 0.0, 0.0), gp_Dir(0.0, 0.0, 1.0)), kPinRadius,
-                               kPinHeight)
-          .Shape(),
-      false);
-  TDataStd_Name::Set(pin, "pin");
+  addPin(shapes);
   return document;
 }
 

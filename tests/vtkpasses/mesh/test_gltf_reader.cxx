@@ -35,10 +35,9 @@ namespace aniso
 namespace
 {
 namespace fs = std::filesystem;
-using test::accessor;
+using test::kPi;
 using test::squareMesh;
 using test::writeModel;
-constexpr double kPi = 3.14159265358979323846;
 
 class GltfReaderTest : public test::MeshFilesTest
 {
