@@ -53,8 +53,8 @@
 #include <algorithm>
 #include <cmath>
 #include <vtkGenericOpenGLRenderWindow.h>
-#include <vtkPolyData.h>
 #include <vtkInteractorStyleTrackballCamera.h>
+#include <vtkPolyData.h>
 #include <vtkRenderWindowInteractor.h>
 
 namespace aniso
