@@ -211,8 +211,7 @@ Arguments parse(Command command, const std::vector<std::string>& args)
   }
   const auto checkOutputGiven = [](const Arguments& a)
   {
-    if (!a.helpRequested && !a.has("--list-parts") && !a.has("--output") &&
-        !a.has("--export-gltf"))
+    if (!a.helpRequested && !a.has("--list-parts") && !a.has("--output") && !a.has("--export-gltf"))
     {
       throw usageError("-o", "missing FILE (required)");
     }

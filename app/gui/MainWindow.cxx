@@ -293,9 +293,9 @@ void MainWindow::createMenus()
   file->addAction(tr("Export Scene as &glTF…"), this,
                   [this]
                   {
-                    QString path = QFileDialog::getSaveFileName(
-                        this, tr("Export the scene as glTF"), "scene.glb",
-                        tr("glTF 2.0 (*.glb *.gltf)"));
+                    QString path =
+                        QFileDialog::getSaveFileName(this, tr("Export the scene as glTF"),
+                                                     "scene.glb", tr("glTF 2.0 (*.glb *.gltf)"));
                     if (path.isEmpty())
                     {
                       return;
@@ -829,9 +829,8 @@ bool MainWindow::exportGltf(const QString& path)
           throw errorAbout(file, "no visible part to export");
         }
         writeGltfScene(file, parts);
-        statusBar()->showMessage(tr("Exported %n part(s) to %1", nullptr, int(parts.size()))
-                                     .arg(path),
-                                 5000);
+        statusBar()->showMessage(
+            tr("Exported %n part(s) to %1", nullptr, int(parts.size())).arg(path), 5000);
       });
 }
 

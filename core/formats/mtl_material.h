@@ -3,15 +3,15 @@
 //
 // With any key of the PBR extension (Pr, Pm, aniso, anisor, map_Pr, map_Pm) the material is
 // metallic-roughness, mapped as glTF's KHR_materials_anisotropy is (gltfToAs,
-// core/models/gltf_material.h, with rotation 0 and the default dielectric F0 0.04): base colour Kd, metallic Pm (0 when absent, 1 when
-// only a map_Pm that exists gives it), roughness Pr (absent: the roughness of the Blinn-Phong
-// exponent Ns, alpha = sqrt(2 / (Ns + 2)); neither: 1), anisotropy strength aniso (0 when absent).
-// Without them it is Phong: albedo = Kd, F0 = Ks, n_u = n_v = Ns. Ns is a Phong exponent in the
-// specification, whose lobe about the mirror direction matches a Blinn-Phong lobe (the AS
-// material with n_u = n_v) of about four times the exponent; writers differ (Blender writes
-// its own function of roughness), so Ns is taken as the Blinn-Phong exponent as it is.
-// Absent: Kd 0.8 grey (the value writers put in a new material), Ks 0.04 (a dielectric's F0),
-// Ns 0. Colours are clamped to [0, 1], exponents to the declared range of nu and nv.
+// core/models/gltf_material.h, with rotation 0 and the default dielectric F0 0.04): base colour Kd,
+// metallic Pm (0 when absent, 1 when only a map_Pm that exists gives it), roughness Pr (absent: the
+// roughness of the Blinn-Phong exponent Ns, alpha = sqrt(2 / (Ns + 2)); neither: 1), anisotropy
+// strength aniso (0 when absent). Without them it is Phong: albedo = Kd, F0 = Ks, n_u = n_v = Ns.
+// Ns is a Phong exponent in the specification, whose lobe about the mirror direction matches a
+// Blinn-Phong lobe (the AS material with n_u = n_v) of about four times the exponent; writers
+// differ (Blender writes its own function of roughness), so Ns is taken as the Blinn-Phong exponent
+// as it is. Absent: Kd 0.8 grey (the value writers put in a new material), Ks 0.04 (a dielectric's
+// F0), Ns 0. Colours are clamped to [0, 1], exponents to the declared range of nu and nv.
 //
 // Textures: map_Kd -> "albedo-map" (it multiplies the albedo, as in the MTL specification);
 // map_Bump / bump -> "height-map" (heights, as the specification has them; -bm multiplies

@@ -64,7 +64,11 @@ protected:
     io_ = dir_ / ".io";
     fs::create_directory(io_);
   }
-  void TearDown() override { if (!std::getenv("ANISO_KEEP_TEST_FILES")) fs::remove_all(dir_); }
+  void TearDown() override
+  {
+    if (!std::getenv("ANISO_KEEP_TEST_FILES"))
+      fs::remove_all(dir_);
+  }
 
   fs::path path(const std::string& name) const { return dir_ / name; }
 

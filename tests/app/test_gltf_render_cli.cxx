@@ -300,10 +300,13 @@ protected:
   Image render(const std::string& file, const std::string& name) const
   {
     const std::string out = path(name + ".exr").string();
-    const Outcome r = run({"render", file, "--env", environment_, "--env-sampling", "mis",
-                           "--view", "+z", "--samples", "16", "--frames", "4", "--jitter", "off",
-                           "--background", "none", "--size",
-                           std::to_string(kSide) + "x" + std::to_string(kSide), "-o", out});
+    const std::string size = std::to_string(kSide) + "x" + std::to_string(kSide);
+    const std::vector<std::string> options = {
+        "--env-sampling", "mis", "--view", "+z", "--samples",    "16",   "--frames", "4",
+        "--jitter",       "off", "--size", size, "--background", "none", "-o",       out};
+    std::vector<std::string> command = {"render", file, "--env", environment_};
+    command.insert(command.end(), options.begin(), options.end());
+    const Outcome r = run(command);
     EXPECT_EQ(r.exitCode, 0) << r.err;
     return r.exitCode == 0 ? aniso::readImage(out) : Image();
   }
@@ -410,10 +413,9 @@ TEST_F(GltfRenderCli, ListPartsShowsTheFilesMaterialsAndExportReadsBack)
     SCOPED_TRACE(image ? "with -o" : "without -o");
     const std::string exported = path(image ? "both.gltf" : "scene.glb").string();
     const std::string picture = path("both.exr").string();
-    std::vector<std::string> command = {"render",         file,    "--part",
-                                        "lid=satin gold", "--env", environment_,
-                                        "--size",         "32x32", "--export-gltf",
-                                        exported};
+    std::vector<std::string> command = {"render",        file,         "--part", "lid=satin gold",
+                                        "--env",         environment_, "--size", "32x32",
+                                        "--export-gltf", exported};
     if (image)
     {
       command.insert(command.end(), {"--samples", "4", "-o", picture});

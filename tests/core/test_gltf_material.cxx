@@ -195,9 +195,9 @@ TEST(GltfMaterial, TextureTransformTurnsAsBlendersImporterAndExporterDo)
     double rotation;
     glm::dvec2 scale;
   };
-  for (const Mapping& blender : {Mapping{{0.0, 0.0}, kPi / 8.0, {1.0, 1.0}},
-                                 Mapping{{0.3, -0.2}, 1.1, {2.0, 1.5}},
-                                 Mapping{{-0.5, 0.7}, -2.4, {0.5, 3.0}}})
+  for (const Mapping& blender :
+       {Mapping{{0.0, 0.0}, kPi / 8.0, {1.0, 1.0}}, Mapping{{0.3, -0.2}, 1.1, {2.0, 1.5}},
+        Mapping{{-0.5, 0.7}, -2.4, {0.5, 3.0}}})
   {
     const double c = std::cos(blender.rotation);
     const double s = std::sin(blender.rotation);

@@ -66,10 +66,10 @@ TEST(MtlMaterial, MetallicRoughnessFollowsKhrMaterialsAnisotropy)
 
   // A full metal without anisotropy is isotropic with F0 the base and no diffuse albedo:
   // r = 0.1^(1/4), alpha = sqrt(0.1), n = 2 / 0.1 - 2 = 18.
-  const Material metal = materialFromMtl(
-      onlyMaterial("newmtl metal\nKd 0.9 0.6 0.3\nPr " + std::to_string(std::pow(0.1, 0.25)) +
-                   "\nPm 1\n"),
-      "m.mtl", warnings);
+  const Material metal =
+      materialFromMtl(onlyMaterial("newmtl metal\nKd 0.9 0.6 0.3\nPr " +
+                                   std::to_string(std::pow(0.1, 0.25)) + "\nPm 1\n"),
+                      "m.mtl", warnings);
   EXPECT_NEAR(metal.value("nu").number[0], 18.0, 1e-4);
   EXPECT_NEAR(metal.value("nv").number[0], 18.0, 1e-4);
   expectColor(metal, "f0", 0.9, 0.6, 0.3);

@@ -19,11 +19,12 @@
 // Materials: ReaderBlock::material, one library material per glTF material, named by it, else
 // "material I". A constant anisotropyRotation left after gltfToAs' swap turns the tangent
 // through a 1x1 TPR map; on a part without TEXCOORD_0 (no map can be sampled there) the part's
-// TANGENTs are turned about its NORMALs at load instead and its material has no map. Texture images (files, data: URIs, .glb buffer views) are copied into
-// defaultCacheDirectory()/gltf (core/lut/lut_cache.h; the system's temporary directory when
-// there is none) under the hash of their bytes; maps derived from them (linear albedo, metalness,
-// TPR) are baked there as EXR, so the material names files. A texture that is missing or does
-// not decode gives a warning naming the file and the texture, and its map is left out.
+// TANGENTs are turned about its NORMALs at load instead and its material has no map. Texture images
+// (files, data: URIs, .glb buffer views) are copied into defaultCacheDirectory()/gltf
+// (core/lut/lut_cache.h; the system's temporary directory when there is none) under the hash of
+// their bytes; maps derived from them (linear albedo, metalness, TPR) are baked there as EXR, so
+// the material names files. A texture that is missing or does not decode gives a warning naming the
+// file and the texture, and its map is left out.
 #include "vtkpasses/mesh/MeshReaderProcess.h"
 
 #include <string>

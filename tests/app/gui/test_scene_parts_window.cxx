@@ -8,11 +8,11 @@
 // part back; a session of the scene reopens with the same parts and materials.
 #include "app/gui/MainWindow.h"
 #include "app/gui/SceneView.h"
-#include "vtkpasses/mesh/MeshLoader.h"
-#include "vtkpasses/render/OffscreenRenderer.h"
 #include "core/lut/lut_cache.h"
-#include "vtkpasses/render/AnisoMaterial.h"
 #include "scene/LutScheduler.h"
+#include "vtkpasses/mesh/MeshLoader.h"
+#include "vtkpasses/render/AnisoMaterial.h"
+#include "vtkpasses/render/OffscreenRenderer.h"
 #include "widgets/SceneDock.h"
 
 #include <QFile>
@@ -28,18 +28,18 @@
 #include <vtkCamera.h>
 #include <vtkCompositeDataSet.h>
 #include <vtkDataArray.h>
-#include <vtkMapper.h>
-#include <vtkPointData.h>
 #include <vtkInformation.h>
+#include <vtkMapper.h>
 #include <vtkMultiBlockDataSet.h>
 #include <vtkNew.h>
-#include <vtkXMLMultiBlockDataWriter.h>
 #include <vtkOpenGLRenderer.h>
 #include <vtkPLYWriter.h>
+#include <vtkPointData.h>
 #include <vtkPolyData.h>
 #include <vtkRenderWindow.h>
 #include <vtkSphereSource.h>
 #include <vtkUnsignedCharArray.h>
+#include <vtkXMLMultiBlockDataWriter.h>
 
 using aniso::numberValue;
 using aniso::ScenePart;

@@ -44,9 +44,9 @@ inline int accessor(tinygltf::Model& model, const std::vector<float>& values, in
 // A metallic-roughness material; with STRENGTH, KHR_materials_anisotropy of that strength and
 // ROTATION (and the extension listed as used by MODEL).
 inline tinygltf::Material metallicRoughness(tinygltf::Model& model, const std::string& name,
-                                            const std::array<double, 3>& baseColor,
-                                            double metallic, double roughness,
-                                            double strength = -1.0, double rotation = 0.0)
+                                            const std::array<double, 3>& baseColor, double metallic,
+                                            double roughness, double strength = -1.0,
+                                            double rotation = 0.0)
 {
   tinygltf::Material material;
   material.name = name;

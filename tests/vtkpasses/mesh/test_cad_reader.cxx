@@ -170,7 +170,6 @@ protected:
     EXPECT_TRUE(writer.Write(this->path(name).c_str()));
     return this->path(name);
   }
-
 };
 
 const MeshBlock* blockNamed(const LoadedBlocks& loaded, const std::string& name)

@@ -97,7 +97,6 @@ protected:
       EXPECT_EQ(message.find("ERROR: In"), std::string::npos) << message;
     }
   }
-
 };
 
 std::vector<std::string> namesOf(const LoadedBlocks& loaded)
