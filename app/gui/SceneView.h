@@ -236,6 +236,7 @@ private:
   bool cameraMoved_ = false;
   // Frame costs learnt, the cost model, the load margin and the run's plan.
   RefinementPlanner planner_{kDefaultFrameBudgetMs};
+  double overheadSeconds_ = 0.0; // a pass of renderNow besides its render, running mean
   // Times the window's renders for the planner.
   std::unique_ptr<RenderTimer> renderTimer_;
   QElapsedTimer presentClock_;  // since a frame last reached the screen
