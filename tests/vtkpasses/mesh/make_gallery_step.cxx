@@ -56,11 +56,11 @@ TopoDS_Shape knob()
   return BRepPrimAPI_MakeRevol(face, gp_Ax1(bottom, gp_Dir(0.0, 0.0, 1.0))).Shape();
 }
 
-gp_Trsf at(double x, double y, double z)
+TopLoc_Location at(double x, double y, double z)
 {
   gp_Trsf t;
   t.SetTranslation(gp_Vec(x, y, z));
-  return t;
+  return TopLoc_Location(t);
 }
 } // namespace
 
@@ -76,18 +76,18 @@ int main(int argc, char** argv)
   const Handle(XCAFDoc_ShapeTool) shapes = XCAFDoc_DocumentTool::ShapeTool(document->Main());
   const TDF_Label set = shapes->NewShape();
   TDataStd_Name::Set(set, "turned-set");
-  const auto add = [&](const char* name, const TopoDS_Shape& shape, const gp_Trsf& placement)
+  const auto add = [&](const char* name, const TopoDS_Shape& shape, const TopLoc_Location& placement)
   {
     const TDF_Label product = shapes->AddShape(shape, false);
     TDataStd_Name::Set(product, name);
-    TDataStd_Name::Set(shapes->AddComponent(set, product, TopLoc_Location(placement)), name);
+    TDataStd_Name::Set(shapes->AddComponent(set, product, placement), name);
   };
-  add("plate", BRepPrimAPI_MakeBox(gp_Pnt(-60.0, -35.0, -6.0), 120.0, 70.0, 6.0).Shape(),
-      gp_Trsf());
-  add("shaft", BRepPrimAPI_MakeCylinder(kUp, 8.0, 46.0).Shape(), at(-36.0, 8.0, 0.0));
-  add("cone", BRepPrimAPI_MakeCone(kUp, 15.0, 4.0, 26.0).Shape(), at(-6.0, -14.0, 0.0));
-  add("knob", knob(), at(22.0, 10.0, 0.0));
-  add("ring", BRepPrimAPI_MakeTorus(kUp, 11.0, 3.5).Shape(), at(40.0, -18.0, 3.5));
+  add("plate", BRepPrimAPI_MakeBox(gp_Pnt(-46.0, -30.0, -5.0), 92.0, 60.0, 5.0).Shape(),
+      TopLoc_Location());
+  add("shaft", BRepPrimAPI_MakeCylinder(kUp, 8.0, 52.0).Shape(), at(-28.0, 12.0, 0.0));
+  add("cone", BRepPrimAPI_MakeCone(kUp, 14.0, 3.0, 30.0).Shape(), at(-18.0, -14.0, 0.0));
+  add("knob", knob(), at(12.0, 12.0, 0.0));
+  add("ring", BRepPrimAPI_MakeTorus(kUp, 10.0, 3.5).Shape(), at(26.0, -14.0, 3.5));
   shapes->UpdateAssemblies();
   if (!aniso::cadtest::writeStepFile(document, argv[1]))
   {
