@@ -648,6 +648,15 @@ void MainWindow::rereadPartsInBackground()
     return;
   }
   const MeshReadOptions options = assets_.meshReadOptions();
+  // Another edit while these options are being read (a part shown, a material) waits for that
+  // reading instead of starting it again.
+  const std::string reading =
+      toString(options.cadDeflection) + " " + formatNumber(options.cadAngleDegrees);
+  if (loader_->loading(kRereadLoad) && rereading_ == reading)
+  {
+    return;
+  }
+  rereading_ = reading;
   loader_->load(
       kRereadLoad,
       tr("%1 at deflection %2, %3°")

@@ -190,5 +190,6 @@ private:
   Autosave* autosave_ = nullptr;
   // The background loads (the status bar says what loads), each kind's latest request winning.
   BackgroundLoader* loader_;
+  std::string rereading_; // the read options the latest rereadPartsInBackground reads with
 };
 } // namespace aniso
