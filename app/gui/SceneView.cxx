@@ -80,7 +80,8 @@ vtkSmartPointer<vtkPolyData> appended(const std::vector<vtkPolyData*>& surfaces)
 // and in the drawing frame.
 struct SceneView::PartView
 {
-  std::string surfaceKey; // mesh, block and tangents the surface was made of
+  std::string surfaceKey; // mesh, block, tangents, read options and placement of the surface
+  std::string sourceKey;  // the same without the read options
   std::string name;
   std::string material; // its library material
   bool visible = false; // the part's visibility
@@ -366,9 +367,11 @@ void SceneView::modelChanged(const QString& qkey)
   }
   try
   {
-    if (key == "mesh")
+    if (key == "mesh" || sceneKeyAffects(key, Affects::Meshes))
     {
-      // The parts follow (partsChanged); the mesh key is the first part's file.
+      // The parts follow (partsChanged); the mesh key is the first part's file. A key of how
+      // files are read (cad-deflection, ...) reads the parts of STEP and IGES files again: from
+      // the assets when they hold them (an undo), else on a worker (surfacesOutdated).
       if (syncParts())
       {
         applySurfaces();
@@ -446,6 +449,7 @@ bool SceneView::syncParts()
 {
   const std::vector<ScenePart>& parts = model_->parts();
   bool changed = false;
+  bool outdated = false;
   if (parts_.size() > parts.size())
   {
     renderTimer_->setMappers({}); // the mappers about to go (applySurfaces sets them anew)
@@ -472,15 +476,24 @@ bool SceneView::syncParts()
     const ScenePart& wanted = parts[i];
     PartView& part = *parts_[i];
     const std::string tangents = model_->partMaterial(int(i)).value("tangents").text;
-    std::string key = wanted.mesh + "\n" + wanted.block + "\n" + tangents;
+    std::string source = wanted.mesh + "\n" + wanted.block + "\n" + tangents;
     for (double v : wanted.placement)
     {
-      key += "\n" + formatNumber(v);
+      source += "\n" + formatNumber(v);
     }
+    const std::string key = source + assets_->readOptionsKey(wanted.mesh);
     part.name = wanted.name;
     part.material = wanted.material;
-    if (part.surfaceKey != key)
+    if (part.surfaceKey != key && part.loaded && part.sourceKey == source && !readNow_ &&
+        !assets_->hasSurface(wanted.mesh, wanted.block, tangents))
     {
+      // Only the read options changed (a CAD file's tessellation) and the surface they give is
+      // not read yet: the previous one stays on screen while the window reads it on a worker.
+      outdated = true;
+    }
+    else if (part.surfaceKey != key)
+    {
+      part.sourceKey = source;
       part.surfaceKey = key;
       part.loaded = false;
       changed = true;
@@ -513,7 +526,30 @@ bool SceneView::syncParts()
       changed = true;
     }
   }
+  if (outdated)
+  {
+    emit surfacesOutdated();
+  }
   return changed;
+}
+
+void SceneView::refreshSurfaces()
+{
+  readNow_ = true;
+  attempt(
+      [this]
+      {
+        if (syncParts())
+        {
+          planner_.forgetCosts();
+          applySurfaces();
+          beginInteraction();
+          applyMaterial();
+          applySelection();
+        }
+      });
+  readNow_ = false;
+  requestRender();
 }
 
 void SceneView::applySurfaces()

@@ -106,6 +106,10 @@ public:
   // quality (the target sample count).
   RenderSettings renderSettings(int width, int height) const;
 
+  // Brings the parts' surfaces in line with the model, reading on this thread what the assets
+  // do not hold yet (or reporting it skipped): after a worker read them with new read options.
+  void refreshSurfaces();
+
   // Frames the current mesh from the default direction and forgets any stored camera.
   void resetCamera();
   // The window's camera as the model stores it.
@@ -171,11 +175,16 @@ signals:
   void interactionChanged(bool interacting);
   // The drawn parts changed (a part added, removed, shown, hidden, or its surface replaced).
   void partsDrawn();
+  // Parts whose file is read anew with other read options (a STEP or IGES file's tessellation,
+  // SceneAssets::readOptionsKey) keep their previous surfaces, since the assets do not hold the
+  // new ones: those are to be read (on a worker), then refreshSurfaces().
+  void surfacesOutdated();
 
 private:
   void modelChanged(const QString& key);
   // Brings the part actors in line with the model's parts (surfaces loaded for new meshes,
-  // blocks or tangents, visibility); returns whether what is drawn changed.
+  // blocks, tangents, placements or read options (unless only those changed and the assets do
+  // not hold the surface: surfacesOutdated), visibility); returns whether what is drawn changed.
   bool syncParts();
   // The drawing frame, the surfaces in it and the camera after the drawn parts changed.
   void applySurfaces();
@@ -243,6 +252,7 @@ private:
   bool presentPending_ = false; // presentFrame is queued
   bool maxTextureSideKnown_ = false;
   bool changedSettings_ = false; // applyMaterial gave a part other settings
+  bool readNow_ = false;         // syncParts reads outdated surfaces (refreshSurfaces)
   // Errors of the renderer (VTK's error output while drawing, glGetError after a frame), each
   // distinct message reported once, queued as errorOccurred.
   RenderErrorOutput errors_;
