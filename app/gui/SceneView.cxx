@@ -700,6 +700,27 @@ long long SceneView::partTriangles(int part) const
   return p.surface ? p.surface->GetNumberOfPolys() : -1;
 }
 
+vtkPolyData* SceneView::partDrawnSurface(int part) const
+{
+  const PartView& p = *parts_.at(std::size_t(part));
+  return p.inRenderer ? p.drawn.Get() : nullptr;
+}
+
+vtkPolyData* SceneView::partSurfaceToDraw(int part) const
+{
+  const PartView& p = *parts_.at(std::size_t(part));
+  if (!p.inRenderer)
+  {
+    return nullptr;
+  }
+  return interacting_ && p.drawnInteractive ? p.drawnInteractive.Get() : p.drawn.Get();
+}
+
+ParameterSet SceneView::partParameters(int part) const
+{
+  return model_->partParameters(part);
+}
+
 int SceneView::partAt(int x, int y)
 {
   // A ray cast through the parts' triangles (vtkCellPicker): nothing is rendered, so a

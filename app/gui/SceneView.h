@@ -92,6 +92,17 @@ public:
   bool partDrawn(int part) const;
   // Triangles of part I's surface (-1 when it did not load).
   long long partTriangles(int part) const;
+  // Part I's surface in the drawing frame as drawn when still, never the stand-in (null while
+  // the part is not drawn): the same polydata its actor draws once still. The comparison window
+  // draws it.
+  vtkPolyData* partDrawnSurface(int part) const;
+  // What part I's actor draws now: its stand-in while things move (when it has one), else
+  // partDrawnSurface(I). The views of other models (lit, LEADR, microstructure) draw it, one actor
+  // per drawn part, following partsDrawn and interactionChanged.
+  vtkPolyData* partSurfaceToDraw(int part) const;
+  // The declared parameters part I is drawn with (SceneModel::partParameters: the scene's, with
+  // the part's library material over the material keys).
+  ParameterSet partParameters(int part) const;
   // The part drawn at display position (X, Y) (VTK's convention: origin bottom left), or -1.
   int partAt(int x, int y);
   // What a click at (X, Y) does: selects the part there (EXTEND: adds it to the selection, or
@@ -129,12 +140,12 @@ public:
   // Triangles of what the view draws now: the surface, or while things move the surface's
   // stand-in when it has one (SceneAssets::interactiveSurface, LevelOfDetail.h).
   long long drawnTriangles() const;
-  // The surface in the drawing frame (DrawingFrame.h) as drawn when still, never the stand-in
-  // (the comparison window draws it).
+  // The drawn parts' surfaces together in the drawing frame (DrawingFrame.h) as drawn when
+  // still, never the stand-in (null when no part is drawn). The views of other models draw the
+  // parts one by one instead (partDrawnSurface, partSurfaceToDraw).
   vtkPolyData* drawnSurface() const;
-  // What the view draws now: the stand-in while things move (when the surface has one), else
-  // drawnSurface(). Views of other models (lit, LEADR, microstructure) follow it, swapping their
-  // mapper's input on interactionChanged.
+  // What the view draws now, together: the stand-ins while things move (when a part has one),
+  // else drawnSurface().
   vtkPolyData* surfaceToDraw() const;
   void setSettleMs(int ms);
   // The longest a progressive frame should keep the UI thread (the window's render of it), by
@@ -173,7 +184,8 @@ signals:
   void lightingBusyChanged(bool busy);
   // Something started moving (cheap frames from now on) or settled (refinement).
   void interactionChanged(bool interacting);
-  // The drawn parts changed (a part added, removed, shown, hidden, or its surface replaced).
+  // The drawn parts changed (a part added, removed, shown, hidden, or its surface replaced), or
+  // the drawing frame with them: the views of other models take the parts' surfaces anew.
   void partsDrawn();
   // Parts whose file is read anew with other read options (a STEP or IGES file's tessellation,
   // SceneAssets::readOptionsKey) keep their previous surfaces, since the assets do not hold the
@@ -234,8 +246,8 @@ private:
   // The surface is drawn in the frame of its unit bounding sphere (DrawingFrame.h), so the
   // renderer's camera lives there too; the model's camera stays in the mesh's coordinates.
   DrawingFrame drawing_;
-  // The drawn parts together in the drawing frame (the other models' views and the comparison
-  // window draw it), and their stand-ins while moving (null when no part has one).
+  // The drawn parts together in the drawing frame, and their stand-ins while moving (null when
+  // no part has one).
   vtkSmartPointer<vtkPolyData> drawnSurface_;
   vtkSmartPointer<vtkPolyData> drawnInteractive_;
   QTimer* settle_;
