@@ -1010,16 +1010,26 @@ void MainWindow::exportScreenshot(const QString& path, const ScreenshotOptions& 
   const int width = std::max(1, static_cast<int>(vtkWidget_->width() * ratio)) * options.scale;
   const int height = std::max(1, static_cast<int>(vtkWidget_->height() * ratio)) * options.scale;
   RenderSettings settings = view_->renderSettings(width, height);
-  // A lit model is exported as the view draws it.
+  // A lit model is exported as the view draws it, each part with its own material.
   LitModelSettings lit;
   if (litSettingsOf(model_, lit))
   {
     settings.installMaterial = litModelInstaller(lit);
+    for (std::size_t i = 0; i < settings.parts.size(); ++i)
+    {
+      LitModelSettings part = lit;
+      litSceneOf(model_, model_.partParameters(int(i)), part);
+      settings.parts[i].installMaterial = litModelInstaller(part);
+    }
   }
   // So are LEADR and the microstructure.
   if (MaterialInstaller surface = surfaceModelInstallerOf(model_, assets_))
   {
     settings.installMaterial = std::move(surface);
+    for (std::size_t i = 0; i < settings.parts.size(); ++i)
+    {
+      settings.parts[i].installMaterial = surfaceModelInstallerOf(model_, int(i), assets_);
+    }
   }
   if (options.transparent)
   {

@@ -11,6 +11,7 @@
 #include "app/gui/CompareWindow.h"
 #include "app/gui/LitModelView.h"
 #include "app/gui/MainWindow.h"
+#include "core/image/image.h"
 #include "app/gui/SceneView.h"
 #include "app/gui/SurfaceModelView.h"
 #include "scene/LutScheduler.h"
@@ -204,6 +205,36 @@ private slots:
     const auto litRightBefore = meanAround(rw, rightAt());
     QVERIFY2(rightIsGold(litLeftBefore, litRightBefore),
              qPrintable("ward: left " + rgb(litLeftBefore) + ", right " + rgb(litRightBefore)));
+
+    // A screenshot of the lit model draws each part with its own material, as the view does
+    // (linear radiance: the same test of blue against red).
+    {
+      const QString shot = dir.filePath("ward.exr");
+      window.exportScreenshot(shot, {});
+      const aniso::Image image = aniso::readImage(shot.toStdString());
+      QCOMPARE(image.width, rw->GetSize()[0]);
+      QCOMPARE(image.height, rw->GetSize()[1]);
+      const auto imageAround = [&](std::array<int, 2> at)
+      {
+        std::array<double, 3> mean{0.0, 0.0, 0.0};
+        for (int dy = -3; dy <= 3; ++dy)
+        {
+          for (int dx = -3; dx <= 3; ++dx)
+          {
+            for (int c = 0; c < 3; ++c)
+            {
+              mean[std::size_t(c)] +=
+                  255.0 * image.at(at[0] + dx, image.height - 1 - (at[1] + dy), c) / 49.0;
+            }
+          }
+        }
+        return mean;
+      };
+      const auto shotLeft = imageAround(leftAt());
+      const auto shotRight = imageAround(rightAt());
+      QVERIFY2(rightIsGold(shotLeft, shotRight),
+               qPrintable("ward screenshot: left " + rgb(shotLeft) + ", right " + rgb(shotRight)));
+    }
 
     // LEADR: one actor per part too, the right one gold.
     window.editor()->edit("model", textValue("leadr"));
