@@ -1,5 +1,12 @@
 # Sourced by the set-up scripts: aniso_install_packages PACKAGE... installs the Debian 12
 # packages that are missing (apt-get as root; otherwise prints the line to run and fails).
+# ANISO_PACKAGES: what the build, its tests and their data need (setup.sh, sanitize.sh).
+ANISO_PACKAGES=(cmake g++ make pkg-config libvtk9-dev libvtk9-qt-dev qtbase5-dev libopenimageio-dev
+  openimageio-tools libglm-dev libgtest-dev libbenchmark-dev xvfb xauth libgl1-mesa-dri
+  blender-data nlohmann-json3-dev libtinygltf-dev libocct-data-exchange-dev
+  libocct-modeling-algorithms-dev libocct-ocaf-dev libocct-foundation-dev libocct-modeling-data-dev
+  assimp-testmodels)
+
 aniso_install_packages() {
   local missing=() p
   for p in "$@"; do

@@ -8,9 +8,7 @@
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 . "$root/scripts/packages.sh"
-aniso_install_packages cmake g++ make pkg-config libvtk9-dev libvtk9-qt-dev qtbase5-dev \
-  libopenimageio-dev openimageio-tools libglm-dev libgtest-dev libbenchmark-dev xvfb xauth \
-  libgl1-mesa-dri blender-data assimp-testmodels
+aniso_install_packages "${ANISO_PACKAGES[@]}"
 build="${ANISO_ASAN_BUILD_DIR:-$root/build-asan}"
 jobs="$(nproc 2>/dev/null || echo 2)"
 flags="-fsanitize=address,undefined -fno-sanitize-recover=undefined -fno-omit-frame-pointer"

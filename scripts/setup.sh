@@ -3,14 +3,8 @@
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 
-packages=(cmake g++ make pkg-config libvtk9-dev libvtk9-qt-dev qtbase5-dev libopenimageio-dev
-  openimageio-tools libglm-dev libgtest-dev libbenchmark-dev xvfb xauth libgl1-mesa-dri
-  blender-data nlohmann-json3-dev libtinygltf-dev libocct-data-exchange-dev
-  libocct-modeling-algorithms-dev libocct-ocaf-dev libocct-foundation-dev libocct-modeling-data-dev
-  assimp-testmodels)
-
 . "$root/scripts/packages.sh"
-aniso_install_packages "${packages[@]}"
+aniso_install_packages "${ANISO_PACKAGES[@]}"
 
 build="${ANISO_BUILD_DIR:-$root/build}"
 jobs="$(nproc 2>/dev/null || echo 2)"

@@ -36,6 +36,9 @@ void BackgroundLoader::load(const std::string& kind, const QString& name, const 
   // The worker loads into assets of its own; this thread takes them over on delivery.
   auto staged = std::make_shared<SceneAssets>();
   staged->setMaxTextureSide(assets_->maxTextureSide());
+  // Read as the scene's assets read (a CAD file's tessellation), so that what it reads is found
+  // there under the same keys.
+  staged->setMeshReadOptions(assets_->meshReadOptions());
   pool_->start(
       [this, kind, id, name, staged, load, deliver, prefetch]
       {

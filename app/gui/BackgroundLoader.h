@@ -1,7 +1,8 @@
 #pragma once
 // The window's background loads: what a file names (a mesh, an environment, a map, what a
 // session names) is read on a worker thread into assets of its own (a staging SceneAssets),
-// which the scene's assets then take over on the UI thread before what opens it runs, reading
+// read as the scene's assets read (SceneAssets::meshReadOptions), which the scene's assets then
+// take over on the UI thread before what opens it runs, reading
 // nothing again. Of each kind of request the latest wins (an earlier one that finishes later is
 // dropped); a failure is reported once, in the loader's words (with the file's name), and
 // leaves the scene as it was.

@@ -24,15 +24,22 @@
 
 namespace aniso
 {
+// A part as a viewport draws it, kept across updates.
+struct CompareWindow::PaneActor
+{
+  vtkNew<vtkActor> actor;
+  vtkNew<vtkOpenGLPolyDataMapper> mapper;
+  std::unique_ptr<LitModelMaterial> material;
+  bool inRenderer = false;
+};
+
 struct CompareWindow::Pane
 {
   std::string name;
   LitModel model = LitModel::AshikhminShirley;
   vtkNew<vtkOpenGLRenderer> renderer;
-  vtkNew<vtkActor> actor;
-  vtkNew<vtkOpenGLPolyDataMapper> mapper;
   vtkNew<vtkTextActor> label;
-  std::unique_ptr<LitModelMaterial> material;
+  std::vector<std::unique_ptr<PaneActor>> parts; // parallel to the view's parts
 };
 
 std::vector<std::string> comparedLitModels()
@@ -78,9 +85,6 @@ CompareWindow::CompareWindow(SceneModel* model, SceneView* view, QWidget* parent
                                 double(column + 1) / columns, double(row + 1) / rows);
     pane->renderer->SetActiveCamera(camera_);
     pane->renderer->SetBackground(0.12, 0.12, 0.12);
-    pane->mapper->ScalarVisibilityOff();
-    pane->actor->SetMapper(pane->mapper);
-    pane->renderer->AddActor(pane->actor);
     const ShadingModelInfo& info = shadingModel(pane->name, "model");
     pane->label->SetInput(std::string(info.title).c_str());
     pane->label->GetTextProperty()->SetFontSize(14);
@@ -96,10 +100,20 @@ CompareWindow::CompareWindow(SceneModel* model, SceneView* view, QWidget* parent
             {
               refresh();
             }
-            else
+            else if (!isMaterialKey(key.toStdString()))
             {
+              // Material keys are the edited parts' materials: materialsChanged brings them.
               updateMaterials();
             }
+          });
+  // A part's material edited or replaced.
+  connect(model_, &SceneModel::materialsChanged, this, [this] { updateMaterials(); });
+  // Parts shown, hidden, added, removed or given other surfaces (the view has them in place).
+  connect(view_, &SceneView::partsDrawn, this,
+          [this]
+          {
+            syncParts();
+            updateMaterials();
           });
   resize(300 * columns, 300 * rows);
   refresh();
@@ -109,9 +123,12 @@ CompareWindow::~CompareWindow()
 {
   for (auto& pane : panes_)
   {
-    if (pane->material)
+    for (auto& part : pane->parts)
     {
-      pane->material->detach();
+      if (part->material)
+      {
+        part->material->detach();
+      }
     }
   }
 }
@@ -126,16 +143,72 @@ vtkRenderer* CompareWindow::viewport(int index) const
   return panes_.at(std::size_t(index))->renderer;
 }
 
-void CompareWindow::refresh()
+vtkActor* CompareWindow::partActor(int index, int part) const
 {
-  // The view's own actor (the first one) carries the drawing frame whatever model the view
-  // shows; the mesh is the surface itself (the view's mapper draws a stand-in while moving).
-  vtkPolyData* mesh = view_->drawnSurface();
+  const Pane& pane = *panes_.at(std::size_t(index));
+  if (part < 0 || part >= int(pane.parts.size()) || !pane.parts[std::size_t(part)]->inRenderer)
+  {
+    return nullptr;
+  }
+  return pane.parts[std::size_t(part)]->actor;
+}
+
+void CompareWindow::syncParts()
+{
+  const int count = view_->partCount();
   for (auto& pane : panes_)
   {
-    pane->mapper->SetInputData(mesh);
-    setDrawingFrame(pane->actor, view_->drawingFrame()); // the scene's parts, point lights
+    while (int(pane->parts.size()) > count)
+    {
+      PaneActor& gone = *pane->parts.back();
+      if (gone.material)
+      {
+        gone.material->detach();
+      }
+      if (gone.inRenderer)
+      {
+        pane->renderer->RemoveActor(gone.actor);
+      }
+      pane->parts.pop_back();
+    }
+    while (int(pane->parts.size()) < count)
+    {
+      auto part = std::make_unique<PaneActor>();
+      part->mapper->ScalarVisibilityOff();
+      part->actor->SetMapper(part->mapper);
+      pane->parts.push_back(std::move(part));
+    }
+    for (int i = 0; i < count; ++i)
+    {
+      PaneActor& part = *pane->parts[std::size_t(i)];
+      // The surface itself, as drawn when still (the view draws a stand-in while moving).
+      vtkPolyData* mesh = view_->partDrawnSurface(i);
+      if (mesh)
+      {
+        if (mesh != part.mapper->GetInput())
+        {
+          part.mapper->SetInputData(mesh);
+        }
+        setDrawingFrame(part.actor, view_->drawingFrame()); // the scene's parts, point lights
+      }
+      // Hidden parts (and those that did not load) are not drawn.
+      if (mesh && !part.inRenderer)
+      {
+        pane->renderer->AddActor(part.actor);
+        part.inRenderer = true;
+      }
+      else if (!mesh && part.inRenderer)
+      {
+        pane->renderer->RemoveActor(part.actor);
+        part.inRenderer = false;
+      }
+    }
   }
+}
+
+void CompareWindow::refresh()
+{
+  syncParts();
   camera_->DeepCopy(view_->renderer()->GetActiveCamera());
   for (auto& pane : panes_)
   {
@@ -148,20 +221,37 @@ void CompareWindow::updateMaterials()
 {
   try
   {
-    // Lights and material as the scene has them; only the model differs per viewport.
-    LitModelSettings settings;
-    litSceneOf(*model_, settings);
+    // Lights as the scene has them, each part's material; only the model differs per viewport.
+    // Every setting is made and checked before any is applied.
+    std::vector<LitModelSettings> parts(std::size_t(view_->partCount()));
+    for (int i = 0; i < int(parts.size()) && i < int(model_->parts().size()); ++i)
+    {
+      if (view_->partDrawn(i))
+      {
+        litSceneOf(*model_, view_->partParameters(i), parts[std::size_t(i)]);
+        LitModelMaterial::validate(parts[std::size_t(i)]);
+      }
+    }
     for (auto& pane : panes_)
     {
-      settings.model = pane->model;
-      if (!pane->material)
+      for (std::size_t i = 0; i < pane->parts.size() && i < parts.size(); ++i)
       {
-        pane->material = std::make_unique<LitModelMaterial>(settings);
-        pane->material->apply(pane->actor, pane->renderer);
-      }
-      else
-      {
-        pane->material->setSettings(settings);
+        PaneActor& part = *pane->parts[i];
+        if (!part.inRenderer)
+        {
+          continue;
+        }
+        LitModelSettings settings = parts[i];
+        settings.model = pane->model;
+        if (!part.material)
+        {
+          part.material = std::make_unique<LitModelMaterial>(settings);
+          part.material->apply(part.actor, pane->renderer);
+        }
+        else
+        {
+          part.material->setSettings(settings);
+        }
       }
     }
   }

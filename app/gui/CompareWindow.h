@@ -1,7 +1,10 @@
 #pragma once
-// The comparison view: the scene's mesh drawn by every lit model of the registry side by side,
-// one viewport each in a grid, with one camera for all (moving it in any viewport moves every
-// one), the scene's lights and material. It follows the scene's changes while open.
+// The comparison view: the scene drawn by every lit model of the registry side by side, one
+// viewport each in a grid, with one camera for all (moving it in any viewport moves every one),
+// the scene's lights. Every viewport draws each of the main view's drawn parts (its surface as
+// drawn when still, SceneView::partDrawnSurface) with an actor of its own and that part's
+// material (SceneView::partParameters); actors and materials are kept per part and follow the
+// scene's changes (values, materials, parts shown, hidden, added or removed) while open.
 #include "scene/SceneModel.h"
 
 #include <QWidget>
@@ -11,6 +14,7 @@
 #include <vtkNew.h>
 
 class QVTKOpenGLNativeWidget;
+class vtkActor;
 class vtkCamera;
 class vtkGenericOpenGLRenderWindow;
 class vtkRenderer;
@@ -33,6 +37,8 @@ public:
 
   int viewportCount() const;
   vtkRenderer* viewport(int index) const;
+  // The actor viewport INDEX draws part PART with (null while the part is not drawn).
+  vtkActor* partActor(int index, int part) const;
   QVTKOpenGLNativeWidget* vtkWidget() const { return widget_; }
 
   // Takes the main view's mesh and camera again.
@@ -47,6 +53,9 @@ protected:
 
 private:
   struct Pane;
+  struct PaneActor;
+  // Each pane's actors in line with the view's drawn parts and their surfaces.
+  void syncParts();
   void updateMaterials();
 
   SceneModel* model_;

@@ -6,11 +6,15 @@
 #include "vtkpasses/render/DrawingFrame.h"
 #include "vtkpasses/render/LitModelMaterial.h"
 
+#include <algorithm>
+#include <utility>
+#include <vector>
 #include <vtkActor.h>
 #include <vtkActorCollection.h>
 #include <vtkOpenGLPolyDataMapper.h>
 #include <vtkOpenGLRenderer.h>
 #include <vtkPolyData.h>
+#include <vtkNew.h>
 #include <vtkPropCollection.h>
 
 namespace aniso
@@ -59,15 +63,18 @@ bool litSettingsOf(const SceneModel& model, LitModelSettings& settings)
 
 void litSceneOf(const SceneModel& model, LitModelSettings& settings)
 {
+  litSceneOf(model, model.parameters(), settings);
+}
+
+void litSceneOf(const SceneModel& model, const ParameterSet& parameters,
+                LitModelSettings& settings)
+{
   settings.lights = parseLightList(model.text("lights"), "lights");
   const std::string& sample = model.text("sample-material");
   if (sample == kUniformSampleMaterial)
   {
-    const std::array<double, 3> f0 = model.color("f0");
-    const std::array<double, 3> albedo = model.color("albedo");
-    settings.maps = std::make_shared<const SvMaps>(uniformSvMaps(
-        uniformTexel(AsLobe{model.real("nu"), model.real("nv")}, glm::dvec3(f0[0], f0[1], f0[2]),
-                     glm::dvec3(albedo[0], albedo[1], albedo[2]))));
+    settings.maps = std::make_shared<const SvMaps>(uniformSvMaps(uniformTexel(
+        parameters.lobe(), parameters.color("f0"), parameters.color("albedo"))));
   }
   else
   {
@@ -75,81 +82,138 @@ void litSceneOf(const SceneModel& model, LitModelSettings& settings)
   }
 }
 
+// A part as the lit model draws it: its actor, mapper and material, kept across updates.
+struct LitModelView::Part
+{
+  vtkNew<vtkActor> actor;
+  vtkNew<vtkOpenGLPolyDataMapper> mapper;
+  std::unique_ptr<LitModelMaterial> material;
+  bool inRenderer = false;
+};
+
 LitModelView::LitModelView(SceneModel* model, SceneView* view, QObject* parent)
     : QObject(parent), model_(model), view_(view), renderer_(view->renderer())
 {
-  mapper_->ScalarVisibilityOff();
-  actor_->SetMapper(mapper_);
-  actor_->VisibilityOff();
-  renderer_->AddActor(actor_);
-  // Connected after the view, so the view's mesh is already in place when this runs.
+  // Connected after the view, so the view's parts are already in place when these run.
   connect(model_, &SceneModel::valueChanged, this,
           [this](const QString& key)
           {
-            // Only the keys the lit actor depends on: any other change leaves it as it is.
-            if (sceneKeyAffects(key.toStdString(), Affects::LitModels))
+            // Only the keys the lit actors depend on: any other change leaves them as they are.
+            // The material keys' values are the edited parts' materials: materialsChanged brings
+            // what changed, part by part.
+            const std::string name = key.toStdString();
+            if (!isMaterialKey(name) && sceneKeyAffects(name, Affects::LitModels))
             {
               update();
             }
           });
-  // The stand-in of a large surface while things move, the surface once still, as the view.
-  connect(view_, &SceneView::interactionChanged, this,
+  // A part's material edited or replaced (also one not edited through the scene's keys).
+  connect(model_, &SceneModel::materialsChanged, this,
           [this]
           {
-            vtkPolyData* mesh = view_->surfaceToDraw();
-            if (mapper_->GetInput() && mesh && mesh != mapper_->GetInput())
+            if (active_)
             {
-              mapper_->SetInputData(mesh);
+              update();
             }
           });
+  // Parts added, removed, shown, hidden or given other surfaces (the drawing frame with them).
+  connect(view_, &SceneView::partsDrawn, this,
+          [this]
+          {
+            if (active_)
+            {
+              update();
+            }
+          });
+  // The stand-ins of large surfaces while things move, the surfaces once still, as the view.
+  connect(view_, &SceneView::interactionChanged, this, &LitModelView::followSurfaces);
   update();
 }
 
 LitModelView::~LitModelView()
 {
-  if (material_)
+  for (auto& part : parts_)
   {
-    material_->detach();
+    if (part->material)
+    {
+      part->material->detach();
+    }
+    if (part->inRenderer)
+    {
+      renderer_->RemoveActor(part->actor);
+    }
   }
-  renderer_->RemoveActor(actor_);
   view_->setPartsShown(true);
 }
 
 bool LitModelView::active() const
 {
-  return actor_->GetVisibility() != 0;
+  return active_;
 }
 
 vtkActor* LitModelView::litActor() const
 {
-  return actor_;
+  for (const auto& part : parts_)
+  {
+    if (part->inRenderer)
+    {
+      return part->actor;
+    }
+  }
+  return nullptr;
+}
+
+vtkActor* LitModelView::partActor(int part) const
+{
+  if (part < 0 || part >= int(parts_.size()) || !parts_[std::size_t(part)]->inRenderer)
+  {
+    return nullptr;
+  }
+  return parts_[std::size_t(part)]->actor;
+}
+
+const LitModelMaterial* LitModelView::partMaterial(int part) const
+{
+  return partActor(part) ? parts_[std::size_t(part)]->material.get() : nullptr;
+}
+
+void LitModelView::followSurfaces()
+{
+  for (std::size_t i = 0; i < parts_.size(); ++i)
+  {
+    Part& part = *parts_[i];
+    vtkPolyData* mesh = part.inRenderer && int(i) < view_->partCount()
+                            ? view_->partSurfaceToDraw(int(i))
+                            : nullptr;
+    if (mesh && mesh != part.mapper->GetInput())
+    {
+      part.mapper->SetInputData(mesh);
+    }
+  }
 }
 
 void LitModelView::update()
 {
-  LitModelSettings settings;
+  LitModelSettings scene;
   bool lit = false;
+  // Each drawn part's settings (the scene's model and lights, the part's material), all made
+  // and checked before any is applied.
+  std::vector<std::pair<int, LitModelSettings>> drawn;
   try
   {
-    lit = litSettingsOf(*model_, settings);
+    lit = litSettingsOf(*model_, scene);
     // The surface models (LEADR, microstructure) are SurfaceModelView's.
-    if (lit)
+    const int count = std::min(view_->partCount(), int(model_->parts().size()));
+    for (int i = 0; lit && i < count; ++i)
     {
-      vtkPolyData* mesh = view_->surfaceToDraw();
-      if (mesh != mapper_->GetInput())
+      if (!view_->partDrawn(i))
       {
-        mapper_->SetInputData(mesh);
+        continue;
       }
-      setDrawingFrame(actor_, view_->drawingFrame()); // the scene's parts, its point lights
-      if (!material_)
-      {
-        material_ = std::make_unique<LitModelMaterial>(settings);
-        material_->apply(actor_, renderer_);
-      }
-      else
-      {
-        material_->setSettings(settings);
-      }
+      LitModelSettings settings = scene;
+      litSceneOf(*model_, view_->partParameters(i), settings);
+      LitModelMaterial::validate(settings);
+      drawn.emplace_back(i, std::move(settings));
     }
   }
   catch (const Error& e)
@@ -158,8 +222,84 @@ void LitModelView::update()
     // The previous picture stays rather than a half-applied one.
     return;
   }
-  actor_->SetVisibility(lit);
-  view_->setPartsShown(!lit);
+  if (lit)
+  {
+    while (int(parts_.size()) > view_->partCount())
+    {
+      Part& gone = *parts_.back();
+      if (gone.material)
+      {
+        gone.material->detach();
+      }
+      if (gone.inRenderer)
+      {
+        renderer_->RemoveActor(gone.actor);
+      }
+      parts_.pop_back();
+    }
+    while (int(parts_.size()) < view_->partCount())
+    {
+      auto part = std::make_unique<Part>();
+      part->mapper->ScalarVisibilityOff();
+      part->actor->SetMapper(part->mapper);
+      parts_.push_back(std::move(part));
+    }
+    std::vector<bool> draws(parts_.size(), false);
+    for (auto& [i, settings] : drawn)
+    {
+      Part& part = *parts_[std::size_t(i)];
+      draws[std::size_t(i)] = true;
+      vtkPolyData* mesh = view_->partSurfaceToDraw(i);
+      if (mesh != part.mapper->GetInput())
+      {
+        part.mapper->SetInputData(mesh);
+      }
+      setDrawingFrame(part.actor, view_->drawingFrame()); // the scene's parts, its point lights
+      try
+      {
+        if (!part.material)
+        {
+          part.material = std::make_unique<LitModelMaterial>(settings);
+          part.material->apply(part.actor, renderer_);
+        }
+        else
+        {
+          part.material->setSettings(settings);
+        }
+      }
+      catch (const Error& e)
+      {
+        // Validated above: only a mapper that is no OpenGL one gets here.
+        emit errorOccurred(QString::fromUtf8(e.what()));
+      }
+    }
+    // Hidden parts (and those that did not load) are not in the renderer: they cost nothing.
+    for (std::size_t i = 0; i < parts_.size(); ++i)
+    {
+      Part& part = *parts_[i];
+      if (draws[i] && !part.inRenderer)
+      {
+        renderer_->AddActor(part.actor);
+        part.inRenderer = true;
+      }
+      else if (!draws[i] && part.inRenderer)
+      {
+        renderer_->RemoveActor(part.actor);
+        part.inRenderer = false;
+      }
+    }
+  }
+  for (auto& part : parts_)
+  {
+    part->actor->SetVisibility(lit);
+  }
+  if (lit || surfaceModelKeys(model_->text("model")).empty())
+  {
+    // The lit actors in place of the view's parts, or the parts back for the environment
+    // material (a surface model's actors are SurfaceModelView's to show).
+    view_->setPartsShown(!lit);
+  }
+  active_ = lit;
   view_->requestRender();
 }
 } // namespace aniso

@@ -1,9 +1,12 @@
 #pragma once
 // Draws the scene with the lit model the scene chooses ("model" key, SceneShading.h) instead of
-// the environment material: a second actor in the view's renderer, drawing the same mesh with a
-// LitModelMaterial under the scene's lights and sample material, shown in place of the view's
-// parts' actors while the model is a lit one (as `aniso render --model` does offscreen). The view's
-// actor keeps its environment material, so going back to as-env costs nothing.
+// the environment material: actors of its own in the view's renderer, one per drawn part, each
+// drawing the part's surface (SceneView::partSurfaceToDraw) with a LitModelMaterial of that
+// part's material (SceneView::partParameters) under the scene's lights, shown in place of the
+// view's parts' actors while the model is a lit one (as `aniso render --model` does offscreen).
+// Actors and materials are kept per part: edits, new materials, shown or hidden parts and the
+// stand-ins while moving set their inputs and settings. The view's actors keep their
+// environment materials, so going back to as-env costs nothing.
 #include "core/lights/light.h"
 #include "core/models/models.h"
 #include "scene/SceneModel.h"
@@ -11,10 +14,9 @@
 #include <QObject>
 #include <memory>
 #include <string>
-#include <vtkNew.h>
+#include <vector>
 
 class vtkActor;
-class vtkOpenGLPolyDataMapper;
 class vtkRenderer;
 
 namespace aniso
@@ -32,6 +34,11 @@ vtkActor* firstActorOf(vtkRenderer* renderer);
 // The lights and material of MODEL's scene into SETTINGS, whatever its model (the comparison
 // view draws them with every lit model). Throws as litSettingsOf.
 void litSceneOf(const SceneModel& model, LitModelSettings& settings);
+// The same for a part drawn with PARAMETERS (SceneModel::partParameters): the scene's lights, and
+// the uniform material of the part's n_u, n_v, F0 and albedo (or the scene's sample material when
+// it chooses one). Throws as litSettingsOf.
+void litSceneOf(const SceneModel& model, const ParameterSet& parameters,
+                LitModelSettings& settings);
 
 class LitModelView : public QObject
 {
@@ -42,21 +49,29 @@ public:
   LitModelView(SceneModel* model, SceneView* view, QObject* parent = nullptr);
   ~LitModelView() override;
 
-  // True while the lit actor is the one on screen.
+  // True while the lit actors are the ones on screen.
   bool active() const;
+  // The first drawn part's lit actor (null when no part is drawn).
   vtkActor* litActor() const;
+  // Part PART's lit actor while it is in the renderer (the part drawn, the model a lit one, or
+  // null).
+  vtkActor* partActor(int part) const;
+  // Part PART's lit material (null while it has no actor in the renderer).
+  const LitModelMaterial* partMaterial(int part) const;
 
 signals:
   void errorOccurred(const QString& message);
 
 private:
+  struct Part;
   void update();
+  // The mappers' inputs: what the view's parts draw now (the stand-ins while moving).
+  void followSurfaces();
 
   SceneModel* model_;
   SceneView* view_;
   vtkRenderer* renderer_;
-  vtkNew<vtkActor> actor_;
-  vtkNew<vtkOpenGLPolyDataMapper> mapper_;
-  std::unique_ptr<LitModelMaterial> material_;
+  bool active_ = false;
+  std::vector<std::unique_ptr<Part>> parts_; // parallel to the view's parts
 };
 } // namespace aniso

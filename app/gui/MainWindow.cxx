@@ -67,6 +67,7 @@ const char* const kMeshLoad = "open mesh";
 const char* const kAddLoad = "add mesh";
 const char* const kEnvironmentLoad = "open environment";
 const char* const kSessionLoad = "open session";
+const char* const kRereadLoad = "read parts again";
 
 // Equirectangular environments are twice as wide as high; maps usually are not.
 bool looksEquirectangular(int width, int height)
@@ -165,6 +166,9 @@ MainWindow::MainWindow(QWidget* parent)
   connect(luts_, &LutScheduler::bakeFailed, this, toStatus);
   connect(view_, &SceneView::noteAdded, this,
           [this](const QString& note) { statusBar()->showMessage(note, 8000); });
+  // New read options (cad-deflection, cad-angle): the parts of STEP and IGES files are read
+  // again on a worker, the previous surfaces shown meanwhile.
+  connect(view_, &SceneView::surfacesOutdated, this, &MainWindow::rereadPartsInBackground);
   connect(view_, &SceneView::frameRendered, this, &MainWindow::showSamples);
   connect(view_, &SceneView::interactionChanged, this, &MainWindow::setInteractiveResolution);
   connect(view_, &SceneView::lightingBusyChanged, this,
@@ -471,6 +475,7 @@ bool MainWindow::openMesh(const QString& path)
           }
           editor_.undoStack()->endMacro();
         }
+        showTessellation();
         for (const QString& w : warnings)
         {
           reportError(w, false);
@@ -633,6 +638,103 @@ void MainWindow::openMeshInBackground(const QString& path)
       [this, path] { openMesh(path); });
 }
 
+void MainWindow::rereadPartsInBackground()
+{
+  struct Wanted
+  {
+    std::string mesh, block, tangents;
+  };
+  std::vector<Wanted> wanted;
+  QStringList files;
+  for (std::size_t i = 0; i < model_.parts().size(); ++i)
+  {
+    const ScenePart& part = model_.parts()[i];
+    const std::string tangents = model_.partMaterial(int(i)).value("tangents").text;
+    if (!assets_.readOptionsKey(part.mesh).empty() &&
+        !assets_.hasSurface(part.mesh, part.block, tangents))
+    {
+      wanted.push_back({part.mesh, part.block, tangents});
+      const QString file = QFileInfo(QString::fromStdString(part.mesh)).fileName();
+      if (!files.contains(file))
+      {
+        files << file;
+      }
+    }
+  }
+  if (wanted.empty())
+  {
+    view_->refreshSurfaces();
+    return;
+  }
+  const MeshReadOptions options = assets_.meshReadOptions();
+  // Another edit while these options are being read (a part shown, a material) waits for that
+  // reading instead of starting it again.
+  const std::string reading =
+      toString(options.cadDeflection) + " " + formatNumber(options.cadAngleDegrees);
+  if (loader_->loading(kRereadLoad) && rereading_ == reading)
+  {
+    return;
+  }
+  rereading_ = reading;
+  loader_->load(
+      kRereadLoad,
+      tr("%1 at deflection %2, %3°")
+          .arg(files.size() == 1 ? files.front() : tr("%1 files").arg(files.size()),
+               QString::fromStdString(toString(options.cadDeflection)))
+          .arg(options.cadAngleDegrees),
+      [wanted](SceneAssets& staged)
+      {
+        // Each part on its own: one that fails is reported when the view takes it (skipped).
+        for (const Wanted& w : wanted)
+        {
+          try
+          {
+            staged.surface(w.mesh, w.block, w.tangents);
+          }
+          catch (const Error&)
+          {
+          }
+        }
+      },
+      [this]
+      {
+        view_->refreshSurfaces();
+        showTessellation();
+      },
+      true);
+}
+
+void MainWindow::showTessellation()
+{
+  long long triangles = 0;
+  QStringList formats;
+  for (int i = 0; i < view_->partCount() && i < int(model_.parts().size()); ++i)
+  {
+    const std::string& mesh = model_.parts()[std::size_t(i)].mesh;
+    if (assets_.readOptionsKey(mesh).empty())
+    {
+      continue;
+    }
+    const QString ext = lowerSuffix(QString::fromStdString(mesh));
+    const QString format = ext == "step" || ext == "stp" ? tr("STEP") : tr("IGES");
+    if (!formats.contains(format))
+    {
+      formats << format;
+    }
+    triangles += std::max(0LL, view_->partTriangles(i));
+  }
+  if (formats.isEmpty())
+  {
+    return;
+  }
+  const MeshReadOptions options = assets_.meshReadOptions();
+  statusBar()->showMessage(tr("%1: %2 triangles at deflection %3, angle %4°")
+                               .arg(formats.join(tr(" and ")), QLocale().toString(triangles),
+                                    QString::fromStdString(toString(options.cadDeflection)))
+                               .arg(options.cadAngleDegrees),
+                           15000);
+}
+
 void MainWindow::openEnvironmentInBackground(const QString& spec, bool recent)
 {
   const std::string text = spec.toStdString();
@@ -679,6 +781,19 @@ void MainWindow::openSessionInBackground(const QString& path)
       {
         // What the session names, read ahead; anything wrong with it is left to openSession.
         const SessionContent content = readSessionFile(path);
+        // Its parts read as the scene will read them once the session's values are set.
+        MeshReadOptions options = staged.meshReadOptions();
+        const auto deflection = content.values.find("cad-deflection");
+        if (deflection != content.values.end())
+        {
+          options.cadDeflection.value = deflection->second.number[0];
+        }
+        const auto angle = content.values.find("cad-angle");
+        if (angle != content.values.end())
+        {
+          options.cadAngleDegrees = angle->second.number[0];
+        }
+        staged.setMeshReadOptions(options);
         const auto text = [&](const char* key)
         {
           const auto it = content.values.find(key);
@@ -955,16 +1070,26 @@ void MainWindow::exportScreenshot(const QString& path, const ScreenshotOptions& 
   const int width = std::max(1, static_cast<int>(vtkWidget_->width() * ratio)) * options.scale;
   const int height = std::max(1, static_cast<int>(vtkWidget_->height() * ratio)) * options.scale;
   RenderSettings settings = view_->renderSettings(width, height);
-  // A lit model is exported as the view draws it.
+  // A lit model is exported as the view draws it, each part with its own material.
   LitModelSettings lit;
   if (litSettingsOf(model_, lit))
   {
     settings.installMaterial = litModelInstaller(lit);
+    for (std::size_t i = 0; i < settings.parts.size(); ++i)
+    {
+      LitModelSettings part = lit;
+      litSceneOf(model_, model_.partParameters(int(i)), part);
+      settings.parts[i].installMaterial = litModelInstaller(part);
+    }
   }
   // So are LEADR and the microstructure.
   if (MaterialInstaller surface = surfaceModelInstallerOf(model_, assets_))
   {
     settings.installMaterial = std::move(surface);
+    for (std::size_t i = 0; i < settings.parts.size(); ++i)
+    {
+      settings.parts[i].installMaterial = surfaceModelInstallerOf(model_, int(i), assets_);
+    }
   }
   if (options.transparent)
   {

@@ -157,6 +157,12 @@ private:
   std::vector<ScenePart> partsOfFile(const QString& path, const std::string& material,
                                      MaterialLibrary& library, std::vector<ScenePart>& taken,
                                      QStringList& warnings);
+  // Reads the parts of STEP and IGES files again on a worker with the model's read options
+  // (cad-deflection, cad-angle; the view shows the previous surfaces meanwhile), then shows them
+  // and their triangle count.
+  void rereadPartsInBackground();
+  // "STEP: N triangles at deflection D, angle A°" in the status bar, for the scene's CAD parts.
+  void showTessellation();
   // PATH as the normal map (and bump quaternion when bump was none).
   bool openNormalMap(const QString& path);
   // An image dropped or reopened: read on a worker, then an environment (an .exr twice as wide
@@ -188,5 +194,6 @@ private:
   Autosave* autosave_ = nullptr;
   // The background loads (the status bar says what loads), each kind's latest request winning.
   BackgroundLoader* loader_;
+  std::string rereading_; // the read options the latest rereadPartsInBackground reads with
 };
 } // namespace aniso

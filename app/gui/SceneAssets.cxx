@@ -7,10 +7,12 @@
 #include "core/parameters/parameters.h"
 #include "vtkpasses/mesh/BrushingModel.h"
 #include "vtkpasses/mesh/BuiltinMeshes.h"
+#include "vtkpasses/mesh/CadReader.h"
 #include "vtkpasses/mesh/LevelOfDetail.h"
 #include "vtkpasses/mesh/MeshLoader.h"
 
 #include <algorithm>
+#include <cctype>
 #include <filesystem>
 #include <string>
 #include <vtkPolyData.h>
@@ -47,19 +49,44 @@ SceneAssets::SceneAssets(SceneModel* model) : model_(model)
   }
 }
 
+MeshReadOptions meshReadOptionsOf(const SceneModel& model)
+{
+  MeshReadOptions options;
+  options.cadDeflection.value = model.real("cad-deflection");
+  options.cadDeflection.absolute = false;
+  options.cadAngleDegrees = model.real("cad-angle");
+  return options;
+}
+
+MeshReadOptions SceneAssets::meshReadOptions() const
+{
+  return model_ ? meshReadOptionsOf(*model_) : readOptions_;
+}
+
+std::string SceneAssets::readOptionsKey(const std::string& mesh) const
+{
+  std::string ext = std::filesystem::path(mesh).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return char(std::tolower(c)); });
+  if (mesh.rfind(kBuiltinPrefix, 0) == 0 || !isCadExtension(ext))
+  {
+    return {};
+  }
+  const MeshReadOptions options = meshReadOptions();
+  return "\ncad " + toString(options.cadDeflection) + " " + formatNumber(options.cadAngleDegrees);
+}
+
+bool SceneAssets::hasSurface(const std::string& mesh, const std::string& block,
+                             const std::string& tangents) const
+{
+  return surfaces_.contains(mesh + "\n" + block + "\n" + tangents + readOptionsKey(mesh));
+}
+
 std::shared_ptr<const LoadedBlocks> SceneAssets::blocks(const std::string& mesh)
 {
-  // How CAD files are tessellated is part of what was read: the model's values when there is a
-  // model, else those set on these (staging) assets.
-  MeshReadOptions options = readOptions_;
-  if (model_)
-  {
-    options.cadDeflection.value = model_->real("cad-deflection");
-    options.cadDeflection.absolute = false;
-    options.cadAngleDegrees = model_->real("cad-angle");
-  }
-  const std::string key =
-      mesh + "\n" + toString(options.cadDeflection) + "\n" + formatNumber(options.cadAngleDegrees);
+  // How CAD files are tessellated is part of what was read.
+  const MeshReadOptions options = meshReadOptions();
+  const std::string key = mesh + readOptionsKey(mesh);
   return blocks_.get(key,
                      [&]
                      {
@@ -100,7 +127,7 @@ std::shared_ptr<const SceneAssets::Surface> SceneAssets::surfaceEntry(const std:
                                                                       const std::string& tangents)
 {
   return surfaces_.get(
-      mesh + "\n" + block + "\n" + tangents,
+      mesh + "\n" + block + "\n" + tangents + readOptionsKey(mesh),
       [&]
       {
         std::shared_ptr<const LoadedMesh> loaded;
@@ -121,7 +148,7 @@ std::shared_ptr<const SceneAssets::Surface> SceneAssets::surfaceEntry(const std:
         }
         else
         {
-          loaded = meshes_.get(mesh,
+          loaded = meshes_.get(mesh + readOptionsKey(mesh),
                                [&]
                                {
                                  if (mesh.rfind(kBuiltinPrefix, 0) == 0)
@@ -129,7 +156,7 @@ std::shared_ptr<const SceneAssets::Surface> SceneAssets::surfaceEntry(const std:
                                    return std::make_shared<LoadedMesh>(
                                        makeBuiltinMesh(parseBuiltinMesh(mesh.substr(8), "mesh")));
                                  }
-                                 return std::make_shared<LoadedMesh>(loadMesh(mesh));
+                                 return std::make_shared<LoadedMesh>(loadMesh(mesh, meshReadOptions()));
                                });
         }
         auto entry = std::make_shared<Surface>();

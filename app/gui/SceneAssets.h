@@ -9,6 +9,7 @@
 #include "vtkpasses/mesh/SurfacePreparation.h"
 #include "vtkpasses/render/MaterialSettings.h"
 
+#include <algorithm>
 #include <functional>
 #include <list>
 #include <memory>
@@ -23,6 +24,12 @@ class RecentCache
 {
 public:
   explicit RecentCache(std::size_t capacity) : capacity_(capacity) {}
+
+    bool contains(const std::string& key) const
+  {
+    return std::any_of(items_.begin(), items_.end(),
+                       [&](const std::pair<std::string, T>& item) { return item.first == key; });
+  }
 
   template <class Make>
   const T& get(const std::string& key, Make make)
@@ -72,6 +79,9 @@ private:
   std::size_t capacity_;
   std::list<std::pair<std::string, T>> items_;
 };
+
+// The read options a model's cad-deflection (relative) and cad-angle ask for.
+MeshReadOptions meshReadOptionsOf(const SceneModel& model);
 
 class SceneAssets
 {
@@ -133,9 +143,19 @@ public:
   static constexpr int kDefaultMaxTextureSide = 16384;
   void setMaxTextureSide(int side) { maxTextureSide_ = side; }
 
-  // How mesh files are read (a CAD file's tessellation) by assets of no model; assets of a model
-  // read its cad-deflection and cad-angle. Part of the blocks' cache key.
+  // How mesh files are read (a CAD file's tessellation) by assets of no model (a staging area
+  // set up as the scene's assets read); assets of a model read its cad-deflection and cad-angle
+  // (meshReadOptionsOf).
   void setMeshReadOptions(const MeshReadOptions& options) { readOptions_ = options; }
+  MeshReadOptions meshReadOptions() const;
+  // What the read options add to the cache keys of MESH: empty for a file they do not change
+  // (anything but STEP and IGES, so those keep their entries when the options change), else the
+  // options as text. Part of the keys of the blocks, the meshes and the surfaces.
+  std::string readOptionsKey(const std::string& mesh) const;
+  // Whether that surface is loaded and prepared with the current read options (surface() would
+  // read nothing).
+  bool hasSurface(const std::string& mesh, const std::string& block,
+                  const std::string& tangents) const;
   int maxTextureSide() const { return maxTextureSide_; }
 
 private:

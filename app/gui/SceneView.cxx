@@ -80,7 +80,8 @@ vtkSmartPointer<vtkPolyData> appended(const std::vector<vtkPolyData*>& surfaces)
 // and in the drawing frame.
 struct SceneView::PartView
 {
-  std::string surfaceKey; // mesh, block and tangents the surface was made of
+  std::string surfaceKey; // mesh, block, tangents, read options and placement of the surface
+  std::string sourceKey;  // the same without the read options
   std::string name;
   std::string material; // its library material
   bool visible = false; // the part's visibility
@@ -366,9 +367,11 @@ void SceneView::modelChanged(const QString& qkey)
   }
   try
   {
-    if (key == "mesh")
+    if (key == "mesh" || sceneKeyAffects(key, Affects::Meshes))
     {
-      // The parts follow (partsChanged); the mesh key is the first part's file.
+      // The parts follow (partsChanged); the mesh key is the first part's file. A key of how
+      // files are read (cad-deflection, ...) reads the parts of STEP and IGES files again: from
+      // the assets when they hold them (an undo), else on a worker (surfacesOutdated).
       if (syncParts())
       {
         applySurfaces();
@@ -446,6 +449,7 @@ bool SceneView::syncParts()
 {
   const std::vector<ScenePart>& parts = model_->parts();
   bool changed = false;
+  bool outdated = false;
   if (parts_.size() > parts.size())
   {
     renderTimer_->setMappers({}); // the mappers about to go (applySurfaces sets them anew)
@@ -472,15 +476,24 @@ bool SceneView::syncParts()
     const ScenePart& wanted = parts[i];
     PartView& part = *parts_[i];
     const std::string tangents = model_->partMaterial(int(i)).value("tangents").text;
-    std::string key = wanted.mesh + "\n" + wanted.block + "\n" + tangents;
+    std::string source = wanted.mesh + "\n" + wanted.block + "\n" + tangents;
     for (double v : wanted.placement)
     {
-      key += "\n" + formatNumber(v);
+      source += "\n" + formatNumber(v);
     }
+    const std::string key = source + assets_->readOptionsKey(wanted.mesh);
     part.name = wanted.name;
     part.material = wanted.material;
-    if (part.surfaceKey != key)
+    if (part.surfaceKey != key && part.loaded && part.sourceKey == source && !readNow_ &&
+        !assets_->hasSurface(wanted.mesh, wanted.block, tangents))
     {
+      // Only the read options changed (a CAD file's tessellation) and the surface they give is
+      // not read yet: the previous one stays on screen while the window reads it on a worker.
+      outdated = true;
+    }
+    else if (part.surfaceKey != key)
+    {
+      part.sourceKey = source;
       part.surfaceKey = key;
       part.loaded = false;
       changed = true;
@@ -513,7 +526,30 @@ bool SceneView::syncParts()
       changed = true;
     }
   }
+  if (outdated)
+  {
+    emit surfacesOutdated();
+  }
   return changed;
+}
+
+void SceneView::refreshSurfaces()
+{
+  readNow_ = true;
+  attempt(
+      [this]
+      {
+        if (syncParts())
+        {
+          planner_.forgetCosts();
+          applySurfaces();
+          beginInteraction();
+          applyMaterial();
+          applySelection();
+        }
+      });
+  readNow_ = false;
+  requestRender();
 }
 
 void SceneView::applySurfaces()
@@ -662,6 +698,27 @@ long long SceneView::partTriangles(int part) const
 {
   const PartView& p = *parts_.at(std::size_t(part));
   return p.surface ? p.surface->GetNumberOfPolys() : -1;
+}
+
+vtkPolyData* SceneView::partDrawnSurface(int part) const
+{
+  const PartView& p = *parts_.at(std::size_t(part));
+  return p.inRenderer ? p.drawn.Get() : nullptr;
+}
+
+vtkPolyData* SceneView::partSurfaceToDraw(int part) const
+{
+  const PartView& p = *parts_.at(std::size_t(part));
+  if (!p.inRenderer)
+  {
+    return nullptr;
+  }
+  return interacting_ && p.drawnInteractive ? p.drawnInteractive.Get() : p.drawn.Get();
+}
+
+ParameterSet SceneView::partParameters(int part) const
+{
+  return model_->partParameters(part);
 }
 
 int SceneView::partAt(int x, int y)
@@ -1002,6 +1059,9 @@ void SceneView::requestRender()
 
 void SceneView::renderNow()
 {
+  QElapsedTimer pass;
+  pass.start();
+  qint64 renderNs = 0;
   frame_->setInterval(0);
   // With a frame budget a refinement frame goes into the mean without reaching the screen:
   // showing a frame (the widget's copy, the window's composition and buffer swap) costs about
@@ -1015,7 +1075,9 @@ void SceneView::renderNow()
   {
     window_->SwapBuffersOff();
   }
+  const qint64 renderStart = pass.nsecsElapsed();
   window_->Render();
+  renderNs = pass.nsecsElapsed() - renderStart;
   if (hide && swap)
   {
     window_->SwapBuffersOn();
@@ -1083,6 +1145,12 @@ void SceneView::renderNow()
   {
     requestRender();
   }
+  // What this pass cost besides the render (errors checked, the plan, the signals' receivers):
+  // the renders are planned for the budget less its running mean, so the pass keeps within it.
+  const double overhead = double(pass.nsecsElapsed() - renderNs) * 1e-9;
+  overheadSeconds_ =
+      overheadSeconds_ > 0.0 ? 0.8 * overheadSeconds_ + 0.2 * overhead : overhead;
+  planner_.setOverheadSeconds(overheadSeconds_);
 }
 
 void SceneView::presentFrame()

@@ -92,6 +92,17 @@ public:
   bool partDrawn(int part) const;
   // Triangles of part I's surface (-1 when it did not load).
   long long partTriangles(int part) const;
+  // Part I's surface in the drawing frame as drawn when still, never the stand-in (null while
+  // the part is not drawn): the same polydata its actor draws once still. The comparison window
+  // draws it.
+  vtkPolyData* partDrawnSurface(int part) const;
+  // What part I's actor draws now: its stand-in while things move (when it has one), else
+  // partDrawnSurface(I). The views of other models (lit, LEADR, microstructure) draw it, one actor
+  // per drawn part, following partsDrawn and interactionChanged.
+  vtkPolyData* partSurfaceToDraw(int part) const;
+  // The declared parameters part I is drawn with (SceneModel::partParameters: the scene's, with
+  // the part's library material over the material keys).
+  ParameterSet partParameters(int part) const;
   // The part drawn at display position (X, Y) (VTK's convention: origin bottom left), or -1.
   int partAt(int x, int y);
   // What a click at (X, Y) does: selects the part there (EXTEND: adds it to the selection, or
@@ -105,6 +116,10 @@ public:
   // Everything renderOffscreen needs to redraw the current view at WIDTH x HEIGHT with the full
   // quality (the target sample count).
   RenderSettings renderSettings(int width, int height) const;
+
+  // Brings the parts' surfaces in line with the model, reading on this thread what the assets
+  // do not hold yet (or reporting it skipped): after a worker read them with new read options.
+  void refreshSurfaces();
 
   // Frames the current mesh from the default direction and forgets any stored camera.
   void resetCamera();
@@ -125,12 +140,12 @@ public:
   // Triangles of what the view draws now: the surface, or while things move the surface's
   // stand-in when it has one (SceneAssets::interactiveSurface, LevelOfDetail.h).
   long long drawnTriangles() const;
-  // The surface in the drawing frame (DrawingFrame.h) as drawn when still, never the stand-in
-  // (the comparison window draws it).
+  // The drawn parts' surfaces together in the drawing frame (DrawingFrame.h) as drawn when
+  // still, never the stand-in (null when no part is drawn). The views of other models draw the
+  // parts one by one instead (partDrawnSurface, partSurfaceToDraw).
   vtkPolyData* drawnSurface() const;
-  // What the view draws now: the stand-in while things move (when the surface has one), else
-  // drawnSurface(). Views of other models (lit, LEADR, microstructure) follow it, swapping their
-  // mapper's input on interactionChanged.
+  // What the view draws now, together: the stand-ins while things move (when a part has one),
+  // else drawnSurface().
   vtkPolyData* surfaceToDraw() const;
   void setSettleMs(int ms);
   // The longest a progressive frame should keep the UI thread (the window's render of it), by
@@ -169,13 +184,19 @@ signals:
   void lightingBusyChanged(bool busy);
   // Something started moving (cheap frames from now on) or settled (refinement).
   void interactionChanged(bool interacting);
-  // The drawn parts changed (a part added, removed, shown, hidden, or its surface replaced).
+  // The drawn parts changed (a part added, removed, shown, hidden, or its surface replaced), or
+  // the drawing frame with them: the views of other models take the parts' surfaces anew.
   void partsDrawn();
+  // Parts whose file is read anew with other read options (a STEP or IGES file's tessellation,
+  // SceneAssets::readOptionsKey) keep their previous surfaces, since the assets do not hold the
+  // new ones: those are to be read (on a worker), then refreshSurfaces().
+  void surfacesOutdated();
 
 private:
   void modelChanged(const QString& key);
   // Brings the part actors in line with the model's parts (surfaces loaded for new meshes,
-  // blocks or tangents, visibility); returns whether what is drawn changed.
+  // blocks, tangents, placements or read options (unless only those changed and the assets do
+  // not hold the surface: surfacesOutdated), visibility); returns whether what is drawn changed.
   bool syncParts();
   // The drawing frame, the surfaces in it and the camera after the drawn parts changed.
   void applySurfaces();
@@ -225,8 +246,8 @@ private:
   // The surface is drawn in the frame of its unit bounding sphere (DrawingFrame.h), so the
   // renderer's camera lives there too; the model's camera stays in the mesh's coordinates.
   DrawingFrame drawing_;
-  // The drawn parts together in the drawing frame (the other models' views and the comparison
-  // window draw it), and their stand-ins while moving (null when no part has one).
+  // The drawn parts together in the drawing frame, and their stand-ins while moving (null when
+  // no part has one).
   vtkSmartPointer<vtkPolyData> drawnSurface_;
   vtkSmartPointer<vtkPolyData> drawnInteractive_;
   QTimer* settle_;
@@ -236,12 +257,14 @@ private:
   bool cameraMoved_ = false;
   // Frame costs learnt, the cost model, the load margin and the run's plan.
   RefinementPlanner planner_{kDefaultFrameBudgetMs};
+  double overheadSeconds_ = 0.0; // a pass of renderNow besides its render, running mean
   // Times the window's renders for the planner.
   std::unique_ptr<RenderTimer> renderTimer_;
   QElapsedTimer presentClock_;  // since a frame last reached the screen
   bool presentPending_ = false; // presentFrame is queued
   bool maxTextureSideKnown_ = false;
   bool changedSettings_ = false; // applyMaterial gave a part other settings
+  bool readNow_ = false;         // syncParts reads outdated surfaces (refreshSurfaces)
   // Errors of the renderer (VTK's error output while drawing, glGetError after a frame), each
   // distinct message reported once, queued as errorOccurred.
   RenderErrorOutput errors_;

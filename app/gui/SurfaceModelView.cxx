@@ -13,18 +13,14 @@
 #include <vtkActor.h>
 #include <vtkOpenGLPolyDataMapper.h>
 #include <vtkOpenGLRenderer.h>
+#include <vtkNew.h>
 #include <vtkPolyData.h>
+#include <vtkSmartPointer.h>
 
 namespace aniso
 {
 namespace
 {
-glm::dvec3 colourOf(const SceneModel& model, std::string_view key)
-{
-  const std::array<double, 3> c = model.color(key);
-  return {c[0], c[1], c[2]};
-}
-
 // The built-in relief's moments are baked once per scale: moving a light reuses them.
 std::shared_ptr<const LeadrMips> leadrMoments(double scale)
 {
@@ -37,21 +33,44 @@ std::shared_ptr<const LeadrMips> leadrMoments(double scale)
   }
   return cached;
 }
+
+// The installer of MODEL's surface model with the declared values PARAMETERS, F0, albedo and
+// TPR map TPR (a pattern or a path).
+MaterialInstaller surfaceInstaller(const SceneModel& model, const ParameterSet& parameters,
+                                   const std::string& tpr, SceneAssets& assets)
+{
+  const DeclaredValues values = [&parameters](std::string_view key) -> const ParameterValue&
+  { return parameters.value(key); };
+  SurfaceModelInputs inputs;
+  inputs.f0 = parameters.color("f0");
+  inputs.albedo = parameters.color("albedo");
+  inputs.lights = [&model] { return parseLightList(model.text("lights"), "lights"); };
+  // As `aniso render --model leadr` without a map: the built-in relief.
+  inputs.leadrMoments = [&parameters]
+  { return leadrMoments(parameters.real("leadr-scale")); };
+  inputs.tprMap = [&tpr, &assets] { return assets.map("tpr", tpr); };
+  return surfaceModelInstaller(model.text("model"), values, inputs);
+}
 } // namespace
 
 MaterialInstaller surfaceModelInstallerOf(const SceneModel& model, SceneAssets& assets)
 {
-  const DeclaredValues values = [&model](std::string_view key) -> const ParameterValue&
-  { return model.value(key); };
-  SurfaceModelInputs inputs;
-  inputs.f0 = colourOf(model, "f0");
-  inputs.albedo = colourOf(model, "albedo");
-  inputs.lights = [&model] { return parseLightList(model.text("lights"), "lights"); };
-  // As `aniso render --model leadr` without a map: the built-in relief.
-  inputs.leadrMoments = [&model] { return leadrMoments(model.real("leadr-scale")); };
-  inputs.tprMap = [&model, &assets] { return assets.map("tpr", model.text("tpr")); };
-  return surfaceModelInstaller(model.text("model"), values, inputs);
+  return surfaceInstaller(model, model.parameters(), model.text("tpr"), assets);
 }
+
+MaterialInstaller surfaceModelInstallerOf(const SceneModel& model, int part, SceneAssets& assets)
+{
+  return surfaceInstaller(model, model.partParameters(part),
+                          model.partMaterial(part).value("tpr").text, assets);
+}
+
+// A drawn part's actor and the material it was given.
+struct SurfaceModelView::Part
+{
+  int part = 0; // the view's part
+  vtkSmartPointer<vtkActor> actor;
+  std::shared_ptr<void> material; // owned by the actor it was applied to
+};
 
 SurfaceModelView::SurfaceModelView(SceneModel* model, SceneAssets* assets, SceneView* view,
                                    QObject* parent)
@@ -69,15 +88,29 @@ SurfaceModelView::SurfaceModelView(SceneModel* model, SceneAssets* assets, Scene
               update();
             }
           });
-  // The stand-in of a large surface while things move, the surface once still, as the view.
+  // A part's material edited or replaced, or the parts drawn changed.
+  const auto partsChanged = [this]
+  {
+    if (!surfaceModelKeys(model_->text("model")).empty())
+    {
+      update();
+    }
+  };
+  connect(model_, &SceneModel::materialsChanged, this, partsChanged);
+  connect(view_, &SceneView::partsDrawn, this, partsChanged);
+  // The stand-ins of large surfaces while things move, the surfaces once still, as the view.
   connect(view_, &SceneView::interactionChanged, this,
           [this]
           {
-            vtkMapper* mapper = actor_ ? actor_->GetMapper() : nullptr;
-            vtkPolyData* mesh = view_->surfaceToDraw();
-            if (mapper && mesh && mesh != mapper->GetInputDataObject(0, 0))
+            for (Part& part : parts_)
             {
-              mapper->SetInputDataObject(mesh);
+              vtkMapper* mapper = part.actor->GetMapper();
+              vtkPolyData* mesh =
+                  part.part < view_->partCount() ? view_->partSurfaceToDraw(part.part) : nullptr;
+              if (mapper && mesh && mesh != mapper->GetInputDataObject(0, 0))
+              {
+                mapper->SetInputDataObject(mesh);
+              }
             }
           });
   update();
@@ -85,26 +118,43 @@ SurfaceModelView::SurfaceModelView(SceneModel* model, SceneAssets* assets, Scene
 
 SurfaceModelView::~SurfaceModelView()
 {
-  material_.reset();
-  if (actor_)
+  for (Part& part : parts_)
   {
-    renderer_->RemoveActor(actor_);
+    part.material.reset();
+    renderer_->RemoveActor(part.actor);
   }
 }
 
 bool SurfaceModelView::active() const
 {
-  return actor_ && actor_->GetVisibility() != 0;
+  return shown_;
 }
 
 vtkActor* SurfaceModelView::surfaceActor() const
 {
-  return actor_;
+  return parts_.empty() ? nullptr : parts_.front().actor.Get();
+}
+
+vtkActor* SurfaceModelView::partActor(int part) const
+{
+  for (const Part& p : parts_)
+  {
+    if (p.part == part)
+    {
+      return p.actor;
+    }
+  }
+  return nullptr;
 }
 
 void SurfaceModelView::keyChanged(const QString& key)
 {
   const std::string name = key.toStdString();
+  if (isMaterialKey(name))
+  {
+    // The edited parts' materials: materialsChanged brings what changed, part by part.
+    return;
+  }
   const std::vector<std::string_view> keys = surfaceModelKeys(model_->text("model"));
   // The keys that change the picture of a surface model: the shared ones and its declared ones.
   if (sceneKeyAffects(name, Affects::SurfaceModels) ||
@@ -114,16 +164,17 @@ void SurfaceModelView::keyChanged(const QString& key)
   }
   else if (active())
   {
-    // The lit model's view shows the scene actor again for keys of its own.
+    // The lit model's view shows the scene actors again for keys of its own.
     show(true);
   }
 }
 
 void SurfaceModelView::show(bool on)
 {
-  if (actor_)
+  shown_ = on;
+  for (Part& part : parts_)
   {
-    actor_->SetVisibility(on);
+    part.actor->SetVisibility(on);
   }
   if (on)
   {
@@ -136,7 +187,7 @@ void SurfaceModelView::update()
   const std::string& name = model_->text("model");
   if (surfaceModelKeys(name).empty())
   {
-    // Another model: the lit model's view or the scene actor draws it.
+    // Another model: the lit model's view or the scene actors draw it.
     reported_.clear();
     if (active())
     {
@@ -152,23 +203,37 @@ void SurfaceModelView::update()
   }
   try
   {
-    const MaterialInstaller install = surfaceModelInstallerOf(*model_, *assets_);
-    // A fresh actor, so a material that fails to apply leaves the previous one untouched.
-    vtkNew<vtkOpenGLPolyDataMapper> mapper;
-    mapper->ScalarVisibilityOff();
-    mapper->SetInputData(view_->surfaceToDraw());
-    auto actor = vtkSmartPointer<vtkActor>::New();
-    actor->SetMapper(mapper);
-    setDrawingFrame(actor, view_->drawingFrame()); // the scene's parts, its point lights
-    std::shared_ptr<void> material = install(actor, renderer_, lighting);
-    if (actor_)
+    // Fresh actors, so a material that fails to apply leaves the previous ones untouched.
+    std::vector<Part> made;
+    const int count = std::min(view_->partCount(), int(model_->parts().size()));
+    for (int i = 0; i < count; ++i)
     {
-      renderer_->RemoveActor(actor_);
+      if (!view_->partDrawn(i))
+      {
+        continue; // hidden parts are not drawn
+      }
+      const MaterialInstaller install = surfaceModelInstallerOf(*model_, i, *assets_);
+      vtkNew<vtkOpenGLPolyDataMapper> mapper;
+      mapper->ScalarVisibilityOff();
+      mapper->SetInputData(view_->partSurfaceToDraw(i));
+      Part part;
+      part.part = i;
+      part.actor = vtkSmartPointer<vtkActor>::New();
+      part.actor->SetMapper(mapper);
+      setDrawingFrame(part.actor, view_->drawingFrame()); // the scene's parts, its point lights
+      part.material = install(part.actor, renderer_, lighting);
+      made.push_back(std::move(part));
     }
-    material_ = std::move(material);
-    actor_ = actor;
+    for (Part& part : parts_)
+    {
+      renderer_->RemoveActor(part.actor);
+    }
+    parts_ = std::move(made);
     lighting_ = lighting;
-    renderer_->AddActor(actor_);
+    for (Part& part : parts_)
+    {
+      renderer_->AddActor(part.actor);
+    }
     reported_.clear();
   }
   catch (const Error& e)
@@ -179,7 +244,7 @@ void SurfaceModelView::update()
       reported_ = message;
       emit errorOccurred(QString::fromStdString(message));
     }
-    // The previous picture stays: the surface model drawn before, or the other model's actor.
+    // The previous picture stays: the surface model drawn before, or the other model's actors.
     if (active())
     {
       show(true);

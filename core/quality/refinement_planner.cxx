@@ -1,12 +1,24 @@
 #include "core/quality/refinement_planner.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace aniso
 {
 void RefinementPlanner::setBudgetMs(int ms)
 {
   budgetMs_ = std::max(ms, 0);
+}
+
+void RefinementPlanner::setOverheadSeconds(double seconds)
+{
+  overheadSeconds_ = std::isfinite(seconds) ? std::max(seconds, 0.0) : 0.0;
+}
+
+double RefinementPlanner::renderBudgetSeconds() const
+{
+  const double budget = budgetMs_ * 1e-3;
+  return budget - std::min(overheadSeconds_, 0.5 * budget);
 }
 
 void RefinementPlanner::learn(const MeasuredRender& render)
@@ -69,7 +81,7 @@ double RefinementPlanner::budgetSeconds(const FrameCostModel& cost) const
   // Planned for the machine as it ran the latest frames (the fit follows a change of load only
   // over several frames), except while the parts are not yet told apart: a margin on the
   // pessimistic split would keep every frame at 1 sample and the split unknown.
-  return budgetMs_ * 1e-3 / (cost.separated ? margin() : 1.0);
+  return renderBudgetSeconds() / (cost.separated ? margin() : 1.0);
 }
 
 FramePlan RefinementPlanner::plan(const RunShape& shape) const
@@ -141,7 +153,7 @@ bool RefinementPlanner::beginRun(const FramePlan& plan)
 RunStep RefinementPlanner::afterFrame(const RunShape& shape, bool firstOfRun)
 {
   const FramePlan next = plan(shape);
-  const bool overran = frameOverran(lastSeconds_, budgetMs_ * 1e-3, kOverrunTolerance);
+  const bool overran = frameOverran(lastSeconds_, renderBudgetSeconds(), kOverrunTolerance);
   if (runReplans_ < kMaxReplans &&
       ((firstOfRun && runReplans_ < 2 && next.samples != runSamples_) ||
        (overran && next.samples < runSamples_)))

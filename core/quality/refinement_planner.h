@@ -74,6 +74,13 @@ public:
   // the material's samples whatever they cost).
   void setBudgetMs(int ms);
   int budgetMs() const { return budgetMs_; }
+  // What the pass of the event loop that renders costs besides the render (the window's own
+  // work around it, measured by the view): taken off the budget the renders are planned for, at
+  // most half of it, so the whole pass keeps within the budget. Negative or non-finite: 0.
+  void setOverheadSeconds(double seconds);
+  double overheadSeconds() const { return overheadSeconds_; }
+  // The seconds a render may take: the budget less the overhead (0 without a budget).
+  double renderBudgetSeconds() const;
 
   // The shading changed (a new mesh, maps, method, lighting): frames cost what they cost now,
   // every measured cost is forgotten.
@@ -126,6 +133,7 @@ private:
     int frames = 0; // measured
   };
   int budgetMs_ = 0;
+  double overheadSeconds_ = 0.0;
   // Frame costs since the shading last changed, by window size (pixels) and sample count.
   std::map<std::pair<long long, int>, FrameCost> costs_;
   int runSamples_ = 1;

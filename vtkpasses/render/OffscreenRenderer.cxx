@@ -221,7 +221,11 @@ RenderResult renderOffscreen(const RenderSettings& s)
     {
       continue;
     }
-    if (s.installMaterial)
+    if (parts[i].installMaterial)
+    {
+      otherMaterials.push_back(parts[i].installMaterial(actors[i], renderer, lighting));
+    }
+    else if (s.installMaterial)
     {
       otherMaterials.push_back(s.installMaterial(actors[i], renderer, lighting));
     }

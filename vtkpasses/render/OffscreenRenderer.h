@@ -50,6 +50,9 @@ struct RenderPart
   vtkSmartPointer<vtkPolyData> surface;
   MaterialSettings material;
   bool visible = true; // a hidden part is not drawn at all (and may have no surface)
+  // When set, this part is shaded by it instead of `material` and of
+  // RenderSettings::installMaterial (another shading model with this part's own material).
+  MaterialInstaller installMaterial;
 };
 
 struct RenderSettings
@@ -74,8 +77,8 @@ struct RenderSettings
   int frames = 1;     // progressive frames accumulated (each with its own sample shift)
   bool jitter = true; // sub-pixel camera jitter between frames (anti-aliasing)
   // When set, the object is shaded by this instead of `material` (which is then unused). In a
-  // scene of parts it is installed on every visible part (called once for each part's actor),
-  // in place of the parts' own materials: one shading model and material for the scene.
+  // scene of parts it is installed on every visible part without an installer of its own
+  // (called once for each part's actor), in place of the parts' own materials.
   MaterialInstaller installMaterial;
 };
 

@@ -1,9 +1,10 @@
 // STEP and IGES through loadMeshBlocks (CadReader in the reader program). Each test says what it
 // checks and against what reference: the files are written here by OpenCASCADE's own XCAF
-// writers (STEPCAFControl_Writer, IGESCAFControl_Writer) from a document built here, whose
-// names, colours and placements are the reference; a cylinder's tangents are compared with the
+// writers (STEPCAFControl_Writer, IGESCAFControl_Writer) from a document built here
+// (cad_test_documents.h), whose names, colours and placements are the reference; a cylinder's tangents are compared with the
 // analytic circle tangent and axis.
 #include "core/error.h"
+#include "tests/vtkpasses/mesh/cad_test_documents.h"
 #include "tests/vtkpasses/mesh/mesh_test_files.h"
 #include "tests/vtkpasses/mesh/mesh_test_helpers.h"
 #include "vtkpasses/mesh/BrushingModel.h"
@@ -11,28 +12,12 @@
 #include "vtkpasses/mesh/MeshLoader.h"
 #include "vtkpasses/mesh/SurfacePreparation.h"
 
-#include <BRepPrimAPI_MakeBox.hxx>
-#include <BRepPrimAPI_MakeCylinder.hxx>
-#include <IGESCAFControl_Writer.hxx>
-#include <Message.hxx>
-#include <Message_Messenger.hxx>
-#include <Message_PrinterOStream.hxx>
-#include <Quantity_Color.hxx>
-#include <STEPCAFControl_Writer.hxx>
-#include <TDataStd_Name.hxx>
 #include <TDocStd_Document.hxx>
-#include <TopLoc_Location.hxx>
-#include <XCAFApp_Application.hxx>
-#include <XCAFDoc_ColorTool.hxx>
-#include <XCAFDoc_DocumentTool.hxx>
-#include <XCAFDoc_ShapeTool.hxx>
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
-#include <gp_Ax1.hxx>
-#include <gp_Ax2.hxx>
 #include <gp_Trsf.hxx>
 #include <gtest/gtest.h>
 #include <iterator>
@@ -47,127 +32,20 @@ namespace
 {
 namespace fs = std::filesystem;
 
-constexpr double kPinRadius = 3.0;
-constexpr double kPinHeight = 12.0;
-
-struct Rgb
-{
-  double r, g, b;
-};
-constexpr Rgb kPlateColour{0.8, 0.1, 0.05};
-constexpr Rgb kPinColour{0.1, 0.25, 0.7};
-
-PartMatrix matrixOf(const gp_Trsf& trsf)
-{
-  PartMatrix m = kIdentityPlacement;
-  for (int r = 0; r < 3; ++r)
-  {
-    for (int c = 0; c < 4; ++c)
-    {
-      m[static_cast<size_t>(r * 4 + c)] = trsf.Value(r + 1, c + 1);
-    }
-  }
-  return m;
-}
-
-// The reference assembly: "rig" holds a plate (a 20 x 10 x 2 box, red) as "base" and a
-// sub-assembly "pin-pair" placed as "pins", which holds one pin product (a cylinder of radius 3
-// and height 12 along Z, blue) twice, as "pin-a" and "pin-b", at two placements.
-struct Reference
-{
-  gp_Trsf pins; // the sub-assembly in the rig
-  gp_Trsf pinA; // the pins in the sub-assembly
-  gp_Trsf pinB;
-};
-
-Reference reference()
-{
-  Reference r;
-  r.pins.SetTranslation(gp_Vec(0.0, 0.0, 2.0));
-  r.pinA.SetTranslation(gp_Vec(4.0, 5.0, 0.0));
-  r.pinB.SetRotation(gp_Ax1(gp_Pnt(0.0, 0.0, 0.0), gp_Dir(1.0, 0.0, 0.0)), 0.5);
-  r.pinB.SetTranslationPart(gp_Vec(16.0, 5.0, 1.0));
-  return r;
-}
-
-// The pin: a cylinder (radius kPinRadius, height kPinHeight, along Z) named "pin".
-TDF_Label addPin(const Handle(XCAFDoc_ShapeTool) & shapes)
-{
-  const TDF_Label pin = shapes->AddShape(
-      BRepPrimAPI_MakeCylinder(gp_Ax2(gp_Pnt(0.0, 0.0, 0.0), gp_Dir(0.0, 0.0, 1.0)), kPinRadius,
-                               kPinHeight)
-          .Shape(),
-      false);
-  TDataStd_Name::Set(pin, "pin");
-  return pin;
-}
-
-Handle(TDocStd_Document) referenceDocument()
-{
-  Handle(TDocStd_Document) document;
-  XCAFApp_Application::GetApplication()->NewDocument("MDTV-XCAF", document);
-  const Handle(XCAFDoc_ShapeTool) shapes = XCAFDoc_DocumentTool::ShapeTool(document->Main());
-  const Handle(XCAFDoc_ColorTool) colours = XCAFDoc_DocumentTool::ColorTool(document->Main());
-  const Reference r = reference();
-
-  const TDF_Label plate = shapes->AddShape(BRepPrimAPI_MakeBox(20.0, 10.0, 2.0).Shape(), false);
-  TDataStd_Name::Set(plate, "plate");
-  colours->SetColor(
-      plate, Quantity_Color(kPlateColour.r, kPlateColour.g, kPlateColour.b, Quantity_TOC_RGB),
-      XCAFDoc_ColorSurf);
-  const TDF_Label pin = addPin(shapes);
-  colours->SetColor(pin, Quantity_Color(kPinColour.r, kPinColour.g, kPinColour.b, Quantity_TOC_RGB),
-                    XCAFDoc_ColorSurf);
-
-  const TDF_Label pair = shapes->NewShape();
-  TDataStd_Name::Set(pair, "pin-pair");
-  TDataStd_Name::Set(shapes->AddComponent(pair, pin, TopLoc_Location(r.pinA)), "pin-a");
-  TDataStd_Name::Set(shapes->AddComponent(pair, pin, TopLoc_Location(r.pinB)), "pin-b");
-
-  const TDF_Label rig = shapes->NewShape();
-  TDataStd_Name::Set(rig, "rig");
-  TDataStd_Name::Set(shapes->AddComponent(rig, plate, TopLoc_Location()), "base");
-  TDataStd_Name::Set(shapes->AddComponent(rig, pair, TopLoc_Location(r.pins)), "pins");
-  shapes->UpdateAssemblies();
-  return document;
-}
-
-// A single cylinder (radius 3, height 12, along Z), as its own file.
-Handle(TDocStd_Document) cylinderDocument()
-{
-  Handle(TDocStd_Document) document;
-  XCAFApp_Application::GetApplication()->NewDocument("MDTV-XCAF", document);
-  const Handle(XCAFDoc_ShapeTool) shapes = XCAFDoc_DocumentTool::ShapeTool(document->Main());
-  addPin(shapes);
-  return document;
-}
+using namespace cadtest;
 
 class CadReaderTest : public test::MeshFilesTest
 {
 protected:
-  static void SetUpTestSuite()
-  {
-    // The writers report on standard output; the test's output stays readable without them.
-    Message::DefaultMessenger()->RemovePrinters(STANDARD_TYPE(Message_PrinterOStream));
-  }
-
   std::string writeStep(const Handle(TDocStd_Document) & document, const std::string& name) const
   {
-    STEPCAFControl_Writer writer;
-    writer.SetColorMode(true);
-    writer.SetNameMode(true);
-    EXPECT_TRUE(writer.Transfer(document, STEPControl_AsIs));
-    EXPECT_EQ(writer.Write(this->path(name).c_str()), IFSelect_RetDone);
+    EXPECT_TRUE(writeStepFile(document, this->path(name))) << name;
     return this->path(name);
   }
 
   std::string writeIges(const Handle(TDocStd_Document) & document, const std::string& name) const
   {
-    IGESCAFControl_Writer writer;
-    writer.SetColorMode(true);
-    writer.SetNameMode(true);
-    EXPECT_TRUE(writer.Transfer(document));
-    EXPECT_TRUE(writer.Write(this->path(name).c_str()));
+    EXPECT_TRUE(writeIgesFile(document, this->path(name))) << name;
     return this->path(name);
   }
 };
