@@ -212,10 +212,65 @@ void SceneDock::refreshCounts()
   syncing_ = false;
 }
 
+namespace
+{
+// The group item a part's item sits under (null at the top level).
+QString groupOf(const QTreeWidgetItem* item)
+{
+  return item->parent() ? item->parent()->text(0) : QString();
+}
+} // namespace
+
+bool SceneDock::refreshInPlace()
+{
+  const auto& parts = editor_->model()->parts();
+  if (items_.size() != parts.size())
+  {
+    return false;
+  }
+  for (std::size_t i = 0; i < parts.size(); ++i)
+  {
+    if (items_[i]->text(0) != qs(parts[i].name) || groupOf(items_[i]) != qs(parts[i].group))
+    {
+      return false;
+    }
+  }
+  for (std::size_t i = 0; i < parts.size(); ++i)
+  {
+    const ScenePart& part = parts[i];
+    QTreeWidgetItem* item = items_[i];
+    if (item->text(1) != qs(part.material))
+    {
+      item->setText(1, qs(part.material));
+    }
+    const Qt::CheckState check = part.visible ? Qt::Checked : Qt::Unchecked;
+    if (item->checkState(0) != check)
+    {
+      item->setCheckState(0, check);
+    }
+    const QString tip = qs(part.mesh + (part.block.empty() ? "" : " (" + part.block + ")"));
+    if (item->toolTip(0) != tip)
+    {
+      item->setToolTip(0, tip);
+    }
+  }
+  return true;
+}
+
 void SceneDock::rebuild()
 {
   syncing_ = true;
   const SceneModel& model = *editor_->model();
+  // The same parts (names and groups): their rows updated where they differ. A material edit
+  // (every slider step) and an assignment touch one column of a few rows, not the whole tree.
+  if (refreshInPlace())
+  {
+    rebuildLibrary();
+    syncing_ = false;
+    refreshCounts();
+    syncSelectionFromModel();
+    return;
+  }
   tree_->clear();
   items_.clear();
   std::map<std::string, QTreeWidgetItem*> groups;
@@ -248,28 +303,46 @@ void SceneDock::rebuild()
   {
     group->setExpanded(true);
   }
-  // The library: the scene's materials, then the built-in metals it does not hold.
-  const QString current = library_->currentItem() ? library_->currentItem()->text() : QString();
-  library_->clear();
+  rebuildLibrary();
+  syncing_ = false;
+  refreshCounts();
+  syncSelectionFromModel();
+}
+
+void SceneDock::rebuildLibrary()
+{
+  // The library: the scene's materials, then the built-in metals it does not hold; the list
+  // is made again only when those names changed.
+  const SceneModel& model = *editor_->model();
+  QStringList names;
   for (const Material& m : model.materials().materials())
   {
-    library_->addItem(qs(m.name));
+    names << qs(m.name);
   }
   for (const Material& m : builtinMaterials().materials())
   {
     if (!model.materials().contains(m.name))
     {
-      library_->addItem(qs(m.name));
+      names << qs(m.name);
     }
   }
+  QStringList shown;
+  for (int i = 0; i < library_->count(); ++i)
+  {
+    shown << library_->item(i)->text();
+  }
+  if (shown == names)
+  {
+    return;
+  }
+  const QString current = library_->currentItem() ? library_->currentItem()->text() : QString();
+  library_->clear();
+  library_->addItems(names);
   const auto found = library_->findItems(current, Qt::MatchExactly);
   if (!found.isEmpty())
   {
     library_->setCurrentItem(found.front());
   }
-  syncing_ = false;
-  refreshCounts();
-  syncSelectionFromModel();
 }
 
 void SceneDock::syncSelectionFromModel()

@@ -60,6 +60,10 @@ signals:
   void errorOccurred(const QString& message);
 
 private:
+  // Updates the rows of the parts when the parts are the same ones (names and groups) as the
+  // rows; false (nothing changed) otherwise.
+  bool refreshInPlace();
+  void rebuildLibrary();
   void rebuild();
   void syncSelectionFromModel();
   void selectionEdited();
