@@ -5,8 +5,8 @@
 //   .obj (vtkOBJReader), .ply (PlyReader), .stl (StlReader), .off (OffReader), .vtk (legacy, any
 //   dataset: non-polygonal ones are reduced to their outer surface), .vtp (XML polydata), .vtm
 //   (XML multiblock, vtkXMLMultiBlockDataReader: every leaf dataset, non-polygonal ones reduced
-//   to their surface like .vtk), .gltf/.glb (vtkGLTFReader: every mesh of the default scene
-//   with its node transforms applied), .step/.stp/.iges/.igs (OpenCASCADE, CadReader.h: the
+//   to their surface like .vtk), .gltf/.glb (tinygltf, GltfReader.h: every mesh of the default
+//   scene with its node transforms applied, and its materials), .step/.stp/.iges/.igs (OpenCASCADE, CadReader.h: the
 //   assembly's parts tessellated by MeshReadOptions, with the faces' own normals and their
 //   parameterisation's tangents; lengths in millimetres). PLY, STL and OFF have their own readers:
 //   VTK has none for OFF, and its PLY and STL readers are not safe on hostile files. loadMesh
@@ -27,7 +27,8 @@
 // so that such entries count as NaN vertices, texture coordinates and normals, as in the other
 // formats. OBJ positions are stored as float by that reader (the other readers keep doubles).
 // Hostile input (truncated, garbage, out-of-range indices) gives an error or a smaller mesh,
-// never a crash: VTK's readers (OBJ, VTK, VTP, VTM, glTF) run in a program of their own,
+// never a crash: VTK's readers (OBJ, VTK, VTP, VTM), tinygltf (glTF) and OpenCASCADE (STEP,
+// IGES) run in a program of their own,
 // aniso-mesh-reader, started for each file (posix_spawn, never a fork of this process;
 // MeshReaderProcess.h), with a memory limit (a .vtm's budget counts the files it names) and a
 // time limit, which hands the surface or the parts back as VTK XML; a crash there becomes
