@@ -147,11 +147,19 @@ std::vector<vtkProp*> propsInRows(const vtkRenderState* s, const glm::dmat4& cli
                                              b[4 + ((corner >> 2) & 1)], 1.0);
       behind = !(p.w > 0.0);
       const double row = (0.5 * p.y / p.w + 0.5) * height;
+      if (!std::isfinite(row))
+      {
+        low = high = row; // unknown: kept
+        break;
+      }
       low = std::min(low, row);
       high = std::max(high, row);
     }
     constexpr double kMargin = 2.0;
-    if (behind || (high + kMargin >= y0 && low - kMargin <= y1))
+    // Rows that do not come out as numbers (a box of 1e30 overflows the projection) keep the
+    // prop: only a box known to lie outside the band leaves it out.
+    const bool unknown = !std::isfinite(low) || !std::isfinite(high);
+    if (behind || unknown || (high + kMargin >= y0 && low - kMargin <= y1))
     {
       kept.push_back(prop);
     }
