@@ -45,9 +45,8 @@ int main(int argc, char** argv)
       for (const aniso::EnvSource& s : a.sources)
         std::printf("  %-6s share %.4f  solid angle %.3e sr  radius %6.2f deg  texels %6d  "
                     "peak %.4g  elevation %6.2f deg  azimuth %7.2f deg\n",
-                    aniso::spelling(s.kind), s.powerShare, s.solidAngle,
-                    s.angularRadius * kDegrees, s.texels, s.peakLuminance,
-                    std::asin(s.direction.z) * kDegrees,
+                    aniso::spelling(s.kind), s.powerShare, s.solidAngle, s.angularRadius * kDegrees,
+                    s.texels, s.peakLuminance, std::asin(s.direction.z) * kDegrees,
                     std::atan2(s.direction.y, s.direction.x) * kDegrees);
       const auto* sunSky = dynamic_cast<const aniso::SunSkyEnvironment*>(env.get());
       if (sunSky && !a.sources.empty())

@@ -115,10 +115,9 @@ Expected expectedSource(const Blob& blob, double threshold, int w, int h)
   for (const auto& [x, y] : blob.texels)
     for (int cy = 0; cy <= 1; ++cy)
       for (int cx = 0; cx <= 1; ++cx)
-        e.angularRadius =
-            std::max(e.angularRadius,
-                     std::acos(std::min(1.0, glm::dot(e.direction,
-                                                      gridDirection(x + cx, y + cy, w, h)))));
+        e.angularRadius = std::max(
+            e.angularRadius,
+            std::acos(std::min(1.0, glm::dot(e.direction, gridDirection(x + cx, y + cy, w, h)))));
   return e;
 }
 
@@ -292,8 +291,7 @@ TEST(EnvSources, TwoBlobsGiveTwoSourcesWithTheirPowers)
   // Listed by power: a (400 x 12 texels) before b.
   const aniso::EnvSource& sa = result.sources[0];
   const aniso::EnvSource& sb = result.sources[1];
-  for (const auto& [source, expected, blob] :
-       {std::tie(sa, ea, a), std::tie(sb, eb, b)})
+  for (const auto& [source, expected, blob] : {std::tie(sa, ea, a), std::tie(sb, eb, b)})
   {
     EXPECT_EQ(source.texels, int(blob.texels.size()));
     EXPECT_NEAR(source.solidAngle, expected.solidAngle, 1e-9 * expected.solidAngle);
@@ -443,6 +441,21 @@ TEST(EnvSources, ResidualEnvironmentOfAnImageIsTheResidualImage)
   }
 }
 
+// An image loadEquirect accepts but that is not exactly 2:1 (an extra column) is sampled
+// through its own interpolation like an analytic environment.
+TEST(EnvSources, NearlyEquirectImagesAreSampled)
+{
+  aniso::Image image = filled(65, 32, glm::dvec3(1.0));
+  paint(image, rectangle(20, 10, 2, 2, 65, glm::dvec3(1e3)));
+  const aniso::EquirectEnvironment env(image, "65x32");
+  aniso::EnvAnalysisOptions options;
+  options.width = 64;
+  const aniso::EnvAnalysis a = aniso::analyzeEnvironment(env, options);
+  EXPECT_EQ(a.width, 64);
+  ASSERT_EQ(a.sources.size(), 1u);
+  EXPECT_NEAR(a.totalPower, totalPower(image), 0.02 * a.totalPower);
+}
+
 TEST(EnvSources, SharedAnalysisIsComputedOncePerKeyAndOptions)
 {
   const aniso::UniformEnvironment env(glm::dvec3(0.25));
@@ -451,8 +464,8 @@ TEST(EnvSources, SharedAnalysisIsComputedOncePerKeyAndOptions)
   std::vector<std::shared_ptr<const aniso::EnvAnalysis>> results(4);
   std::vector<std::thread> threads;
   for (int t = 0; t < 4; ++t)
-    threads.emplace_back([&, t]()
-                         { results[std::size_t(t)] = aniso::sharedEnvironmentAnalysis(env, options); });
+    threads.emplace_back(
+        [&, t]() { results[std::size_t(t)] = aniso::sharedEnvironmentAnalysis(env, options); });
   for (std::thread& thread : threads)
     thread.join();
   for (const auto& result : results)
@@ -480,6 +493,11 @@ TEST(EnvSources, MalformedInputIsRefusedNamingKeyAndOption)
                          {"sq", "16x16"});
   expectThrowsMentioning([&]() { aniso::analyzeEquirect(aniso::Image(), "empty"); },
                          {"empty", "empty"});
+  aniso::EnvAnalysisOptions narrow;
+  narrow.maxWidth = 16;
+  expectThrowsMentioning(
+      [&]() { aniso::analyzeEquirect(filled(36, 18, glm::dvec3(1.0)), "odd", narrow); },
+      {"odd", "18x9", "maxWidth"});
   aniso::Image inconsistent = filled(16, 8, glm::dvec3(1.0));
   inconsistent.data.pop_back();
   expectThrowsMentioning([&]() { aniso::analyzeEquirect(inconsistent, "cut"); },
@@ -552,10 +570,10 @@ TEST(EnvSources, BlenderHdrisKinds)
     bool sun;
     int windowsAtLeast;
   };
-  for (const Case& c : {Case{"city", true, 1}, Case{"courtyard", false, 4},
-                        Case{"forest", true, 3}, Case{"interior", false, 4},
-                        Case{"night", false, 1}, Case{"studio", false, 4},
-                        Case{"sunrise", true, 1}, Case{"sunset", true, 0}})
+  for (const Case& c :
+       {Case{"city", true, 1}, Case{"courtyard", false, 4}, Case{"forest", true, 3},
+        Case{"interior", false, 4}, Case{"night", false, 1}, Case{"studio", false, 4},
+        Case{"sunrise", true, 1}, Case{"sunset", true, 0}})
   {
     const std::string path = kBlender + c.name + ".exr";
     if (!std::filesystem::exists(path))
