@@ -233,8 +233,7 @@ EnvAnalysis analyzeEquirect(const Image& equirect, const std::string& key,
     image = halved(image);
   if (image.width > options.maxWidth)
     throw errorAbout(key, "a " + std::to_string(image.width) + "x" + std::to_string(image.height) +
-                              " image cannot be halved down to "
-                              "maxWidth " +
+                              " image cannot be halved down to maxWidth " +
                               std::to_string(options.maxWidth));
 
   const int w = image.width;
@@ -305,12 +304,12 @@ EnvAnalysis analyzeEquirect(const Image& equirect, const std::string& key,
   double excessPower = 0.0;
   for (std::size_t i = 0; i < texels; ++i)
   {
-    const double y = lum[i];
+    // In double, as the threshold was found (lum is rounded to float).
+    const double y = luminance(image.data[i * 3], image.data[i * 3 + 1], image.data[i * 3 + 2]);
     if (!(y > threshold))
       continue;
     group[i] = 0;
     const double keep = threshold / y;
-    double excessLuminance = 0.0;
     for (int c = 0; c < 3; ++c)
     {
       const float value = image.data[i * 3 + std::size_t(c)];
@@ -318,8 +317,8 @@ EnvAnalysis analyzeEquirect(const Image& equirect, const std::string& key,
       result.residual.data[i * 3 + std::size_t(c)] = residual;
       result.excess.data[i * 3 + std::size_t(c)] = value - residual;
     }
-    excessLuminance = luminance(result.excess.data[i * 3], result.excess.data[i * 3 + 1],
-                                result.excess.data[i * 3 + 2]);
+    const double excessLuminance = luminance(
+        result.excess.data[i * 3], result.excess.data[i * 3 + 1], result.excess.data[i * 3 + 2]);
     excessPower += excessLuminance * omega[i / std::size_t(w)];
   }
   result.sourcePowerShare = total > 0.0 ? excessPower / total : 0.0;
