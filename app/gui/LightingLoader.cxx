@@ -35,6 +35,12 @@ void LightingLoader::loadNow()
   lighting_ = std::make_shared<EnvironmentLighting>(assets_->environment(model_->text("env")),
                                                     model_->integer("cube-size"));
   lighting_->setRotationDegrees(model_->real("env-rotation"));
+  sampled_ = true;
+  if (!lighting_->prepared(parseEnvironmentSampling(model_->text("env-sampling"))))
+  {
+    // The analysis (or what the sampling needs) comes from the worker; the lobe alone until then.
+    request();
+  }
 }
 
 void LightingLoader::request()
@@ -60,8 +66,7 @@ void LightingLoader::startBake()
   pending_ = false;
   const int id = request_;
   const int cubeSize = model_->integer("cube-size");
-  const bool sampling =
-      parseEnvironmentSampling(model_->text("env-sampling")) != EnvironmentSampling::Off;
+  const EnvironmentSampling sampling = parseEnvironmentSampling(model_->text("env-sampling"));
   std::shared_ptr<const Environment> environment;
   try
   {
@@ -73,34 +78,37 @@ void LightingLoader::startBake()
     baked(id, nullptr, false, QString::fromStdString(e.what()));
     return;
   }
-  if (lighting_ && &lighting_->environment() == environment.get() &&
-      lighting_->cubeSize() == cubeSize && (!sampling || sampled_))
+  const bool same = lighting_ && &lighting_->environment() == environment.get() &&
+                    lighting_->cubeSize() == cubeSize;
+  if (same && lighting_->prepared(sampling))
   {
     // Back to what is shown (an undo, or a change reverted while a bake ran).
     baked(id, lighting_, sampled_, QString());
     return;
   }
+  // The same environment and cube, another sampling: its bakes are kept, the rest is added.
+  std::shared_ptr<EnvironmentLighting> base = same ? lighting_->copyBakes() : nullptr;
   inFlight_ = true;
   pool_->start(
-      [this, id, environment, cubeSize, sampling]
+      [this, id, environment, cubeSize, sampling, base]
       {
-        std::shared_ptr<EnvironmentLighting> lighting;
+        std::shared_ptr<EnvironmentLighting> lighting = base;
         const QString message = failureOf(
             [&]
             {
-              lighting = std::make_shared<EnvironmentLighting>(environment, cubeSize);
-              if (sampling)
+              if (!lighting)
               {
-                // The material samples the environment only with a lighting baked so: never
-                // baked on the UI thread.
-                lighting->samplingDistribution();
+                lighting = std::make_shared<EnvironmentLighting>(environment, cubeSize);
               }
+              // What the material's sampling needs (the analysis that resolves auto, the
+              // distribution, the sources' split): never baked on the UI thread.
+              lighting->prepare(sampling);
             },
             tr("cube-size: %1 is too large for the memory available").arg(cubeSize));
         // Delivered on the UI thread; dropped with the loader if it is gone by then.
         QMetaObject::invokeMethod(
             this,
-            [this, id, lighting, sampling, message] { baked(id, lighting, sampling, message); },
+            [this, id, lighting, message] { baked(id, lighting, true, message); },
             Qt::QueuedConnection);
       });
 }
@@ -145,11 +153,15 @@ bool LightingLoader::upload(EnvironmentLighting& lighting, bool sampled)
       {
         window_->MakeCurrent();
         lighting.cubeTexture(gl);
-        if (sampled)
+        if (sampled && lighting.prepared(EnvironmentSampling::Mis))
         {
           lighting.samplingCdfTexture(gl);
           lighting.samplingPdfTexture(gl);
           lighting.samplingGuideTexture(gl);
+        }
+        if (sampled && lighting.prepared(EnvironmentSampling::Sources))
+        {
+          lighting.residualCubeTexture(gl); // uploads every texture of the split
         }
       },
       tr("environment: its textures are too large for the memory available"));

@@ -7,6 +7,9 @@
 // lighting reaches the view over separate passes of the event loop, so their costs never add up
 // in one stall: its textures are uploaded into the view's window in one, the view switches to it
 // (shown) in a later one.
+#include "core/parameters/choices.h"
+#include "vtkpasses/render/EnvironmentLighting.h"
+
 #include <QObject>
 #include <QString>
 #include <memory>
@@ -39,15 +42,19 @@ public:
   // The window has drawn once: its GL context exists, baked lightings are uploaded into it
   // (until then the first frame drawn with one uploads its textures).
   void setContextReady() { contextReady_ = true; }
-  // Bakes the model's environment at its cube size (with env-sampling on, with its distribution)
-  // on the worker. Back to the lighting shown (an undo, a change reverted while a bake ran):
+  // Bakes the model's environment at its cube size (with what its env-sampling needs: the
+  // analysis, the distribution or the sources' split) on the worker. Back to the lighting shown (an undo, a change reverted while a bake ran):
   // nothing is baked.
   void request();
 
   // The lighting shown.
   const std::shared_ptr<EnvironmentLighting>& lighting() const { return lighting_; }
-  // It has its environment-sampling distribution.
-  bool sampled() const { return sampled_; }
+  // It has what a material sampling the environment by SAMPLING needs (its analysis,
+  // distribution or sources' split), baked on the worker.
+  bool prepared(EnvironmentSampling sampling) const
+  {
+    return lighting_ && sampled_ && lighting_->prepared(sampling);
+  }
   // True from a request until its lighting is shown (or its bake failed).
   bool busy() const { return inFlight_ || pending_ || next_ != nullptr; }
 

@@ -382,8 +382,7 @@ void SceneView::modelChanged(const QString& qkey)
       lightingLoader_->request();
     }
     else if (key == "env-sampling" &&
-             parseEnvironmentSampling(model_->text("env-sampling")) != EnvironmentSampling::Off &&
-             !lightingSampled())
+             !lightingPrepared(parseEnvironmentSampling(model_->text("env-sampling"))))
     {
       // The distribution is baked with a new lighting on the worker; until it is on screen the
       // material keeps sampling only its lobe.
@@ -889,9 +888,9 @@ void SceneView::applyMaterial()
         wanted.halfVectors = part.full.halfVectors;
       }
     }
-    if (wanted.environmentSampling != EnvironmentSampling::Off && !lightingSampled())
+    if (!lightingPrepared(wanted.environmentSampling))
     {
-      // Its distribution is being baked on the worker (LightingLoader); the lobe alone until then.
+      // What it needs is being baked on the worker (LightingLoader); the lobe alone until then.
       wanted.environmentSampling = EnvironmentSampling::Off;
     }
     part.full = wanted;

@@ -208,7 +208,10 @@ private:
   // The loader's new lighting to the pass and the material, drawn with a cheap frame.
   void lightingShown();
   // The lighting on screen has its environment-sampling distribution (baked on the worker).
-  bool lightingSampled() const { return lightingLoader_->sampled(); }
+  bool lightingPrepared(EnvironmentSampling sampling) const
+  {
+    return lightingLoader_->prepared(sampling);
+  }
   // Runs ACTION; an aniso::Error it throws is reported (errorOccurred).
   void attempt(const std::function<void()>& action);
   void applyMaterial();

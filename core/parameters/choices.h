@@ -33,8 +33,12 @@ std::string_view spelling(HalfVectorSource value);
 // "env-sampling"
 enum class EnvironmentSampling
 {
-  Off, // lobe samples only (the published method)
-  Mis, // one-sample MIS of lobe and environment samples (exact method only)
+  Auto,    // chosen by the environment: Sources where its analysis finds concentrated sources
+           // (core/env/env_sources.h, EnvAnalysis::concentrated), Off elsewhere
+  Off,     // lobe samples only (the published method)
+  Mis,     // one-sample MIS of lobe and environment samples (exact method only)
+  Sources, // the sources split off: the residual by lobe samples, the sources by their own
+           // samples and the lobe's, combined by MIS (exact method only)
 };
 EnvironmentSampling parseEnvironmentSampling(std::string_view text);
 std::string_view spelling(EnvironmentSampling value);

@@ -225,6 +225,18 @@ public:
     adopted = true;
   }
 
+  // The settings with their environment sampling as the lighting resolves it (Auto: by the
+  // environment's analysis).
+  MaterialSettings resolved() const
+  {
+    MaterialSettings s = settings;
+    s.environmentSampling = lighting ? lighting->resolveSampling(s.environmentSampling)
+                                     : (s.environmentSampling == EnvironmentSampling::Auto
+                                          ? EnvironmentSampling::Off
+                                          : s.environmentSampling);
+    return s;
+  }
+
   // The mesh the mapper is about to draw chooses the variant.
   void onMesh(vtkPolyData* poly)
   {
@@ -235,7 +247,8 @@ public:
   void updateVariant()
   {
     dropped = droppedMaps(settings, mesh.tcoords);
-    const MaterialVariant v = materialVariant(settings, mesh.normals, mesh.tangents, mesh.tcoords);
+    const MaterialVariant v =
+        materialVariant(resolved(), mesh.normals, mesh.tangents, mesh.tcoords);
     if (!hook.installed() || installed != v)
     {
       install(v);
@@ -360,7 +373,10 @@ public:
     // The environment: cube with seamless filtering across faces (VTK enables it only for
     // its own image-based lighting).
     window->GetState()->vtkglEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS);
-    hook.bindTexture(program, "anisoEnvironment", lighting->cubeTexture(window));
+    // With the sources split off, the lobe samples read the residual.
+    hook.bindTexture(program, "anisoEnvironment",
+                     installed.environmentSources ? lighting->residualCubeTexture(window)
+                                                  : lighting->cubeTexture(window));
     setUniformMatrix(program, "anisoWorldToEnvironment", lighting->worldToEnvironment());
     const double size = lighting->cubeSize();
     program->SetUniformf("anisoLog2TexelSolidAngle",
@@ -385,6 +401,18 @@ public:
                                ? settings.misLobeShare
                                : misLobeFraction(settings.lobe, d);
       program->SetUniformf("anisoLobeFraction", static_cast<float>(share));
+    }
+    if (installed.environmentSources)
+    {
+      hook.bindTexture(program, "anisoSourceRadiance", lighting->sourceRadianceTexture(window));
+      hook.bindTexture(program, "anisoSourceCdf", lighting->sourceCdfTexture(window));
+      hook.bindTexture(program, "anisoSourcePdf", lighting->sourcePdfTexture(window));
+      hook.bindTexture(program, "anisoSourceGuide", lighting->sourceGuideTexture(window));
+      const EnvironmentDistribution& d = *lighting->sourceSplit().distribution;
+      program->SetUniform2i("anisoSourceGrid", std::array<int, 2>{d.width(), d.height()}.data());
+      program->SetUniformi("anisoSourceSampleCount",
+                           settings.sourceSamples > 0 ? settings.sourceSamples
+                                                      : std::max(1, settings.samples / 4));
     }
     program->SetUniform3fv(
         "anisoIrradianceSH", 9,
@@ -504,6 +532,10 @@ void AnisoMaterial::setLighting(std::shared_ptr<EnvironmentLighting> lighting)
     throw errorAbout("environment", "a material needs lighting");
   }
   impl_->lighting = std::move(lighting);
+  if (impl_->hook.installed())
+  {
+    impl_->updateVariant(); // Auto may resolve otherwise under another environment
+  }
   impl_->hook.changed();
 }
 

@@ -3,6 +3,7 @@
 #include "core/error.h"
 #include "vtkpasses/render/TextureUpload.h"
 
+#include <algorithm>
 #include <cmath>
 #include <vtkOpenGLRenderWindow.h>
 #include <vtkTextureObject.h>
@@ -31,6 +32,22 @@ EnvironmentLighting::EnvironmentLighting(std::shared_ptr<const Environment> envi
 }
 
 EnvironmentLighting::~EnvironmentLighting() = default;
+
+std::shared_ptr<EnvironmentLighting> EnvironmentLighting::copyBakes() const
+{
+  std::shared_ptr<EnvironmentLighting> copy(new EnvironmentLighting());
+  copy->environment_ = environment_;
+  copy->cubemap_ = cubemap_;
+  copy->irradiance_ = irradiance_;
+  copy->rotationDegrees_ = rotationDegrees_;
+  copy->distribution_ = distribution_;
+  copy->analysis_ = analysis_;
+  if (split_)
+  {
+    copy->split_ = std::make_unique<SourceSplit>(*split_);
+  }
+  return copy;
+}
 
 void EnvironmentLighting::setRotationDegrees(double degrees)
 {
@@ -153,8 +170,180 @@ vtkTextureObject* EnvironmentLighting::samplingGuideTexture(vtkOpenGLRenderWindo
   return guideTexture_;
 }
 
+const EnvAnalysis& EnvironmentLighting::analysis()
+{
+  if (!analysis_)
+  {
+    analysis_ = sharedEnvironmentAnalysis(*environment_);
+  }
+  return *analysis_;
+}
+
+EnvironmentSampling EnvironmentLighting::resolveSampling(EnvironmentSampling requested)
+{
+  if (requested != EnvironmentSampling::Auto)
+  {
+    return requested;
+  }
+  return analysis().concentrated() ? EnvironmentSampling::Sources : EnvironmentSampling::Off;
+}
+
+void EnvironmentLighting::prepare(EnvironmentSampling requested)
+{
+  switch (resolveSampling(requested))
+  {
+  case EnvironmentSampling::Mis:
+    samplingDistribution();
+    break;
+  case EnvironmentSampling::Sources:
+    sourceSplit();
+    break;
+  default:
+    break;
+  }
+}
+
+bool EnvironmentLighting::prepared(EnvironmentSampling requested) const
+{
+  if (requested == EnvironmentSampling::Auto)
+  {
+    if (!analysis_)
+    {
+      return false;
+    }
+    requested = analysis_->concentrated() ? EnvironmentSampling::Sources : EnvironmentSampling::Off;
+  }
+  switch (requested)
+  {
+  case EnvironmentSampling::Mis:
+    return distribution_ != nullptr;
+  case EnvironmentSampling::Sources:
+    return split_ != nullptr;
+  default:
+    return true;
+  }
+}
+
+namespace
+{
+// Luminance of each texel: the sources' density, so that a sample's excess over its density is
+// the same wherever it lands on a source of one colour (the excess is read nearest, as the
+// density is constant per texel).
+Image luminanceOf(const Image& rgb)
+{
+  Image out(rgb.width, rgb.height, 1);
+  for (int y = 0; y < rgb.height; ++y)
+  {
+    for (int x = 0; x < rgb.width; ++x)
+    {
+      out.at(x, y, 0) =
+          0.2126f * rgb.at(x, y, 0) + 0.7152f * rgb.at(x, y, 1) + 0.0722f * rgb.at(x, y, 2);
+    }
+  }
+  return out;
+}
+} // namespace
+
+const EnvironmentLighting::SourceSplit& EnvironmentLighting::sourceSplit()
+{
+  if (!split_)
+  {
+    auto split = std::make_unique<SourceSplit>();
+    analysis();
+    split->analysis = analysis_;
+    // The residual image itself (bilinear), not the environment less the excess: with an
+    // analytic source smaller than the cube's samples, those would see the subtracted excess
+    // and miss the source. What is drawn is then the analysed image, residual + excess, whose
+    // texel means hold every source's power.
+    const EquirectEnvironment residual(analysis_->residual, analysis_->key + ":residual");
+    split->residualCube = buildCubemap(residual, cubemap_.size);
+    split->distribution = std::make_shared<const EnvironmentDistribution>(
+        luminanceOf(analysis_->excess), 0.0, analysis_->key + ":excess");
+    split_ = std::move(split);
+  }
+  return *split_;
+}
+
+void EnvironmentLighting::uploadSourceTextures(vtkOpenGLRenderWindow* window)
+{
+  if (sourceTextures_[0] && sourceWindow_ == window && sourceTextures_[0]->GetHandle() != 0)
+  {
+    return;
+  }
+  for (auto& t : sourceTextures_)
+  {
+    if (t && sourceWindow_)
+    {
+      t->ReleaseGraphicsResources(sourceWindow_);
+    }
+    t = nullptr;
+  }
+  const SourceSplit& split = sourceSplit();
+  const Image& excess = split.analysis->excess;
+  const Image cdf = split.distribution->cdfTable();
+  const Image pdf = split.distribution->pdfTable();
+  const Image guide =
+      samplingGuideTable(cdf, split.distribution->width(), split.distribution->height());
+  sourceTextures_[0] = uploadCubemap(window, split.residualCube, "residual environment cubemap");
+  sourceTextures_[1] = uploadFloatTexture(window, excess.width, excess.height, 3,
+                                          excess.data.data(), TextureFiltering::Nearest,
+                                          TextureWrap::RepeatSClampT, "environment sources");
+  sourceTextures_[2] =
+      uploadFloatTexture(window, cdf.width, cdf.height, 1, cdf.data.data(),
+                         TextureFiltering::Nearest, TextureWrap::Clamp, "sources sampling CDF");
+  sourceTextures_[3] =
+      uploadFloatTexture(window, pdf.width, pdf.height, 1, pdf.data.data(),
+                         TextureFiltering::Nearest, TextureWrap::Clamp, "sources sampling density");
+  sourceTextures_[4] =
+      uploadFloatTexture(window, guide.width, guide.height, 1, guide.data.data(),
+                         TextureFiltering::Nearest, TextureWrap::Clamp, "sources sampling guide");
+  sourceWindow_ = window;
+}
+
+vtkTextureObject* EnvironmentLighting::residualCubeTexture(vtkOpenGLRenderWindow* window)
+{
+  uploadSourceTextures(window);
+  return sourceTextures_[0];
+}
+
+vtkTextureObject* EnvironmentLighting::sourceRadianceTexture(vtkOpenGLRenderWindow* window)
+{
+  uploadSourceTextures(window);
+  return sourceTextures_[1];
+}
+
+vtkTextureObject* EnvironmentLighting::sourceCdfTexture(vtkOpenGLRenderWindow* window)
+{
+  uploadSourceTextures(window);
+  return sourceTextures_[2];
+}
+
+vtkTextureObject* EnvironmentLighting::sourcePdfTexture(vtkOpenGLRenderWindow* window)
+{
+  uploadSourceTextures(window);
+  return sourceTextures_[3];
+}
+
+vtkTextureObject* EnvironmentLighting::sourceGuideTexture(vtkOpenGLRenderWindow* window)
+{
+  uploadSourceTextures(window);
+  return sourceTextures_[4];
+}
+
 void EnvironmentLighting::releaseGraphicsResources(vtkWindow* window)
 {
+  if (sourceWindow_ == window)
+  {
+    for (auto& t : sourceTextures_)
+    {
+      if (t)
+      {
+        t->ReleaseGraphicsResources(window);
+      }
+      t = nullptr;
+    }
+    sourceWindow_ = nullptr;
+  }
   if (samplingWindow_ == window)
   {
     for (vtkTextureObject* t : {cdfTexture_.Get(), pdfTexture_.Get(), guideTexture_.Get()})

@@ -4,6 +4,8 @@
 // Shared by every anisotropic material of a renderer and by the accumulation pass.
 #include "core/env/cubemap.h"
 #include "core/env/env_sampling.h"
+#include "core/env/env_sources.h"
+#include "core/parameters/choices.h"
 #include "core/env/environment.h"
 
 #include <array>
@@ -35,6 +37,10 @@ public:
   // Throws aniso::Error for an invalid size.
   EnvironmentLighting(std::shared_ptr<const Environment> environment, int cubeSize);
   ~EnvironmentLighting();
+  // A lighting with what this one has baked (cubemap, SH9, rotation, analysis, distribution,
+  // split) and none of its textures: what a worker then prepares further while this one is
+  // drawn from.
+  std::shared_ptr<EnvironmentLighting> copyBakes() const;
   EnvironmentLighting(const EnvironmentLighting&) = delete;
   EnvironmentLighting& operator=(const EnvironmentLighting&) = delete;
 
@@ -70,9 +76,48 @@ public:
   vtkTextureObject* samplingCdfTexture(vtkOpenGLRenderWindow* window);
   vtkTextureObject* samplingPdfTexture(vtkOpenGLRenderWindow* window);
   vtkTextureObject* samplingGuideTexture(vtkOpenGLRenderWindow* window);
+
+  // The environment's analysis (core/env/env_sources.h, shared through
+  // sharedEnvironmentAnalysis), made on first use.
+  const EnvAnalysis& analysis();
+  // What a material asking for REQUESTED draws with: Auto is Sources when the analysis finds
+  // concentrated sources and Off otherwise (it makes the analysis); the others stay.
+  EnvironmentSampling resolveSampling(EnvironmentSampling requested);
+  // Bakes now what a material drawing with REQUESTED needs (the analysis for Auto, the
+  // distribution for Mis, the split for Sources): what a worker calls before the lighting is
+  // shown, so the UI thread never bakes.
+  void prepare(EnvironmentSampling requested);
+  // True when prepare(REQUESTED) has nothing left to bake.
+  bool prepared(EnvironmentSampling requested) const;
+
+  // The sources split off (Sources): the residual's cubemap (the analysed image less its
+  // excess, core/env/env_sources.h, with its mip chain: what the lobe samples read) and the
+  // excess's own sampling distribution on the grid of the analysis (each texel's density
+  // proportional to its excess luminance, uniform inside it, so the excess, read nearest, over
+  // the density is constant across a source of one colour). What is drawn is the analysed image
+  // (the image itself for an equirectangular environment at most EnvAnalysisOptions::maxWidth
+  // wide; an analytic one sampled into texel means, which keep a small sun's power). Baked on
+  // first use.
+  struct SourceSplit
+  {
+    std::shared_ptr<const EnvAnalysis> analysis;
+    Cubemap residualCube;
+    std::shared_ptr<const EnvironmentDistribution> distribution;
+  };
+  const SourceSplit& sourceSplit();
+  // In WINDOW's context: the residual cube (as cubeTexture), the excess (RGB float,
+  // equirectangular, nearest) and the excess distribution's tables (as the sampling tables).
+  vtkTextureObject* residualCubeTexture(vtkOpenGLRenderWindow* window);
+  vtkTextureObject* sourceRadianceTexture(vtkOpenGLRenderWindow* window);
+  vtkTextureObject* sourceCdfTexture(vtkOpenGLRenderWindow* window);
+  vtkTextureObject* sourcePdfTexture(vtkOpenGLRenderWindow* window);
+  vtkTextureObject* sourceGuideTexture(vtkOpenGLRenderWindow* window);
+
   void releaseGraphicsResources(vtkWindow* window);
 
 private:
+  EnvironmentLighting() = default;
+
   std::shared_ptr<const Environment> environment_;
   Cubemap cubemap_;
   std::array<glm::vec3, 9> irradiance_{};
@@ -86,6 +131,13 @@ private:
   vtkSmartPointer<vtkTextureObject> guideTexture_;
   vtkWeakPointer<vtkOpenGLRenderWindow> samplingWindow_;
 
+  std::shared_ptr<const EnvAnalysis> analysis_;
+  std::unique_ptr<SourceSplit> split_;
+  // residual cube, excess, CDF, pdf, guide
+  std::array<vtkSmartPointer<vtkTextureObject>, 5> sourceTextures_;
+  vtkWeakPointer<vtkOpenGLRenderWindow> sourceWindow_;
+
   void uploadSamplingTables(vtkOpenGLRenderWindow* window);
+  void uploadSourceTextures(vtkOpenGLRenderWindow* window);
 };
 } // namespace aniso

@@ -29,6 +29,9 @@ struct MaterialSettings
   // environment (misLobeFraction, core/env/env_sampling.h); a value in (0, 1) is used as it is
   // (benchmarks compare rules with it).
   double misLobeShare = 0.0;
+  // Source samples per fragment and frame with environment sampling `sources`: 0 = chosen
+  // from the sample count, max(1, samples / 4).
+  int sourceSamples = 0;
 
   // Variants.
   SpecularMethod method = SpecularMethod::Exact;
@@ -37,7 +40,8 @@ struct MaterialSettings
   int lutSize = 64;                                     // half-vector and BRDF LUTs
   int brdfLutSamples = 1024;                            // importance samples per BRDF LUT texel
   // Environment importance sampling combined with the lobe samples (bright small sources
-  // next to rough lobes); needs the exact method. Off costs nothing.
+  // next to rough lobes); needs the exact method. Off costs nothing. Auto (the parameter's
+  // default) is resolved by the lighting (EnvironmentLighting::resolveSampling).
   EnvironmentSampling environmentSampling = EnvironmentSampling::Off;
 
   // Maps, read through the mesh's texture coordinates; null = not used. Images have row 0 at
@@ -58,6 +62,7 @@ struct MaterialSettings
     return lobe.nu == o.lobe.nu && lobe.nv == o.lobe.nv && f0 == o.f0 && albedo == o.albedo &&
            samples == o.samples && heightScale == o.heightScale &&
            pixelDecorrelation == o.pixelDecorrelation && misLobeShare == o.misLobeShare &&
+           sourceSamples == o.sourceSamples &&
            method == o.method && filtered == o.filtered && halfVectors == o.halfVectors &&
            lutSize == o.lutSize && brdfLutSamples == o.brdfLutSamples &&
            environmentSampling == o.environmentSampling && normalMap == o.normalMap &&

@@ -7,7 +7,8 @@ namespace aniso
 bool MaterialVariant::operator==(const MaterialVariant& o) const
 {
   return method == o.method && filtered == o.filtered && halfVectors == o.halfVectors &&
-         environmentMis == o.environmentMis && normals == o.normals && tangents == o.tangents &&
+         environmentMis == o.environmentMis && environmentSources == o.environmentSources &&
+         normals == o.normals && tangents == o.tangents &&
          tcoords == o.tcoords && normalMap == o.normalMap && quaternionMap == o.quaternionMap &&
          tprMap == o.tprMap && heightMap == o.heightMap && albedoMap == o.albedoMap &&
          occlusionMap == o.occlusionMap && metallicMap == o.metallicMap;
@@ -22,6 +23,8 @@ MaterialVariant materialVariant(const MaterialSettings& settings, bool normals, 
   v.halfVectors = settings.halfVectors;
   v.environmentMis = settings.method == SpecularMethod::Exact &&
                      settings.environmentSampling == EnvironmentSampling::Mis;
+  v.environmentSources = settings.method == SpecularMethod::Exact &&
+                         settings.environmentSampling == EnvironmentSampling::Sources;
   v.normals = normals;
   v.tangents = tangents;
   v.tcoords = tcoords;
@@ -55,6 +58,7 @@ std::string variantDefines(const MaterialVariant& v)
   define(v.filtered, "ANISO_FILTERED");
   define(v.halfVectors == HalfVectorSource::Lut, "ANISO_HALF_VECTORS_FROM_LUT");
   define(v.environmentMis, "ANISO_ENVIRONMENT_MIS");
+  define(v.environmentSources, "ANISO_ENVIRONMENT_SOURCES");
   define(v.normals, "ANISO_HAVE_NORMALS");
   define(v.tangents, "ANISO_HAVE_TANGENTS");
   define(v.tcoords, "ANISO_HAVE_TCOORDS");

@@ -20,6 +20,7 @@ struct MaterialVariant
   bool filtered = true;
   HalfVectorSource halfVectors = HalfVectorSource::Shader;
   bool environmentMis = false; // environment samples and MIS (exact method only)
+  bool environmentSources = false; // the sources split off and sampled (exact method only)
   bool normals = false;        // mesh attributes present
   bool tangents = false;
   bool tcoords = false;
@@ -36,7 +37,8 @@ struct MaterialVariant
 };
 
 // The variant of SETTINGS on a mesh with the given arrays. Maps need texture coordinates;
-// without them they are left out (see droppedMaps).
+// without them they are left out (see droppedMaps). SETTINGS' environment sampling is taken as
+// resolved (EnvironmentLighting::resolveSampling): Auto draws as Off here.
 MaterialVariant materialVariant(const MaterialSettings& settings, bool normals, bool tangents,
                                 bool tcoords);
 // True when SETTINGS asks for maps that the mesh cannot use (no texture coordinates).

@@ -90,10 +90,10 @@ vtkSmartPointer<vtkTextureObject> uploadFloatTexture(vtkOpenGLRenderWindow* wind
     throw errorAbout(subject, "empty texture");
   }
   auto texture = newFloatTexture(window, channels, subject);
-  const int wrapMode =
-      wrap == TextureWrap::Repeat ? vtkTextureObject::Repeat : vtkTextureObject::ClampToEdge;
-  texture->SetWrapS(wrapMode);
-  texture->SetWrapT(wrapMode);
+  texture->SetWrapS(wrap == TextureWrap::Clamp ? vtkTextureObject::ClampToEdge
+                                               : vtkTextureObject::Repeat);
+  texture->SetWrapT(wrap == TextureWrap::Repeat ? vtkTextureObject::Repeat
+                                                : vtkTextureObject::ClampToEdge);
   switch (filtering)
   {
   case TextureFiltering::Nearest:

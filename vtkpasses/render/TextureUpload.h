@@ -23,6 +23,7 @@ enum class TextureWrap
 {
   Clamp,
   Repeat,
+  RepeatSClampT, // an equirectangular image: around in u, clamped at the poles
 };
 
 // A 2D float texture of `channels` (1 to 4) from interleaved rows; row 0 of `data` becomes

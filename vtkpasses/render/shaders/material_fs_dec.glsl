@@ -31,7 +31,8 @@ uniform vec3 anisoIrradianceSH[9]; // SH9 radiance coefficients times the cosine
 uniform sampler2D anisoHalfVectorLut; // RGBA32F: h in tangent space, log2 p_h
 uniform int anisoHalfVectorLutSize;
 #endif
-#if !defined(ANISO_HALF_VECTORS_FROM_LUT) || defined(ANISO_ENVIRONMENT_MIS)
+#if !defined(ANISO_HALF_VECTORS_FROM_LUT) || defined(ANISO_ENVIRONMENT_MIS) ||                 \
+  defined(ANISO_ENVIRONMENT_SOURCES)
 uniform vec2 anisoExponents; // (n_u, n_v)
 #endif
 #ifdef ANISO_ENVIRONMENT_MIS
@@ -41,6 +42,17 @@ uniform sampler2D anisoEnvPdf; // R32F, W x H: density per solid angle of each g
 uniform sampler2D anisoEnvGuide; // R32F, as anisoEnvCdf: entry j = the interval of u = j / count
 uniform ivec2 anisoEnvGrid;    // (W, H)
 uniform float anisoLobeFraction; // share of the lobe technique in the one-sample MIS
+#endif
+#ifdef ANISO_ENVIRONMENT_SOURCES
+// The environment's sources split off (core/env/env_sources.h): anisoEnvironment holds the
+// residual; the excess is an equirectangular texture (environment coordinates) with its own
+// sampling tables, laid out as the environment's.
+uniform sampler2D anisoSourceRadiance; // RGB32F excess, nearest (constant per texel)
+uniform sampler2D anisoSourceCdf;
+uniform sampler2D anisoSourcePdf;
+uniform sampler2D anisoSourceGuide;
+uniform ivec2 anisoSourceGrid;
+uniform int anisoSourceSampleCount; // M, source samples per fragment and frame
 #endif
 #ifdef ANISO_METHOD_SPLIT_SUM
 uniform sampler2D anisoBrdfLut; // RG32F: s, b with F0 s + b the directional albedo
@@ -180,7 +192,8 @@ float anisoSampleLod(float log2PdfLight, int count)
 #endif
 }
 
-#if !defined(ANISO_HALF_VECTORS_FROM_LUT) || defined(ANISO_ENVIRONMENT_MIS)
+#if !defined(ANISO_HALF_VECTORS_FROM_LUT) || defined(ANISO_ENVIRONMENT_MIS) ||                 \
+  defined(ANISO_ENVIRONMENT_SOURCES)
 // log2 of the AS half-vector density sqrt((n_u+1)(n_v+1))/(2 pi) (n.h)^e for h in tangent
 // space, e = (n_u h_t^2 + n_v h_b^2) / (1 - h_n^2); -inf below the surface.
 float anisoLog2HalfVectorPdf(vec3 h)
@@ -198,19 +211,19 @@ float anisoLog2HalfVectorPdf(vec3 h)
 }
 #endif
 
-#ifdef ANISO_ENVIRONMENT_MIS
+#if defined(ANISO_ENVIRONMENT_MIS) || defined(ANISO_ENVIRONMENT_SOURCES)
 // Index i in [0, count) with cdf(i) <= x < cdf(i + 1) in row `row` of the CDF table, by
 // bisection between the guide table's entries for floor(x count) and the next (few steps or
 // none, instead of log2(count)): never an interval of zero width.
-int anisoFindInterval(int row, int count, float x)
+int anisoFindInterval(sampler2D cdf, sampler2D guide, int row, int count, float x)
 {
   int j = min(int(x * float(count)), count - 1);
-  int lo = int(texelFetch(anisoEnvGuide, ivec2(j, row), 0).r);
-  int hi = int(texelFetch(anisoEnvGuide, ivec2(j + 1, row), 0).r) + 1;
+  int lo = int(texelFetch(guide, ivec2(j, row), 0).r);
+  int hi = int(texelFetch(guide, ivec2(j + 1, row), 0).r) + 1;
   while (hi - lo > 1)
   {
     int mid = (lo + hi) / 2;
-    if (texelFetch(anisoEnvCdf, ivec2(mid, row), 0).r <= x)
+    if (texelFetch(cdf, ivec2(mid, row), 0).r <= x)
     {
       lo = mid;
     }
@@ -222,38 +235,55 @@ int anisoFindInterval(int row, int count, float x)
   return lo;
 }
 
-// A direction (environment coordinates) of the environment distribution and its density:
-// a row from the marginal CDF, a column from the row's CDF, then uniform in (phi, cos theta)
-// inside the texel, as EnvironmentDistribution::sample does.
-vec4 anisoSampleEnvironment(vec2 xi)
+// A direction (environment coordinates) of a distribution's tables (the environment's or the
+// sources') and its density: a row from the marginal CDF, a column from the row's CDF, then
+// uniform in (phi, cos theta) inside the texel, as EnvironmentDistribution::sample does.
+vec4 anisoSampleTables(sampler2D cdf, sampler2D guide, sampler2D pdf, ivec2 grid, vec2 xi)
 {
-  int w = anisoEnvGrid.x;
-  int h = anisoEnvGrid.y;
-  int y = anisoFindInterval(h, h, xi.y);
-  float r0 = texelFetch(anisoEnvCdf, ivec2(y, h), 0).r;
-  float r1 = texelFetch(anisoEnvCdf, ivec2(y + 1, h), 0).r;
+  int w = grid.x;
+  int h = grid.y;
+  int y = anisoFindInterval(cdf, guide, h, h, xi.y);
+  float r0 = texelFetch(cdf, ivec2(y, h), 0).r;
+  float r1 = texelFetch(cdf, ivec2(y + 1, h), 0).r;
   float t = clamp((xi.y - r0) / max(r1 - r0, 1e-30), 0.0, 1.0);
-  int x = anisoFindInterval(y, w, xi.x);
-  float c0 = texelFetch(anisoEnvCdf, ivec2(x, y), 0).r;
-  float c1 = texelFetch(anisoEnvCdf, ivec2(x + 1, y), 0).r;
+  int x = anisoFindInterval(cdf, guide, y, w, xi.x);
+  float c0 = texelFetch(cdf, ivec2(x, y), 0).r;
+  float c1 = texelFetch(cdf, ivec2(x + 1, y), 0).r;
   float s = clamp((xi.x - c0) / max(c1 - c0, 1e-30), 0.0, 1.0);
   float zTop = cos(anisoPi * float(y) / float(h));
   float zBottom = cos(anisoPi * float(y + 1) / float(h));
   float z = clamp(mix(zTop, zBottom, t), -1.0, 1.0);
   float sinTheta = sqrt(max(1.0 - z * z, 0.0));
   float phi = anisoPi - 2.0 * anisoPi * (float(x) + s) / float(w);
-  return vec4(sinTheta * cos(phi), sinTheta * sin(phi), z,
-              texelFetch(anisoEnvPdf, ivec2(x, y), 0).r);
+  return vec4(sinTheta * cos(phi), sinTheta * sin(phi), z, texelFetch(pdf, ivec2(x, y), 0).r);
+}
+
+// (u, theta / pi) of direction d (environment coordinates, need not be unit): the
+// equirectangular coordinates, texture t = 0 at the zenith.
+vec2 anisoEquirectCoords(vec3 d)
+{
+  float u = fract(0.5 - atan(d.y, d.x) * (0.5 / anisoPi));
+  return vec2(u, acos(clamp(d.z / max(length(d), 1e-30), -1.0, 1.0)) * (1.0 / anisoPi));
+}
+
+// Density of a distribution's tables at equirectangular coordinates uv.
+float anisoTablePdf(sampler2D pdf, ivec2 grid, vec2 uv)
+{
+  ivec2 texel = clamp(ivec2(uv * vec2(grid)), ivec2(0), grid - 1);
+  return texelFetch(pdf, texel, 0).r;
+}
+#endif
+
+#ifdef ANISO_ENVIRONMENT_MIS
+vec4 anisoSampleEnvironment(vec2 xi)
+{
+  return anisoSampleTables(anisoEnvCdf, anisoEnvGuide, anisoEnvPdf, anisoEnvGrid, xi);
 }
 
 // Density of the environment distribution at direction d (environment coordinates).
 float anisoEnvironmentPdf(vec3 d)
 {
-  float u = fract(0.5 - atan(d.y, d.x) * (0.5 / anisoPi));
-  float theta = acos(clamp(d.z / max(length(d), 1e-30), -1.0, 1.0));
-  vec2 grid = vec2(anisoEnvGrid);
-  ivec2 texel = clamp(ivec2(vec2(u, theta / anisoPi) * grid), ivec2(0), anisoEnvGrid - 1);
-  return texelFetch(anisoEnvPdf, texel, 0).r;
+  return anisoTablePdf(anisoEnvPdf, anisoEnvGrid, anisoEquirectCoords(d));
 }
 #endif
 
@@ -265,6 +295,30 @@ vec2 anisoBrdfLutCoords(vec3 t, vec3 b, vec3 n, vec3 v)
   float bv = abs(dot(b, v));
   float u = tv + bv > 0.0 ? atan(bv, tv) * (2.0 / anisoPi) : 0.0;
   return vec2(u, sqrt(max(dot(n, v), 0.0)));
+}
+#endif
+
+#ifdef ANISO_ENVIRONMENT_SOURCES
+// The sources' light by multi-sample MIS of the N lobe samples and the M source samples
+// (balance heuristic): a sample of either technique in direction l adds
+// f (n.l) L_s(l) / (N p_lobe(l) + M p_s(l)) to the estimate, both densities per solid angle,
+// p_lobe the analytic one in either case so the weights of a direction sum to 1. The residual
+// (anisoEnvironment) is integrated by the lobe samples alone. This returns
+// N L_s / (N p_lobe + M p_s) at a lobe sample (the caller multiplies by its AS weight, f (n.l)
+// / p_lobe, and the sum is divided by N).
+vec3 anisoSourceAtLobeSample(vec3 l, vec3 h, vec3 t, vec3 b, vec3 n, float vDotH, int count)
+{
+  vec2 uv = anisoEquirectCoords(anisoWorldToEnvironment * l);
+  vec3 source = textureLod(anisoSourceRadiance, uv, 0.0).rgb;
+  if (source == vec3(0.0))
+  {
+    return vec3(0.0);
+  }
+  float pdfLobe =
+    exp2(anisoLog2HalfVectorPdf(vec3(dot(h, t), dot(h, b), dot(h, n))) - log2(4.0 * vDotH));
+  float pdfSource = anisoTablePdf(anisoSourcePdf, anisoSourceGrid, uv);
+  float n0 = float(count);
+  return source * (n0 * pdfLobe / (n0 * pdfLobe + float(anisoSourceSampleCount) * pdfSource));
 }
 #endif
 
@@ -346,6 +400,9 @@ vec3 anisoSpecular(vec3 t, vec3 b, vec3 n, vec3 v, vec3 f0)
       continue;
     }
     vec3 radiance = anisoEnvironmentRadiance(l, anisoSampleLod(hs.w - log2(4.0 * vDotH), count));
+#ifdef ANISO_ENVIRONMENT_SOURCES
+    radiance += anisoSourceAtLobeSample(l, h, t, b, n, vDotH, count);
+#endif
 #ifdef ANISO_METHOD_SPLIT_SUM
     sum += radiance * nDotL;
     weight += nDotL;
@@ -356,6 +413,34 @@ vec3 anisoSpecular(vec3 t, vec3 b, vec3 n, vec3 v, vec3 f0)
 #endif
 #endif
   }
+#ifdef ANISO_ENVIRONMENT_SOURCES
+  // The source samples: M points of the sources' distribution, stratified and shifted by the
+  // frame as the lobe's are, each weighted as anisoSourceAtLobeSample says (times N, as the
+  // lobe's sum is divided by N).
+  mat3 sourceToWorld = transpose(anisoWorldToEnvironment);
+  int sourceCount = max(anisoSourceSampleCount, 0);
+  for (int j = 0; j < sourceCount; ++j)
+  {
+    vec4 ls = anisoSampleTables(anisoSourceCdf, anisoSourceGuide, anisoSourcePdf, anisoSourceGrid,
+                                anisoSamplePoint(j, sourceCount, shift));
+    vec3 l = sourceToWorld * ls.xyz;
+    float nDotL = dot(n, l);
+    vec3 h = normalize(v + l);
+    float vDotH = dot(v, h);
+    if (!(ls.w > 0.0) || nDotL <= 0.0 || vDotH <= 0.0)
+    {
+      continue;
+    }
+    vec3 source = textureLod(anisoSourceRadiance, anisoEquirectCoords(ls.xyz), 0.0).rgb;
+    float pdfLobe =
+      exp2(anisoLog2HalfVectorPdf(vec3(dot(h, t), dot(h, b), dot(h, n))) - log2(4.0 * vDotH));
+    float n0 = float(count);
+    float m = clamp(1.0 - vDotH, 0.0, 1.0);
+    float chi = m * m * m * m * m;
+    sum += source * (f0 + (1.0 - f0) * chi) * (nDotL / max(nDotL, nDotV)) *
+      (n0 * pdfLobe / (n0 * pdfLobe + float(sourceCount) * ls.w));
+  }
+#endif
 #ifdef ANISO_METHOD_SPLIT_SUM
   vec3 prefiltered = weight > 0.0 ? sum / weight : vec3(0.0);
   vec2 sizeBias = textureLod(anisoBrdfLut, anisoBrdfLutCoords(t, b, n, v), 0.0).rg;
