@@ -81,9 +81,24 @@ struct EnvAnalysis
   Image excess;
   Image residual;
 
-  // True when the sources carry enough of the power that lobe sampling alone misses them:
-  // sourcePowerShare >= 0.05 (the default estimator choice reads this).
-  bool concentrated() const { return sourcePowerShare >= 0.05; }
+  // True when a source is bright enough against the rest that lobe samples alone miss it: a
+  // listed source whose peak reaches kConcentratedPeak x T and which carries at least
+  // kConcentratedShare of the power (a sun, a lamp, a bright window; not the built-in studio's
+  // soft boxes, 3 T at most, which lobe sampling integrates well). What `env-sampling auto`
+  // reads (docs/BENCHMARKS.md measures the choice).
+  static constexpr double kConcentratedPeak = 16.0;
+  static constexpr double kConcentratedShare = 0.005;
+  bool concentrated() const
+  {
+    for (const EnvSource& s : sources)
+    {
+      if (s.peakLuminance >= kConcentratedPeak * threshold && s.powerShare >= kConcentratedShare)
+      {
+        return true;
+      }
+    }
+    return false;
+  }
 };
 
 // Analyses an equirectangular RGB image of texel-mean radiance (1 or 2 channels: grey, beyond

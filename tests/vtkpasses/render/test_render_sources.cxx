@@ -93,8 +93,9 @@ TEST(SourcesVariant, IsAnExactVariantCompiledOnlyWhenOn)
       std::string::npos);
 }
 
-// GL-free: auto resolves by the environment's analysis: sources under the sun and sky, lobe
-// samples alone under a uniform environment (nothing concentrated).
+// GL-free: auto resolves by the environment's analysis (EnvAnalysis::concentrated): sources
+// under the sun and sky and Blender's sunset, lobe samples alone under a uniform environment
+// (nothing found) and the built-in studio (soft boxes only a few times the threshold).
 TEST(SourcesVariant, AutoFollowsTheAnalysis)
 {
   EnvironmentLighting sun(sunSky(), 16);
@@ -104,6 +105,16 @@ TEST(SourcesVariant, AutoFollowsTheAnalysis)
   EnvironmentLighting white(openEnvironment("builtin:white"), 16);
   EXPECT_EQ(white.resolveSampling(EnvironmentSampling::Auto), EnvironmentSampling::Off);
   EXPECT_EQ(white.resolveSampling(EnvironmentSampling::Sources), EnvironmentSampling::Sources);
+  // The built-in studio's soft boxes reach about 3 T: lobe sampling integrates them well.
+  EnvironmentLighting studio(openEnvironment("builtin:studio"), 16);
+  EXPECT_EQ(studio.resolveSampling(EnvironmentSampling::Auto), EnvironmentSampling::Off);
+  // Sunset: a sun of 2.3% of the power at 449 T, which lobe samples miss.
+  const std::string sunset = "/usr/share/blender/datafiles/studiolights/world/sunset.exr";
+  if (std::filesystem::exists(sunset))
+  {
+    EnvironmentLighting lighting(openEnvironment(sunset), 16);
+    EXPECT_EQ(lighting.resolveSampling(EnvironmentSampling::Auto), EnvironmentSampling::Sources);
+  }
 }
 
 // GL-free: the split the renderer draws adds up to the environment: the residual cube's texels
