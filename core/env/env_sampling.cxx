@@ -214,6 +214,78 @@ Image renderEquirectRefined(const Environment& env, int width, int height, int s
   return image;
 }
 
+namespace
+{
+double cubeLuminance(const Image& face, int x, int y)
+{
+  return 0.2126 * face.at(x, y, 0) + 0.7152 * face.at(x, y, 1) + 0.0722 * face.at(x, y, 2);
+}
+
+// The largest cube texel (level 0) that a bilinear lookup from inside grid texel (x, y) of a
+// W x H grid reads: the 2 x 2 texels around each of 5 x 5 points spread over the texel, which lie
+// closer together than a cube texel wherever grid texels are at most twice as wide as cube
+// texels (a 256 cube against the 1024 grid: 1.3 grid texels per cube texel at a face centre).
+double shownLuminance(const Cubemap& cube, int x, int y, int w, int h)
+{
+  constexpr int kPoints = 5;
+  const int size = cube.size;
+  double largest = 0.0;
+  for (int j = 0; j < kPoints; ++j)
+    for (int i = 0; i < kPoints; ++i)
+    {
+      const double u = (x + double(i) / (kPoints - 1)) / w;
+      const double v = 1.0 - (y + double(j) / (kPoints - 1)) / h;
+      double s = 0.0;
+      double t = 0.0;
+      const int face = cubeFaceOf(equirectToDirection({u, v}), &s, &t);
+      const Image& image = cube.mips[0][std::size_t(face)];
+      const int x0 = std::clamp(int(std::floor(s * size - 0.5)), 0, size - 1);
+      const int y0 = std::clamp(int(std::floor(t * size - 0.5)), 0, size - 1);
+      const int x1 = std::min(x0 + 1, size - 1);
+      const int y1 = std::min(y0 + 1, size - 1);
+      largest = std::max({largest, cubeLuminance(image, x0, y0), cubeLuminance(image, x1, y0),
+                          cubeLuminance(image, x0, y1), cubeLuminance(image, x1, y1)});
+    }
+  return largest;
+}
+
+// out[i] = the largest of in[i - radius .. i + radius] (wrapped around when `wrap`, clamped to
+// the ends otherwise), for n values `stride` apart: a monotone queue, O(n) whatever the radius.
+void slidingMax(const double* in, double* out, int n, int stride, int radius, bool wrap)
+{
+  if (wrap && 2 * radius + 1 >= n)
+  {
+    double largest = 0.0;
+    for (int i = 0; i < n; ++i)
+      largest = std::max(largest, in[std::size_t(i) * std::size_t(stride)]);
+    for (int i = 0; i < n; ++i)
+      out[std::size_t(i) * std::size_t(stride)] = largest;
+    return;
+  }
+  auto at = [&](int i)
+  {
+    const int k = wrap ? (i % n + n) % n : std::clamp(i, 0, n - 1);
+    return in[std::size_t(k) * std::size_t(stride)];
+  };
+  std::vector<std::pair<int, double>> queue; // decreasing values, as a deque in a vector
+  std::size_t head = 0;
+  int next = -radius;
+  for (int i = 0; i < n; ++i)
+  {
+    for (; next <= i + radius; ++next)
+    {
+      const double value = at(next);
+      while (queue.size() > head && queue.back().second <= value)
+        queue.pop_back();
+      queue.emplace_back(next, value);
+    }
+    while (queue[head].first < i - radius)
+      ++head;
+    out[std::size_t(i) * std::size_t(stride)] = queue[head].second;
+  }
+}
+} // namespace
+
 EnvironmentDistribution EnvironmentDistribution::bake(const Environment& env,
                                                       const EnvSamplingOptions& options)
 {
@@ -221,6 +293,32 @@ EnvironmentDistribution EnvironmentDistribution::bake(const Environment& env,
   return EnvironmentDistribution(
       renderEquirectRefined(env, options.width, options.width / 2, options.supersample),
       options.uniformFraction, distributionKey(env.key(), options));
+}
+
+EnvironmentDistribution EnvironmentDistribution::bake(const Environment& env,
+                                                      const EnvSamplingOptions& options,
+                                                      const Cubemap& shown)
+{
+  if (shown.size < 1 || shown.mips.empty())
+    throw errorAbout("cube map", "empty");
+  validateOptions(options);
+  Image image = renderEquirectRefined(env, options.width, options.width / 2, options.supersample);
+  const int w = image.width;
+  const int h = image.height;
+  parallelFor(h,
+              [&](int y)
+              {
+                for (int x = 0; x < w; ++x)
+                {
+                  const double cube = shownLuminance(shown, x, y, w, h);
+                  if (cube > luminanceOf(image, x, y))
+                    for (int c = 0; c < 3; ++c) // grey: the luminance weights sum to 1
+                      image.at(x, y, c) = float(cube);
+                }
+              });
+  return EnvironmentDistribution(image, options.uniformFraction,
+                                 distributionKey(env.key(), options) + "|shown-by-cube" +
+                                     std::to_string(shown.size));
 }
 
 EnvSample EnvironmentDistribution::sample(const glm::dvec2& xi) const
@@ -277,6 +375,58 @@ Image EnvironmentDistribution::pdfTable() const
   Image table(width_, height_, 1);
   for (std::size_t i = 0; i < density_.size(); ++i)
     table.data[i] = float(density_[i]);
+  return table;
+}
+
+Image EnvironmentDistribution::lodBoundTable(int cubeSize, int maxLevel) const
+{
+  if (cubeSize < 1 || (cubeSize & (cubeSize - 1)) != 0)
+    throw errorAbout("cubeSize", "must be a power of two, got " + std::to_string(cubeSize));
+  constexpr double kLodBoundContrast = 4.0;
+  const int w = width_;
+  const int h = height_;
+  const std::size_t texels = std::size_t(w) * std::size_t(h);
+  const double rowAngle = kPi / h;
+  Image table(w, h, 1);
+  std::vector<bool> open(texels, true);
+  std::vector<double> rows(texels, 0.0);
+  std::vector<double> reach(texels, 0.0);
+  for (int level = 0; level <= maxLevel; ++level)
+  {
+    // A bilinear lookup at `level` reads texels whose centres lie within one texel, and those
+    // hold radiance from half a texel further: 1.5 texels of 2 / cubeSize radians at most (a
+    // face's centre), plus half a grid texel for the lookup's own place inside its texel.
+    const double angle = 1.5 * std::ldexp(2.0 / cubeSize, level) + 0.5 * rowAngle;
+    const int rowRadius = int(std::ceil(angle / rowAngle));
+    for (int x = 0; x < w; ++x)
+      slidingMax(density_.data() + x, rows.data() + x, h, w, rowRadius, false);
+    for (int y = 0; y < h; ++y)
+    {
+      // Columns are narrower towards the poles: the radius of the window's most polar row.
+      const double thetaTop = std::max(0.0, (y - rowRadius) * rowAngle);
+      const double thetaBottom = std::min(kPi, (y + 1 + rowRadius) * rowAngle);
+      const double sinTheta = (thetaTop <= 0.5 * kPi && thetaBottom >= 0.5 * kPi)
+                                  ? 1.0
+                                  : std::min(std::sin(thetaTop), std::sin(thetaBottom));
+      const double columnAngle = kTwoPi / w * std::max(sinTheta, 1e-9);
+      const double columns = std::ceil(angle / columnAngle);
+      const int columnRadius = columns >= w ? w : int(columns);
+      slidingMax(rows.data() + std::size_t(y) * std::size_t(w),
+                 reach.data() + std::size_t(y) * std::size_t(w), w, 1, columnRadius, true);
+    }
+    for (std::size_t i = 0; i < texels; ++i)
+    {
+      if (!open[i])
+        continue;
+      if (reach[i] > kLodBoundContrast * density_[i])
+      {
+        open[i] = false;
+        table.data[i] = float(std::max(level - 1, 0));
+      }
+      else
+        table.data[i] = float(level);
+    }
+  }
   return table;
 }
 
@@ -388,12 +538,14 @@ std::string distributionKey(const std::string& environmentKey, const EnvSampling
 }
 
 std::shared_ptr<const EnvironmentDistribution> sharedDistribution(const Environment& env,
-                                                                  const EnvSamplingOptions& options)
+                                                                  const EnvSamplingOptions& options,
+                                                                  const Cubemap* shown)
 {
   validateOptions(options);
   static std::mutex mutex;
   static std::map<std::string, std::weak_ptr<const EnvironmentDistribution>> cache;
-  const std::string key = distributionKey(env.key(), options);
+  const std::string key = distributionKey(env.key(), options) +
+                          (shown ? "|shown-by-cube" + std::to_string(shown->size) : "");
   {
     std::lock_guard<std::mutex> lock(mutex);
     if (auto existing = cache[key].lock())
@@ -401,8 +553,9 @@ std::shared_ptr<const EnvironmentDistribution> sharedDistribution(const Environm
   }
   // Baked outside the lock so other keys are not held up; two simultaneous first requests for
   // one key both bake, and the first stored result wins.
-  auto baked =
-      std::make_shared<const EnvironmentDistribution>(EnvironmentDistribution::bake(env, options));
+  auto baked = std::make_shared<const EnvironmentDistribution>(
+      shown ? EnvironmentDistribution::bake(env, options, *shown)
+            : EnvironmentDistribution::bake(env, options));
   std::lock_guard<std::mutex> lock(mutex);
   if (auto existing = cache[key].lock())
     return existing;

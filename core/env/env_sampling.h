@@ -12,6 +12,7 @@
 // pdf as a W x H R32F texture (one fetch per direction). Sizes are whatever the caller bakes;
 // 512 x 256 costs 0.5 MB per table.
 #include "core/brdf/ashikhmin_shirley.h"
+#include "core/env/cubemap.h"
 #include "core/env/environment.h"
 #include "core/image/image.h"
 
@@ -65,6 +66,14 @@ public:
   // sun, 0.27 degrees) send most of the sun's samples onto it. Throws aniso::Error naming the
   // option out of range.
   static EnvironmentDistribution bake(const Environment& env, const EnvSamplingOptions& options);
+  // As bake(env, options), then each texel's luminance raised to the largest that a bilinear
+  // lookup of level 0 of `shown` (a cube map of env) can return inside the texel: the largest of
+  // the cube texels such lookups read. A cube whose texels are wider than the grid's shows a
+  // small source (the sun) over their bilinear reach, beyond the grid texels that hold it; lobe
+  // samples of MIS that land there would read the source over the sky's density, a weight of up
+  // to L_source / c (single-pixel spikes, docs/BENCHMARKS.md "MIS outliers next to the sun").
+  static EnvironmentDistribution bake(const Environment& env, const EnvSamplingOptions& options,
+                                      const Cubemap& shown);
 
   // Direction with density pdf(direction) from xi in [0, 1)^2 (clamped into it).
   EnvSample sample(const glm::dvec2& xi) const;
@@ -85,6 +94,13 @@ public:
   // channel, the density per unit solid angle of each texel.
   Image cdfTable() const;
   Image pdfTable() const;
+  // W x H, one channel: per texel the coarsest mip level of a cube map of cubeSize (level 0)
+  // whose bilinear lookups from inside the texel read no texel whose density exceeds
+  // kLodBoundContrast (4) times the texel's own, in [0, maxLevel]. A filtered lookup above it
+  // would blur a much denser region (a source) into directions of low density, where MIS weighs
+  // it as the sky: the environment technique counts the source once more (a bias). Levels 0 to
+  // maxLevel; cubeSize a power of two, else aniso::Error.
+  Image lodBoundTable(int cubeSize, int maxLevel) const;
 
 private:
   int width_ = 0;
@@ -124,6 +140,9 @@ std::string distributionKey(const std::string& environmentKey, const EnvSampling
 
 // Bakes once per distributionKey and process: later calls with the same key share the result
 // while anyone holds it. Thread-safe.
+// With `shown`, the bake that covers that cube map's level 0 (bake(env, options, *shown)), keyed
+// by its size as well.
 std::shared_ptr<const EnvironmentDistribution>
-sharedDistribution(const Environment& env, const EnvSamplingOptions& options);
+sharedDistribution(const Environment& env, const EnvSamplingOptions& options,
+                   const Cubemap* shown = nullptr);
 } // namespace aniso

@@ -393,3 +393,56 @@ TEST(SunSkyEnvironment, DiscAndErrors)
                                         glm::dvec3(std::numeric_limits<double>::infinity())),
                aniso::Error);
 }
+
+// The distribution that covers a cube map: wherever a bilinear lookup of the cube's level 0 can
+// return radiance, the density is at least that radiance over the environment's power (the sun's
+// bilinear reach in a 256 cube is wider than its grid texels); and the level bound keeps filtered
+// lookups next to the sun at levels whose reach stays clear of it, while far from it (the sky
+// opposite) they keep the whole chain.
+TEST(EnvironmentDistribution, CoversTheCubeAndBoundsLevelsNextToTheSun)
+{
+  const aniso::SunSkyEnvironment env = sunSky(1.0);
+  const aniso::Cubemap cube = aniso::buildCubemap(env, 256);
+  aniso::EnvSamplingOptions options;
+  options.width = 1024; // the shader's grid, finer than the cube's texels
+  options.supersample = 2;
+  const aniso::EnvironmentDistribution plain = aniso::EnvironmentDistribution::bake(env, options);
+  const aniso::EnvironmentDistribution covered =
+      aniso::EnvironmentDistribution::bake(env, options, cube);
+  EXPECT_NE(plain.key(), covered.key());
+  // Directions around the sun within two cube texels, their density relative to the sky's
+  // (covering raises the total, so every absolute density falls): not lower than before (but for
+  // the uniform share, which the sky's density holds more of), and
+  // raised over more than the sun's own texels.
+  const glm::dvec3 sun = glm::normalize(env.sun().direction);
+  const aniso::Frame around = aniso::Frame::fromNormalTangent(sun, glm::dvec3(0.0, 0.0, 1.0));
+  const glm::dvec3 sky = glm::normalize(glm::dvec3(-sun.x, -sun.y, sun.z));
+  auto relative = [&](const aniso::EnvironmentDistribution& d, const glm::dvec3& at)
+  { return d.pdf(at) / d.pdf(sky); };
+  const double reach = 2.0 * 2.0 / 256.0;
+  int raised = 0;
+  for (int i = -20; i <= 20; ++i)
+    for (int j = -20; j <= 20; ++j)
+    {
+      const glm::dvec3 d =
+          glm::normalize(sun + (reach * i / 20.0) * around.t + (reach * j / 20.0) * around.b);
+      raised += relative(covered, d) > 1.5 * relative(plain, d) ? 1 : 0;
+      EXPECT_GE(relative(covered, d), 0.9 * relative(plain, d)); // 0.9: the uniform share
+    }
+  EXPECT_GT(raised, 100); // the reach is wider than the sun's texels
+  const int maxLevel = 8;
+  const aniso::Image bound = covered.lodBoundTable(256, maxLevel);
+  auto boundAt = [&](const glm::dvec3& d)
+  {
+    const glm::dvec2 uv = aniso::directionToEquirect(d);
+    const int x = std::clamp(int(uv.x * bound.width), 0, bound.width - 1);
+    const int y = std::clamp(int((1.0 - uv.y) * bound.height), 0, bound.height - 1);
+    return bound.at(x, y, 0);
+  };
+  // Ten cube texels from the sun: no level whose reach (1.5 texels of 2^level) gets there.
+  const glm::dvec3 near = glm::normalize(sun + 10.0 * (2.0 / 256.0) * around.t);
+  EXPECT_LE(boundAt(near), 3.0f);
+  EXPECT_GE(boundAt(near), 1.0f);
+  EXPECT_EQ(boundAt(sky), float(maxLevel));
+  EXPECT_THROW(covered.lodBoundTable(100, maxLevel), aniso::Error);
+}

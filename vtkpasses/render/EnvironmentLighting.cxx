@@ -117,7 +117,9 @@ const EnvironmentDistribution& EnvironmentLighting::samplingDistribution()
   {
     EnvSamplingOptions options;
     options.width = 1024;
-    distribution_ = sharedDistribution(*environment_, options);
+    // Covering what the cube shows: its bilinear reach of the sun is wider than the sun's texels
+    // (docs/BENCHMARKS.md, "MIS outliers next to the sun").
+    distribution_ = sharedDistribution(*environment_, options, &cubemap_);
   }
   return *distribution_;
 }
@@ -138,11 +140,18 @@ void EnvironmentLighting::uploadSamplingTables(vtkOpenGLRenderWindow* window)
   }
   const EnvironmentDistribution& d = samplingDistribution();
   const Image cdf = d.cdfTable();
-  const Image pdf = d.pdfTable();
+  const Image density = d.pdfTable();
+  const Image lodBound = d.lodBoundTable(cubemap_.size, mipLevels() - 1);
+  Image pdf(density.width, density.height, 2);
+  for (std::size_t i = 0; i < density.data.size(); ++i)
+  {
+    pdf.data[2 * i] = density.data[i];
+    pdf.data[2 * i + 1] = lodBound.data[i];
+  }
   cdfTexture_ =
       uploadFloatTexture(window, cdf.width, cdf.height, 1, cdf.data.data(),
                          TextureFiltering::Nearest, TextureWrap::Clamp, "environment sampling CDF");
-  pdfTexture_ = uploadFloatTexture(window, pdf.width, pdf.height, 1, pdf.data.data(),
+  pdfTexture_ = uploadFloatTexture(window, pdf.width, pdf.height, 2, pdf.data.data(),
                                    TextureFiltering::Nearest, TextureWrap::Clamp,
                                    "environment sampling density");
   const Image guide = samplingGuideTable(cdf, d.width(), d.height());

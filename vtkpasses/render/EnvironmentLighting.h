@@ -68,10 +68,12 @@ public:
 
   // Environment importance sampling, baked on first use only (a material with sampling off
   // never pays for it): the luminance x solid-angle distribution over a 1024 x 512 grid (texels
-  // about the sun's size, so its samples land on it), shared through sharedDistribution.
+  // about the sun's size, so its samples land on it), covering where the cube map shows
+  // radiance (EnvironmentDistribution::bake with the cube), shared through sharedDistribution.
   const EnvironmentDistribution& samplingDistribution();
-  // Its shader tables in WINDOW's context (R32F, nearest, read with texelFetch): the CDFs
-  // (EnvironmentDistribution::cdfTable), the density per solid angle (pdfTable) and the guide
+  // Its shader tables in WINDOW's context (R32F, the density's RG32F, nearest, read with texelFetch): the CDFs
+  // (EnvironmentDistribution::cdfTable), the density per solid angle (pdfTable) with the level
+  // bound of filtered lookups (lodBoundTable) as a second channel, and the guide
   // table (samplingGuideTable).
   vtkTextureObject* samplingCdfTexture(vtkOpenGLRenderWindow* window);
   vtkTextureObject* samplingPdfTexture(vtkOpenGLRenderWindow* window);

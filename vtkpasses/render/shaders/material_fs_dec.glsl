@@ -38,7 +38,8 @@ uniform vec2 anisoExponents; // (n_u, n_v)
 #ifdef ANISO_ENVIRONMENT_MIS
 // Environment importance sampling (core/env/env_sampling.h), in environment coordinates.
 uniform sampler2D anisoEnvCdf; // R32F: row y < H the CDF of grid row y, row H the marginal
-uniform sampler2D anisoEnvPdf; // R32F, W x H: density per solid angle of each grid texel
+uniform sampler2D anisoEnvPdf; // RG32F, W x H: density per solid angle of each grid texel, and
+                               // the coarsest cube level filtered lookups may read from it
 uniform sampler2D anisoEnvGuide; // R32F, as anisoEnvCdf: entry j = the interval of u = j / count
 uniform ivec2 anisoEnvGrid;    // (W, H)
 uniform float anisoLobeFraction; // share of the lobe technique in the one-sample MIS
@@ -280,10 +281,18 @@ vec4 anisoSampleEnvironment(vec2 xi)
   return anisoSampleTables(anisoEnvCdf, anisoEnvGuide, anisoEnvPdf, anisoEnvGrid, xi);
 }
 
-// Density of the environment distribution at direction d (environment coordinates).
+// Density of the environment distribution at direction d (environment coordinates) and the
+// coarsest cube level a lookup there may read (EnvironmentDistribution::lodBoundTable): above it
+// the blur would spread a source into directions of low density, counting it once more.
+vec2 anisoEnvironmentPdfAndLodBound(vec3 d)
+{
+  ivec2 texel = clamp(ivec2(anisoEquirectCoords(d) * vec2(anisoEnvGrid)), ivec2(0), anisoEnvGrid - 1);
+  return texelFetch(anisoEnvPdf, texel, 0).rg;
+}
+
 float anisoEnvironmentPdf(vec3 d)
 {
-  return anisoTablePdf(anisoEnvPdf, anisoEnvGrid, anisoEquirectCoords(d));
+  return anisoEnvironmentPdfAndLodBound(d).x;
 }
 #endif
 
@@ -380,7 +389,11 @@ vec3 anisoSpecular(vec3 t, vec3 b, vec3 n, vec3 v, vec3 f0)
     {
       continue;
     }
-    vec3 radiance = anisoEnvironmentRadiance(l, anisoSampleLod(log2(pdfMixture), count));
+    float lod = anisoSampleLod(log2(pdfMixture), count);
+#ifdef ANISO_FILTERED
+    lod = min(lod, anisoEnvironmentPdfAndLodBound(anisoWorldToEnvironment * l).y);
+#endif
+    vec3 radiance = anisoEnvironmentRadiance(l, lod);
     float m = clamp(1.0 - vDotH, 0.0, 1.0);
     float chi = m * m * m * m * m;
     sum += radiance * (f0 + (1.0 - f0) * chi) * (nDotL / max(nDotL, nDotV)) *
