@@ -335,7 +335,7 @@ TEST(Parameters, ChoicesParseToDistinctEnumsAndBack)
                                     "exact");
   expectEnumChoices<OnOff>(covered, "filtered", onOff("filtered"), {"on", "off"}, "on");
   expectEnumChoices<EnvironmentSampling>(covered, "env-sampling", parseEnvironmentSampling,
-                                         {"off", "mis"}, "off");
+                                         {"auto", "off", "mis", "sources"}, "auto");
   expectEnumChoices<HalfVectorSource>(covered, "half-vectors", parseHalfVectorSource,
                                       {"shader", "lut"}, "lut");
   expectEnumChoices<QualityMode>(covered, "quality-mode", parseQualityMode, {"samples", "error"},
