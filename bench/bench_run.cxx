@@ -158,7 +158,7 @@ std::vector<ScenePlan> planFull(const std::string& hdriDirectory)
     append(scene.configs, sweep(M::Exact, false, H::Lut, {16, 256}));
     append(scene.configs, sweep(M::Exact, false, H::Lut, {16}, EnvironmentSampling::Mis));
     append(scene.configs, sweep(M::SplitSum, false, H::Lut, {256}));
-    scene.reference = {256, 3e-3};
+    scene.reference = {kHdriReferencePixels, kHdriReferenceTolerance};
     scene.ggxReference = {64, 1e-2};
     plans.push_back(scene);
   }
@@ -636,7 +636,7 @@ BenchResult runBench(const BenchOptions& options, std::ostream& log)
   const auto start = std::chrono::steady_clock::now();
   BenchResult result;
   result.quick = options.quick;
-  result.size = options.size > 0 ? options.size : (options.quick ? 128 : 256);
+  result.size = options.size > 0 ? options.size : (options.quick ? kQuickImageSize : kFullImageSize);
   result.commandLine = options.commandLine;
   result.machine = machineDescription();
   result.loadBefore = loadAverage();
