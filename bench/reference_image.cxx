@@ -176,8 +176,8 @@ void writeCache(const std::string& path, const std::string& key, const Reference
     out.write(reinterpret_cast<const char*>(&image.evaluations), sizeof image.evaluations);
     for (const ReferencePixel& p : image.pixels)
     {
-      const Record r{p.x, p.y, {p.value.x, p.value.y, p.value.z}, p.errorEstimate,
-                     p.converged ? 1 : 0};
+      const Record r{
+          p.x, p.y, {p.value.x, p.value.y, p.value.z}, p.errorEstimate, p.converged ? 1 : 0};
       out.write(reinterpret_cast<const char*>(&r), sizeof r);
     }
     if (!out)
@@ -292,10 +292,9 @@ ReferenceImage computeReference(const std::vector<PixelSample>& geometry, int wi
         }
         else
         {
-          r = sunSky ? integrateSpecularSunSky(model.asLobe, model.f0, frame, s.view, *sunSky,
-                                               options)
-                     : integrateSpecular(model.asLobe, model.f0, frame, s.view, environment,
-                                         options);
+          r = sunSky
+                  ? integrateSpecularSunSky(model.asLobe, model.f0, frame, s.view, *sunSky, options)
+                  : integrateSpecular(model.asLobe, model.f0, frame, s.view, environment, options);
         }
         image.pixels[std::size_t(i)] = {index % width, index / width, r.value, r.errorEstimate,
                                         r.converged};
