@@ -91,7 +91,8 @@ int main(int argc, char** argv)
           const aniso::ReferenceResult r =
               sun ? aniso::integrateSpecularSunSky(lobe, m.f0, frame, p.view, *sun, options)
                   : aniso::integrateSpecular(lobe, m.f0, frame, p.view, *env, options);
-          reference.pixels.push_back({index % size, index / size, r.value, r.errorEstimate});
+          reference.pixels.push_back(
+              {index % size, index / size, r.value, r.errorEstimate, r.converged});
         }
 
         auto error = [&](const aniso::MaterialSettings& settings)

@@ -50,6 +50,7 @@ struct ReferenceSpec
 {
   int pixels = 1024;
   double tolerance = 1e-3;
+  uint64_t maxEvaluations = ReferenceOptions().maxEvaluations;
 };
 
 struct ScenePlan
@@ -158,7 +159,7 @@ std::vector<ScenePlan> planFull(const std::string& hdriDirectory)
     append(scene.configs, sweep(M::Exact, false, H::Lut, {16, 256}));
     append(scene.configs, sweep(M::Exact, false, H::Lut, {16}, EnvironmentSampling::Mis));
     append(scene.configs, sweep(M::SplitSum, false, H::Lut, {256}));
-    scene.reference = {256, 3e-3};
+    scene.reference = {kHdriReferencePixels, kHdriReferenceTolerance, kHdriReferenceMaxEvaluations};
     scene.ggxReference = {64, 1e-2};
     plans.push_back(scene);
   }
@@ -386,6 +387,7 @@ private:
   {
     ReferenceOptions options;
     options.relativeTolerance = spec.tolerance;
+    options.maxEvaluations = spec.maxEvaluations;
     ReferenceImage reference = computeReference(geometry, session.width(), session.height(), pixels,
                                                 model, environment, options, cache_);
     log_ << "  reference " << base.mesh << " " << base.environment << " "
@@ -636,7 +638,8 @@ BenchResult runBench(const BenchOptions& options, std::ostream& log)
   const auto start = std::chrono::steady_clock::now();
   BenchResult result;
   result.quick = options.quick;
-  result.size = options.size > 0 ? options.size : (options.quick ? 128 : 256);
+  result.size =
+      options.size > 0 ? options.size : (options.quick ? kQuickImageSize : kFullImageSize);
   result.commandLine = options.commandLine;
   result.machine = machineDescription();
   result.loadBefore = loadAverage();

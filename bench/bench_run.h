@@ -17,7 +17,7 @@ namespace aniso::bench
 struct BenchOptions
 {
   bool quick = false;         // the small set: sphere under the studio, fewer configurations
-  int size = 0;               // image side in pixels; 0: 128 quick, 512 full
+  int size = 0;               // image side in pixels; 0: 128 quick, 256 full
   std::string outDirectory;   // where bench.csv, bench.md, bench.svg, bench.png go
   std::string cacheDirectory; // reference cache; empty: $XDG_CACHE_HOME/aniso/bench (or ~/.cache)
   std::string hdriDirectory;  // HDRIs of the full set; empty: the Blender studio lights

@@ -8,12 +8,18 @@
 #include "vtkpasses/mesh/GeometryAccess.h"
 #include "vtkpasses/mesh/MeshValidation.h"
 #include "vtkpasses/mesh/SurfacePreparation.h"
+#include "vtkpasses/render/RendererMatrices.h"
 
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <vtkActor.h>
+#include <vtkNew.h>
 #include <vtkPointData.h>
 #include <vtkPolyData.h>
+#include <vtkPolyDataMapper.h>
+#include <vtkRenderWindow.h>
+#include <vtkRenderer.h>
 
 namespace aniso::bench
 {
@@ -45,6 +51,25 @@ BenchMesh makeBenchMesh(const std::string& name)
   }
   mesh.triangles = triangleMesh(mesh.surface);
   return mesh;
+}
+
+glm::dmat4 viewClipToWorld(const BenchMesh& mesh, int width, int height)
+{
+  vtkNew<vtkPolyDataMapper> mapper;
+  mapper->SetInputData(mesh.surface);
+  vtkNew<vtkActor> actor;
+  actor->SetMapper(mapper);
+  vtkNew<vtkRenderer> renderer;
+  renderer->AddActor(actor);
+  vtkNew<vtkRenderWindow> window;
+  window->SetOffScreenRendering(1);
+  window->SetSize(width, height);
+  window->AddRenderer(renderer);
+  glm::dvec3 centre;
+  double radius = 0.0;
+  boundingSphere(mesh.surface, centre, radius);
+  applyCamera(renderer, placeCamera(mesh.view, centre, radius));
+  return clipToWorld(renderer);
 }
 
 TriangleMesh triangleMesh(vtkPolyData* surface)

@@ -7,6 +7,7 @@
 #include "core/brdf/ggx.h"
 #include "vtkpasses/render/ViewSettings.h"
 
+#include <cstdint>
 #include <string>
 #include <vector>
 #include <vtkSmartPointer.h>
@@ -37,6 +38,23 @@ constexpr const char* kBlenderHdriDirectory = "/usr/share/blender/datafiles/stud
 std::vector<std::string> benchEnvironments(const std::string& directory = kBlenderHdriDirectory);
 // "builtin:studio" as it is, or a file's stem ("forest"; Blender's own studio.exr is "studio").
 std::string environmentName(const std::string& spec);
+
+// The image side of the full run and of the quick one (BenchOptions::size 0).
+constexpr int kFullImageSize = 256;
+constexpr int kQuickImageSize = 128;
+// The references of the HDRI scenes of the full run (the sphere, front view): pixels compared
+// (selectPixels), the integrator's relative tolerance and its budget per pixel. The budget
+// allows level 8 (2^26 stops at level 7, where the worst pixels of city (20000, 70), interior
+// and night (10, 10) and night (100, 10) had not converged: tests/bench/test_reference_image).
+constexpr int kHdriReferencePixels = 256;
+constexpr double kHdriReferenceTolerance = 3e-3;
+constexpr uint64_t kHdriReferenceMaxEvaluations = 1ull << 28;
+
+// What the CPU casts its pixel rays through for MESH's view in a width x height image: the
+// inverse of the matrix the mappers draw with (clipToWorld of a renderer holding the surface,
+// its camera placed as RenderSession::setSurface places it). Needs no X display: nothing is
+// drawn.
+glm::dmat4 viewClipToWorld(const BenchMesh& mesh, int width, int height);
 
 // The materials of the benchmark: (10, 10), (100, 10), (1000, 100), (20000, 70).
 std::vector<AsLobe> benchLobes();

@@ -1,6 +1,7 @@
 #include "bench/reference_image.h"
 
 #include "core/env/parallel.h"
+#include "core/env/sun_sky.h"
 #include "core/error.h"
 #include "core/frame.h"
 
@@ -23,7 +24,7 @@ namespace
 namespace fs = std::filesystem;
 
 // Bumped whenever what a cached reference holds changes meaning.
-constexpr int kCacheFormat = 1;
+constexpr int kCacheFormat = 2; // 2: each pixel's converged flag
 constexpr const char* kCacheMagic = "aniso-bench-reference";
 
 double luminance(const glm::dvec3& c)
@@ -113,6 +114,7 @@ struct Record
   int32_t y;
   double value[3];
   double errorEstimate;
+  int64_t converged; // 0 or 1 (64 bits: the record keeps no padding)
 };
 
 bool readCache(const std::string& path, const std::string& key, std::size_t count,
@@ -148,7 +150,8 @@ bool readCache(const std::string& path, const std::string& key, std::size_t coun
     {
       return false;
     }
-    image.pixels.push_back({r.x, r.y, value, r.errorEstimate});
+    image.pixels.push_back({r.x, r.y, value, r.errorEstimate, r.converged != 0});
+    image.unconverged += r.converged != 0 ? 0 : 1;
   }
   image.evaluations = evaluations;
   return true;
@@ -173,7 +176,8 @@ void writeCache(const std::string& path, const std::string& key, const Reference
     out.write(reinterpret_cast<const char*>(&image.evaluations), sizeof image.evaluations);
     for (const ReferencePixel& p : image.pixels)
     {
-      const Record r{p.x, p.y, {p.value.x, p.value.y, p.value.z}, p.errorEstimate};
+      const Record r{
+          p.x, p.y, {p.value.x, p.value.y, p.value.z}, p.errorEstimate, p.converged ? 1 : 0};
       out.write(reinterpret_cast<const char*>(&r), sizeof r);
     }
     if (!out)
@@ -265,6 +269,7 @@ ReferenceImage computeReference(const std::vector<PixelSample>& geometry, int wi
   }
 
   const auto start = std::chrono::steady_clock::now();
+  const auto* sunSky = dynamic_cast<const SunSkyEnvironment*>(&environment);
   image.pixels.resize(selected.size());
   std::vector<uint64_t> evaluations(selected.size(), 0);
   parallelFor(
@@ -280,18 +285,28 @@ ReferenceImage computeReference(const std::vector<PixelSample>& geometry, int wi
           const double c = std::cos(model.tangentRotation);
           const double sn = std::sin(model.tangentRotation);
           frame = Frame::fromNormalTangent(frame.n, c * frame.t + sn * frame.b);
-          r = integrateSpecularGgx(model.ggxLobe, model.f0, frame, s.view, environment, options);
+          r = sunSky ? integrateSpecularGgxSunSky(model.ggxLobe, model.f0, frame, s.view, *sunSky,
+                                                  options)
+                     : integrateSpecularGgx(model.ggxLobe, model.f0, frame, s.view, environment,
+                                            options);
         }
         else
         {
-          r = integrateSpecular(model.asLobe, model.f0, frame, s.view, environment, options);
+          r = sunSky
+                  ? integrateSpecularSunSky(model.asLobe, model.f0, frame, s.view, *sunSky, options)
+                  : integrateSpecular(model.asLobe, model.f0, frame, s.view, environment, options);
         }
-        image.pixels[std::size_t(i)] = {index % width, index / width, r.value, r.errorEstimate};
+        image.pixels[std::size_t(i)] = {index % width, index / width, r.value, r.errorEstimate,
+                                        r.converged};
         evaluations[std::size_t(i)] = r.evaluations;
       });
   for (uint64_t e : evaluations)
   {
     image.evaluations += e;
+  }
+  for (const ReferencePixel& p : image.pixels)
+  {
+    image.unconverged += p.converged ? 0 : 1;
   }
   image.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   image.relativeErrorBound = errorBound(image.pixels);

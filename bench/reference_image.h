@@ -36,6 +36,7 @@ struct ReferencePixel
   int y = 0;
   glm::dvec3 value{0.0};
   double errorEstimate = 0.0; // the integrator's estimate, on luminance
+  bool converged = false;     // the integrator's own verdict (ReferenceResult::converged)
 };
 
 struct ReferenceImage
@@ -47,7 +48,8 @@ struct ReferenceImage
   // estimate applied to its RGB value): how far the reference itself may be from the truth.
   double relativeErrorBound = 0.0;
   uint64_t evaluations = 0;
-  double seconds = 0.0; // computing it (0 when read from the cache)
+  int64_t unconverged = 0; // pixels whose integration ran out of evaluations
+  double seconds = 0.0;    // computing it (0 when read from the cache)
   bool fromCache = false;
 };
 
@@ -58,7 +60,11 @@ std::vector<int> selectPixels(const std::vector<PixelSample>& geometry, int widt
                               int count);
 
 // The reference at the selected pixels, from DIRECTORY's cache when present (an empty
-// directory disables the cache). Runs on all hardware threads.
+// directory disables the cache). Each pixel is integrated in the frame
+// Frame::fromNormalTangent(normal, tangent) towards its view; a SunSkyEnvironment goes through
+// integrateSpecularSunSky / integrateSpecularGgxSunSky (the sun's disc over its own cone), any
+// other environment through integrateSpecular / integrateSpecularGgx. Runs on all hardware
+// threads.
 ReferenceImage computeReference(const std::vector<PixelSample>& geometry, int width, int height,
                                 const std::vector<int>& selected, const ReferenceModel& model,
                                 const Environment& environment, const ReferenceOptions& options,

@@ -29,8 +29,10 @@ constexpr uint64_t kReferenceMinEvaluations = 21504;
 struct ReferenceResult
 {
   glm::dvec3 value{0.0};
-  double errorEstimate = 0.0; // |difference| between the last two resolutions (luminance)
-  uint64_t evaluations = 0;   // quadrature nodes visited (radiance lookups at most)
+  // The larger of the last two |differences| between successive resolutions (luminance): both
+  // within tolerance when converged.
+  double errorEstimate = 0.0;
+  uint64_t evaluations = 0; // quadrature nodes visited (radiance lookups at most)
   // The last two differences between successive resolutions were within tolerance before
   // maxEvaluations ran out.
   bool converged = false;
