@@ -1,5 +1,8 @@
 #include "widgets/EnvironmentDock.h"
 
+#include "core/env/env_source_text.h"
+#include "core/env/env_sources.h"
+#include "core/env/environment.h"
 #include "core/error.h"
 #include "widgets/EnvironmentThumbnails.h"
 #include "widgets/ParameterPanel.h"
@@ -9,9 +12,12 @@
 #include <QFileInfo>
 #include <QFutureWatcher>
 #include <QGroupBox>
+#include <QHeaderView>
+#include <QLabel>
 #include <QListWidget>
 #include <QPushButton>
 #include <QSignalBlocker>
+#include <QTableWidget>
 #include <QTimer>
 #include <QVBoxLayout>
 #include <QtConcurrent>
@@ -21,7 +27,46 @@ namespace aniso
 namespace
 {
 constexpr int kThumbnailWidth = 112;
+constexpr int kPreviewWidth = 224;
 constexpr int kSpecRole = Qt::UserRole;
+
+// What the worker hands the dock: the analysis and the marked preview, or why it failed.
+struct SourcesOfEnvironment
+{
+  QString spec;
+  std::shared_ptr<const EnvAnalysis> analysis;
+  QImage preview;
+  QString error;
+};
+
+SourcesOfEnvironment analysed(const QString& spec)
+{
+  SourcesOfEnvironment result;
+  result.spec = spec;
+  try
+  {
+    const std::shared_ptr<Environment> env = openEnvironment(spec.toStdString());
+    result.analysis = sharedEnvironmentAnalysis(*env);
+    result.preview = markedSources(environmentThumbnail(*env, kPreviewWidth), *result.analysis);
+  }
+  catch (const std::exception& e)
+  {
+    // Error's messages and the standard library's (bad_alloc on a huge file) alike.
+    result.error = QString::fromStdString(e.what());
+  }
+  return result;
+}
+
+// The name the user knows an environment by: a file's name, or the built-in's spec.
+QString environmentName(const QString& spec)
+{
+  return spec.startsWith("builtin:") ? spec : QFileInfo(spec).fileName();
+}
+
+QString degreesText(double degrees)
+{
+  return QString::number(degrees, 'f', 1) + QChar(0x00B0);
+}
 } // namespace
 
 QString blenderHdriDirectory()
@@ -37,7 +82,9 @@ QString environmentFileFilter()
 
 EnvironmentDock::EnvironmentDock(SceneEditor* editor, const QString& hdriDirectory, QWidget* parent)
     : QDockWidget(tr("Environment"), parent), editor_(editor),
-      panel_(new ParameterPanel(editor, this)), list_(new QListWidget(this))
+      panel_(new ParameterPanel(editor, this)), list_(new QListWidget(this)),
+      preview_(new QLabel(this)), sources_(new QTableWidget(0, 5, this)),
+      summary_(new QLabel(this))
 {
   setObjectName("EnvironmentDock");
   list_->setObjectName("environments");
@@ -87,12 +134,40 @@ EnvironmentDock::EnvironmentDock(SceneEditor* editor, const QString& hdriDirecto
             }
           });
 
+  preview_->setObjectName("environment-preview");
+  preview_->setAlignment(Qt::AlignCenter);
+  preview_->setMinimumHeight(kPreviewWidth / 2);
+  preview_->setToolTip(tr("The environment's bright sources, marked where they are"));
+  sources_->setObjectName("environment-sources");
+  sources_->setHorizontalHeaderLabels(
+      {tr("Kind"), tr("Azimuth"), tr("Elevation"), tr("Solid angle"), tr("Power")});
+  sources_->horizontalHeaderItem(1)->setToolTip(
+      tr("Degrees from -Y, counter-clockwise seen from above (aniso render --azimuth)"));
+  sources_->horizontalHeaderItem(2)->setToolTip(tr("Degrees above the horizon"));
+  sources_->horizontalHeaderItem(3)->setToolTip(
+      tr("Steradians, and the apex angle of a cone of that solid angle"));
+  sources_->horizontalHeaderItem(4)->setToolTip(tr("Share of the environment's power"));
+  sources_->verticalHeader()->hide();
+  sources_->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
+  sources_->horizontalHeader()->setStretchLastSection(true);
+  sources_->setEditTriggers(QAbstractItemView::NoEditTriggers);
+  sources_->setSelectionMode(QAbstractItemView::NoSelection);
+  sources_->setMaximumHeight(5 * sources_->verticalHeader()->defaultSectionSize() +
+                             sources_->horizontalHeader()->sizeHint().height() + 4);
+  summary_->setObjectName("environment-summary");
+  summary_->setWordWrap(true);
+  auto* analysis = new QGroupBox(tr("Sources"), this);
+  auto* analysisLayout = new QVBoxLayout(analysis);
+  analysisLayout->addWidget(preview_);
+  analysisLayout->addWidget(summary_);
+  analysisLayout->addWidget(sources_);
+
   auto* top = new QWidget(this);
   auto* layout = new QVBoxLayout(top);
   layout->setContentsMargins(0, 0, 0, 0);
   layout->addWidget(list_);
   layout->addWidget(open);
-  setWidget(scrollableColumn({top, panel_}, this));
+  setWidget(scrollableColumn({top, analysis, panel_}, this));
   sync();
 }
 
@@ -179,6 +254,7 @@ void EnvironmentDock::sync()
   {
     match = addItem(QFileInfo(current).fileName(), current);
   }
+  analyse(current);
   const QSignalBlocker block(list_);
   list_->setCurrentItem(match);
   // Once the list has laid its items out.
@@ -190,5 +266,77 @@ void EnvironmentDock::sync()
                          list_->scrollToItem(item);
                        }
                      });
+}
+} // namespace aniso
+
+namespace aniso
+{
+void EnvironmentDock::analyse(const QString& spec)
+{
+  if (spec == requestedSpec_)
+  {
+    return;
+  }
+  requestedSpec_ = spec;
+  summary_->setText(tr("Analysing %1…").arg(environmentName(spec)));
+  // One analysis at a time: the running one's end starts the latest request.
+  if (!analysing_)
+  {
+    startAnalysis(spec);
+  }
+}
+
+void EnvironmentDock::startAnalysis(const QString& spec)
+{
+  analysing_ = true;
+  auto* watcher = new QFutureWatcher<SourcesOfEnvironment>(this);
+  connect(watcher, &QFutureWatcher<SourcesOfEnvironment>::finished, this,
+          [this, watcher]
+          {
+            const SourcesOfEnvironment result = watcher->result();
+            watcher->deleteLater();
+            analysing_ = false;
+            if (result.spec != requestedSpec_)
+            {
+              startAnalysis(requestedSpec_);
+              return;
+            }
+            sources_->setRowCount(0);
+            if (!result.analysis)
+            {
+              analysedSpec_.clear();
+              analysis_.reset();
+              preview_->clear();
+              const QString name = environmentName(result.spec);
+              summary_->setText(tr("No analysis of %1").arg(name));
+              emit errorOccurred(tr("%1: environment analysis failed: %2").arg(name, result.error));
+              emit sourcesShown();
+              return;
+            }
+            analysedSpec_ = result.spec;
+            analysis_ = result.analysis;
+            preview_->setPixmap(QPixmap::fromImage(result.preview));
+            summary_->setText(QString::fromStdString(analysisSummary(*analysis_)));
+            sources_->setRowCount(int(analysis_->sources.size()));
+            for (int row = 0; row < sources_->rowCount(); ++row)
+            {
+              const EnvSource& source = analysis_->sources[std::size_t(row)];
+              const SkyAngles angles = skyAnglesOf(source.direction);
+              const QStringList cells = {
+                  QString::fromUtf8(spelling(source.kind)),
+                  degreesText(angles.azimuthDegrees),
+                  degreesText(angles.elevationDegrees),
+                  QString::number(source.solidAngle, 'g', 2) + " sr (" +
+                      QString::number(equivalentDiameterDegrees(source.solidAngle), 'g', 2) +
+                      QChar(0x00B0) + ")",
+                  QString::fromStdString(percentText(source.powerShare))};
+              for (int column = 0; column < cells.size(); ++column)
+              {
+                sources_->setItem(row, column, new QTableWidgetItem(cells[column]));
+              }
+            }
+            emit sourcesShown();
+          });
+  watcher->setFuture(QtConcurrent::run([spec] { return analysed(spec); }));
 }
 } // namespace aniso

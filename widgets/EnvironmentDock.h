@@ -1,19 +1,24 @@
 #pragma once
 // The environment dock: the built-in studio, the CC0 HDRIs that Blender installs (when present)
-// and any file, each with a thumbnail made off the UI thread; rotation, exposure, background
-// and tone mapping.
+// and any file, each with a thumbnail made off the UI thread; the selected environment's
+// analysis (its sources: sun, lamps, windows) marked on a preview and listed; rotation,
+// exposure, background and tone mapping.
 #include "scene/SceneEditor.h"
 
 #include <QDockWidget>
 #include <QString>
 #include <functional>
+#include <memory>
 
+class QLabel;
 class QListWidget;
 class QListWidgetItem;
+class QTableWidget;
 
 namespace aniso
 {
 class ParameterPanel;
+struct EnvAnalysis;
 
 // Where Debian's blender-data package puts Blender's studio-light HDRIs.
 QString blenderHdriDirectory();
@@ -35,6 +40,22 @@ public:
   // Thumbnails still being made.
   int pendingThumbnails() const { return pending_; }
 
+  // The selected environment's analysis (sharedEnvironmentAnalysis, so the view's bake shares
+  // it), made on a worker whenever the scene's environment changes; one runs at a time and the
+  // latest request wins. The preview shows the environment with its sources marked
+  // (markedSources), the table lists them (kind, azimuth and elevation in degrees as
+  // `aniso render --azimuth/--elevation` take them, solid angle and the cone of that solid
+  // angle, share of the power), the summary says how concentrated the power is.
+  QLabel* sourcesPreview() const { return preview_; }
+  QTableWidget* sourcesTable() const { return sources_; }
+  QLabel* sourcesSummary() const { return summary_; }
+  // The environment whose analysis is shown (empty before the first one, and after a failure),
+  // and that analysis.
+  const QString& analysedSpec() const { return analysedSpec_; }
+  const std::shared_ptr<const EnvAnalysis>& analysis() const { return analysis_; }
+  // Whether an analysis is running or waiting for the running one.
+  bool analysing() const { return analysing_; }
+
   // Asks for a file and sets it as the environment.
   void openFile();
   // How a chosen environment (a file, a listed HDRI, the studio) reaches the scene: by default
@@ -46,16 +67,28 @@ public:
 signals:
   void errorOccurred(const QString& message);
   void thumbnailsReady();
+  // The latest requested analysis is shown (or its failure reported).
+  void sourcesShown();
 
 private:
   QListWidgetItem* addItem(const QString& label, const QString& spec);
   void select(const QString& spec);
   void sync();
+  void analyse(const QString& spec);
+  void startAnalysis(const QString& spec);
 
   SceneEditor* editor_;
   ParameterPanel* panel_;
   QListWidget* list_;
   int pending_ = 0;
   std::function<void(const QString&)> opener_;
+
+  QLabel* preview_;
+  QTableWidget* sources_;
+  QLabel* summary_;
+  QString requestedSpec_; // the latest request
+  QString analysedSpec_;
+  std::shared_ptr<const EnvAnalysis> analysis_;
+  bool analysing_ = false; // a worker runs
 };
 } // namespace aniso
