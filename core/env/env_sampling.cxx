@@ -166,13 +166,11 @@ EnvironmentDistribution::EnvironmentDistribution(const Image& equirect, double u
     levels_.push_back({sums.first / sums.second, sums.second});
 }
 
-EnvironmentDistribution EnvironmentDistribution::bake(const Environment& env,
-                                                      const EnvSamplingOptions& options)
+Image renderEquirectRefined(const Environment& env, int width, int height, int supersample)
 {
-  validateOptions(options);
-  const int w = options.width;
-  const int h = options.width / 2;
-  Image image = renderEquirect(env, w, h, options.supersample);
+  const int w = width;
+  const int h = height;
+  Image image = renderEquirect(env, w, h, supersample);
 
   // A texel beside a much brighter one may hold a sliver of a small source (a sun's edge) that
   // its supersamples missed: its density would be far below the radiance there, and the rare
@@ -203,7 +201,7 @@ EnvironmentDistribution EnvironmentDistribution::bake(const Environment& env,
     }
   const double affordable = std::sqrt(kRefineBudget * double(w) * double(h) /
                                       double(std::max<std::size_t>(refine.size(), 1)));
-  const int n = options.supersample * std::clamp(int(affordable), 1, kMaxRefinement);
+  const int n = supersample * std::clamp(int(affordable), 1, kMaxRefinement);
   parallelFor(int(refine.size()),
               [&](int i)
               {
@@ -213,8 +211,16 @@ EnvironmentDistribution EnvironmentDistribution::bake(const Environment& env,
                 for (int c = 0; c < 3; ++c)
                   image.at(x, y, c) = float(mean[c]);
               });
-  return EnvironmentDistribution(image, options.uniformFraction,
-                                 distributionKey(env.key(), options));
+  return image;
+}
+
+EnvironmentDistribution EnvironmentDistribution::bake(const Environment& env,
+                                                      const EnvSamplingOptions& options)
+{
+  validateOptions(options);
+  return EnvironmentDistribution(
+      renderEquirectRefined(env, options.width, options.width / 2, options.supersample),
+      options.uniformFraction, distributionKey(env.key(), options));
 }
 
 EnvSample EnvironmentDistribution::sample(const glm::dvec2& xi) const

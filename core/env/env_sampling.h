@@ -112,6 +112,13 @@ private:
 // keeps the estimate unbiased.
 double misLobeFraction(const AsLobe& lobe, const EnvironmentDistribution& distribution);
 
+// Samples env into a width x height equirectangular image as bake does: renderEquirect with
+// supersample^2 solid-angle-weighted samples per texel, then every texel whose 3 x 3
+// neighbourhood spans more than a factor 2 in luminance sampled again, up to 32 times more
+// densely per side, within 4 times the samples of the first pass. A source smaller than a texel
+// keeps its power (the built-in sun-sky's within 1% at 1024 x 512). Throws as renderEquirect.
+Image renderEquirectRefined(const Environment& env, int width, int height, int supersample);
+
 // Cache key of a bake: the environment's key and every option that changes the tables.
 std::string distributionKey(const std::string& environmentKey, const EnvSamplingOptions& options);
 
