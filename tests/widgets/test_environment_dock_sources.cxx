@@ -40,8 +40,8 @@ double degreesIn(const QTableWidget* table, int row, int column)
 
 QImage previewOf(const aniso::EnvironmentDock& dock)
 {
-  const QPixmap* pixmap = dock.sourcesPreview()->pixmap();
-  return pixmap ? pixmap->toImage().convertToFormat(QImage::Format_RGB32) : QImage();
+  const QPixmap pixmap = dock.sourcesPreview()->pixmap(Qt::ReturnByValue);
+  return pixmap.isNull() ? QImage() : pixmap.toImage().convertToFormat(QImage::Format_RGB32);
 }
 
 QImage thumbnailOf(const aniso::Environment& env, int width)
