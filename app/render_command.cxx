@@ -344,12 +344,14 @@ std::string sceneSource(const std::vector<ScenePart>& parts)
   return text;
 }
 
-// The sources of ENV (opened from SPEC) on OUT: a summary line, then one line per listed source,
-// the first kSourceLines of them. A uniform environment has none and says nothing; an analysis
-// that fails is a note, the render goes on. Returns the analysis, which the caller holds so the
-// renderer's own request shares it (sharedEnvironmentAnalysis).
+// The sources of ENV (opened from SPEC, turned by ROTATION_DEGREES: their angles are the
+// world's, as --azimuth and --elevation take them) on OUT: a summary line, then one line per
+// listed source, the first kSourceLines of them. A uniform environment has none and says
+// nothing; an analysis that fails is a note, the render goes on. Returns the analysis, which
+// the caller holds so the renderer's own request shares it (sharedEnvironmentAnalysis).
 std::shared_ptr<const EnvAnalysis> printEnvironmentSources(const Environment& env,
                                                            const std::string& spec,
+                                                           double rotationDegrees,
                                                            std::ostream& out)
 {
   constexpr std::size_t kSourceLines = 4;
@@ -357,7 +359,8 @@ std::shared_ptr<const EnvAnalysis> printEnvironmentSources(const Environment& en
   {
     return nullptr;
   }
-  const std::string name = spec.rfind("builtin:", 0) == 0 ? spec : fs::path(spec).filename().string();
+  const std::string name =
+      spec.rfind("builtin:", 0) == 0 ? spec : fs::path(spec).filename().string();
   std::shared_ptr<const EnvAnalysis> analysis;
   try
   {
@@ -372,7 +375,7 @@ std::shared_ptr<const EnvAnalysis> printEnvironmentSources(const Environment& en
   const std::vector<EnvSource>& sources = analysis->sources;
   for (std::size_t i = 0; i < std::min(sources.size(), kSourceLines); ++i)
   {
-    out << "render:   " << sourceText(sources[i]) << "\n";
+    out << "render:   " << sourceText(sources[i], rotationDegrees) << "\n";
   }
   if (sources.size() > kSourceLines)
   {
@@ -381,8 +384,8 @@ std::shared_ptr<const EnvAnalysis> printEnvironmentSources(const Environment& en
     {
       share += sources[i].powerShare;
     }
-    out << "render:   and " << sources.size() - kSourceLines << " more ("
-        << percentText(share) << ")\n";
+    out << "render:   and " << sources.size() - kSourceLines << " more (" << percentText(share)
+        << ")\n";
   }
   return analysis;
 }
@@ -558,7 +561,8 @@ int runRender(const std::vector<std::string>& args, std::ostream& out, std::ostr
   }
   settings.environment = openEnvironment(parameters.text("env"));
   const std::shared_ptr<const EnvAnalysis> environmentSources =
-      printEnvironmentSources(*settings.environment, parameters.text("env"), report);
+      printEnvironmentSources(*settings.environment, parameters.text("env"),
+                              settings.environmentRotationDegrees, report);
   if (a.has("--normal-map"))
   {
     const std::string path = a.text("--normal-map");

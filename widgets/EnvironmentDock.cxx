@@ -83,8 +83,7 @@ QString environmentFileFilter()
 EnvironmentDock::EnvironmentDock(SceneEditor* editor, const QString& hdriDirectory, QWidget* parent)
     : QDockWidget(tr("Environment"), parent), editor_(editor),
       panel_(new ParameterPanel(editor, this)), list_(new QListWidget(this)),
-      preview_(new QLabel(this)), sources_(new QTableWidget(0, 5, this)),
-      summary_(new QLabel(this))
+      preview_(new QLabel(this)), sources_(new QTableWidget(0, 5, this)), summary_(new QLabel(this))
 {
   setObjectName("EnvironmentDock");
   list_->setObjectName("environments");
@@ -132,6 +131,10 @@ EnvironmentDock::EnvironmentDock(SceneEditor* editor, const QString& hdriDirecto
             {
               sync();
             }
+            else if (key == "env-rotation")
+            {
+              showSourceRows(); // the world's azimuths
+            }
           });
 
   preview_->setObjectName("environment-preview");
@@ -142,7 +145,8 @@ EnvironmentDock::EnvironmentDock(SceneEditor* editor, const QString& hdriDirecto
   sources_->setHorizontalHeaderLabels(
       {tr("Kind"), tr("Azimuth"), tr("Elevation"), tr("Solid angle"), tr("Power")});
   sources_->horizontalHeaderItem(1)->setToolTip(
-      tr("Degrees from -Y, counter-clockwise seen from above (aniso render --azimuth)"));
+      tr("Degrees in the world (after the rotation) from -Y, counter-clockwise seen from above, "
+         "as aniso render --azimuth takes them"));
   sources_->horizontalHeaderItem(2)->setToolTip(tr("Degrees above the horizon"));
   sources_->horizontalHeaderItem(3)->setToolTip(
       tr("Steradians, and the apex angle of a cone of that solid angle"));
@@ -267,10 +271,7 @@ void EnvironmentDock::sync()
                        }
                      });
 }
-} // namespace aniso
 
-namespace aniso
-{
 void EnvironmentDock::analyse(const QString& spec)
 {
   if (spec == requestedSpec_)
@@ -317,26 +318,31 @@ void EnvironmentDock::startAnalysis(const QString& spec)
             analysis_ = result.analysis;
             preview_->setPixmap(QPixmap::fromImage(result.preview));
             summary_->setText(QString::fromStdString(analysisSummary(*analysis_)));
-            sources_->setRowCount(int(analysis_->sources.size()));
-            for (int row = 0; row < sources_->rowCount(); ++row)
-            {
-              const EnvSource& source = analysis_->sources[std::size_t(row)];
-              const SkyAngles angles = skyAnglesOf(source.direction);
-              const QStringList cells = {
-                  QString::fromUtf8(spelling(source.kind)),
-                  degreesText(angles.azimuthDegrees),
-                  degreesText(angles.elevationDegrees),
-                  QString::number(source.solidAngle, 'g', 2) + " sr (" +
-                      QString::number(equivalentDiameterDegrees(source.solidAngle), 'g', 2) +
-                      QChar(0x00B0) + ")",
-                  QString::fromStdString(percentText(source.powerShare))};
-              for (int column = 0; column < cells.size(); ++column)
-              {
-                sources_->setItem(row, column, new QTableWidgetItem(cells[column]));
-              }
-            }
+            showSourceRows();
             emit sourcesShown();
           });
   watcher->setFuture(QtConcurrent::run([spec] { return analysed(spec); }));
+}
+
+void EnvironmentDock::showSourceRows()
+{
+  sources_->setRowCount(analysis_ ? int(analysis_->sources.size()) : 0);
+  const double rotation = editor_->model()->real("env-rotation");
+  for (int row = 0; row < sources_->rowCount(); ++row)
+  {
+    const EnvSource& source = analysis_->sources[std::size_t(row)];
+    const SkyAngles angles = skyAnglesOf(source.direction, rotation);
+    const QStringList cells = {
+        QString::fromUtf8(spelling(source.kind)), degreesText(angles.azimuthDegrees),
+        degreesText(angles.elevationDegrees),
+        QString::number(source.solidAngle, 'g', 2) + " sr (" +
+            QString::number(equivalentDiameterDegrees(source.solidAngle), 'g', 2) + QChar(0x00B0) +
+            ")",
+        QString::fromStdString(percentText(source.powerShare))};
+    for (int column = 0; column < cells.size(); ++column)
+    {
+      sources_->setItem(row, column, new QTableWidgetItem(cells[column]));
+    }
+  }
 }
 } // namespace aniso

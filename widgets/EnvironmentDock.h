@@ -40,12 +40,13 @@ public:
   // Thumbnails still being made.
   int pendingThumbnails() const { return pending_; }
 
-  // The selected environment's analysis (sharedEnvironmentAnalysis, so the view's bake shares
-  // it), made on a worker whenever the scene's environment changes; one runs at a time and the
-  // latest request wins. The preview shows the environment with its sources marked
-  // (markedSources), the table lists them (kind, azimuth and elevation in degrees as
-  // `aniso render --azimuth/--elevation` take them, solid angle and the cone of that solid
-  // angle, share of the power), the summary says how concentrated the power is.
+  // The selected environment's analysis (sharedEnvironmentAnalysis: whoever asks for the same
+  // environment shares it), made on a worker whenever the scene's environment changes; one runs
+  // at a time and the latest request wins; the previous one stays shown until then. The preview shows the environment with its sources marked
+  // (markedSources, in the image's own coordinates), the table lists them (kind, azimuth and
+  // elevation in degrees in the world, env-rotation applied, as `aniso render --azimuth/
+  // --elevation` take them; solid angle and the cone of that solid angle; share of the power),
+  // the summary says how concentrated the power is.
   QLabel* sourcesPreview() const { return preview_; }
   QTableWidget* sourcesTable() const { return sources_; }
   QLabel* sourcesSummary() const { return summary_; }
@@ -76,6 +77,7 @@ private:
   void sync();
   void analyse(const QString& spec);
   void startAnalysis(const QString& spec);
+  void showSourceRows();
 
   SceneEditor* editor_;
   ParameterPanel* panel_;

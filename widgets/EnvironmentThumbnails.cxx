@@ -154,10 +154,12 @@ QImage markedSources(const QImage& preview, const EnvAnalysis& analysis)
   {
     const glm::dvec2 uv = directionToEquirect(source.direction);
     const QPointF centre(uv.x * w, (1.0 - uv.y) * h);
-    const double cosElevation = std::sqrt(std::max(0.0, 1.0 - source.direction.z * source.direction.z));
+    const double cosElevation =
+        std::sqrt(std::max(0.0, 1.0 - source.direction.z * source.direction.z));
     const double ry = std::max<double>(kMinimumMarkRadius, source.angularRadius * h / kPi);
-    const double rx = std::clamp(source.angularRadius * h / kPi / std::max(cosElevation, 1e-6),
-                                 double(kMinimumMarkRadius), std::max(w / 2.0, double(kMinimumMarkRadius)));
+    const double rx =
+        std::clamp(source.angularRadius * h / kPi / std::max(cosElevation, 1e-6),
+                   double(kMinimumMarkRadius), std::max(w / 2.0, double(kMinimumMarkRadius)));
     for (const double shift : {-w, 0.0, w})
     {
       const QPointF at(centre.x() + shift, centre.y());

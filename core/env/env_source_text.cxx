@@ -24,7 +24,7 @@ std::string printed(const char* format, double value)
 }
 } // namespace
 
-SkyAngles skyAnglesOf(const glm::dvec3& d)
+SkyAngles skyAnglesOf(const glm::dvec3& d, double rotationDegrees)
 {
   const double length = glm::length(d);
   if (!(length > 0.0) || !std::isfinite(length))
@@ -33,6 +33,10 @@ SkyAngles skyAnglesOf(const glm::dvec3& d)
   }
   // Adding +0 turns a -0 into +0, so straight up and down read azimuth 0, not 180.
   double azimuth = degrees(std::atan2(d.x + 0.0, -d.y + 0.0));
+  if (std::isfinite(rotationDegrees))
+  {
+    azimuth = std::fmod(azimuth + rotationDegrees, 360.0);
+  }
   if (azimuth < 0.0)
   {
     azimuth += 360.0;
@@ -60,9 +64,9 @@ std::string percentText(double share)
   return printed(percent < 9.95 ? "%.1f%%" : "%.0f%%", percent);
 }
 
-std::string sourceText(const EnvSource& source)
+std::string sourceText(const EnvSource& source, double rotationDegrees)
 {
-  const SkyAngles angles = skyAnglesOf(source.direction);
+  const SkyAngles angles = skyAnglesOf(source.direction, rotationDegrees);
   return std::string(spelling(source.kind)) + " at azimuth " +
          printed("%.1f", angles.azimuthDegrees) + ", elevation " +
          printed("%.1f", angles.elevationDegrees) + " (" + printed("%.2g", source.solidAngle) +

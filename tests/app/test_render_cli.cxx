@@ -184,38 +184,48 @@ TEST_F(RenderCli, PngAndTimes)
 TEST_F(RenderCli, PrintsTheEnvironmentsSources)
 {
   ANISO_REQUIRE_DISPLAY();
-  const Outcome r = run({"render", "--builtin", "sphere", "--env", "builtin:sunsky", "--size",
-                         "16x16", "--frames", "1", "--samples", "2", "-o", path("a.png").string()});
-  ASSERT_EQ(r.exitCode, 0) << r.err;
-  std::istringstream lines(r.out);
-  std::string line;
-  int summaries = 0;
-  int suns = 0;
-  double azimuth = 0.0;
-  double elevation = 0.0;
-  while (std::getline(lines, line))
-  {
-    summaries += line.rfind("render: environment builtin:sunsky: 1 source carries ", 0) == 0;
-    if (std::sscanf(line.c_str(), "render:   sun at azimuth %lf, elevation %lf (", &azimuth,
-                    &elevation) == 2)
-    {
-      ++suns;
-    }
-  }
-  EXPECT_EQ(summaries, 1) << r.out;
-  ASSERT_EQ(suns, 1) << r.out;
   const auto env =
       std::dynamic_pointer_cast<aniso::SunSkyEnvironment>(aniso::openEnvironment("builtin:sunsky"));
   ASSERT_TRUE(env);
   // Within the sun's radius, and the print's rounding to 0.1 degree on each angle.
   const double tolerance = env->sun().angularRadius + 0.1 * 3.14159265358979 / 180.0;
-  const double angle = std::acos(std::min(
-      1.0, glm::dot(aniso::viewDirectionFromAngles(azimuth, elevation), env->sun().direction)));
-  EXPECT_LT(angle, tolerance) << r.out;
+  // The environment as it is, and turned by 30 degrees about Z (counter-clockwise seen from
+  // above): the sun's world direction is R_z(30) of the environment's.
+  for (const double rotation : {0.0, 30.0})
+  {
+    const Outcome r = run({"render", "--builtin", "sphere", "--env", "builtin:sunsky",
+                           "--env-rotation", std::to_string(rotation), "--size", "16x16",
+                           "--frames", "1", "--samples", "2", "-o", path("a.png").string()});
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    std::istringstream lines(r.out);
+    std::string line;
+    int summaries = 0;
+    int suns = 0;
+    double azimuth = 0.0;
+    double elevation = 0.0;
+    while (std::getline(lines, line))
+    {
+      summaries += line.rfind("render: environment builtin:sunsky: 1 source carries ", 0) == 0;
+      if (std::sscanf(line.c_str(), "render:   sun at azimuth %lf, elevation %lf (", &azimuth,
+                      &elevation) == 2)
+      {
+        ++suns;
+      }
+    }
+    EXPECT_EQ(summaries, 1) << r.out;
+    ASSERT_EQ(suns, 1) << r.out;
+    const double a = rotation * 3.14159265358979 / 180.0;
+    const glm::dvec3 d = env->sun().direction;
+    const glm::dvec3 world(d.x * std::cos(a) - d.y * std::sin(a),
+                           d.x * std::sin(a) + d.y * std::cos(a), d.z);
+    const double angle = std::acos(
+        std::min(1.0, glm::dot(aniso::viewDirectionFromAngles(azimuth, elevation), world)));
+    EXPECT_LT(angle, tolerance) << rotation << "\n" << r.out;
+  }
 
-  const Outcome white = run({"render", "--builtin", "sphere", "--env", "builtin:white", "--size",
-                             "16x16", "--frames", "1", "--samples", "2", "-o",
-                             path("b.png").string()});
+  const Outcome white =
+      run({"render", "--builtin", "sphere", "--env", "builtin:white", "--size", "16x16", "--frames",
+           "1", "--samples", "2", "-o", path("b.png").string()});
   ASSERT_EQ(white.exitCode, 0) << white.err;
   EXPECT_EQ(white.out.find("environment"), std::string::npos) << white.out;
 }

@@ -42,6 +42,25 @@ TEST(EnvSourceText, AnglesInvertTheirDirections)
   EXPECT_EQ(aniso::skyAnglesOf({0.0, 0.0, 0.0}).elevationDegrees, 0.0);
 }
 
+// A rotation about Z by a (counter-clockwise seen from above) takes (x, y) to
+// (x cos a - y sin a, x sin a + y cos a): the angles of the rotated direction.
+TEST(EnvSourceText, RotationTurnsTheAzimuth)
+{
+  const glm::dvec3 d = fromAngles(26.5, 47.8);
+  for (double rotation : {-180.0, -90.0, -30.0, 0.0, 45.0, 170.0, 180.0, 720.0})
+  {
+    const double a = rotation * kPi / 180.0;
+    const glm::dvec3 rotated(d.x * std::cos(a) - d.y * std::sin(a),
+                             d.x * std::sin(a) + d.y * std::cos(a), d.z);
+    const aniso::SkyAngles expected = aniso::skyAnglesOf(rotated);
+    const aniso::SkyAngles angles = aniso::skyAnglesOf(d, rotation);
+    EXPECT_NEAR(angles.azimuthDegrees, expected.azimuthDegrees, 1e-9) << rotation;
+    EXPECT_GE(angles.azimuthDegrees, 0.0);
+    EXPECT_LT(angles.azimuthDegrees, 360.0);
+    EXPECT_NEAR(angles.elevationDegrees, 47.8, 1e-9) << rotation;
+  }
+}
+
 // A cone of half-angle r has solid angle 2 pi (1 - cos r); the sphere is a 360-degree cone.
 TEST(EnvSourceText, DiameterOfASolidAngle)
 {
@@ -72,13 +91,16 @@ TEST(EnvSourceText, SourcesAndSummaries)
   sun.solidAngle = 6.8e-5;
   sun.powerShare = 0.86;
   EXPECT_EQ(aniso::sourceText(sun), "sun at azimuth 123.4, elevation 35.2 (6.8e-05 sr, 86%)");
+  EXPECT_EQ(aniso::sourceText(sun, -150.0),
+            "sun at azimuth 333.4, elevation 35.2 (6.8e-05 sr, 86%)");
 
   aniso::EnvAnalysis analysis;
   analysis.concentration = 0.0123;
   EXPECT_EQ(aniso::analysisSummary(analysis), "no concentrated sources; concentration 0.01");
   analysis.concentration = 0.87;
   analysis.sources = {sun};
-  EXPECT_EQ(aniso::analysisSummary(analysis), "1 source carries 86% of the power; concentration 0.87");
+  EXPECT_EQ(aniso::analysisSummary(analysis),
+            "1 source carries 86% of the power; concentration 0.87");
   aniso::EnvSource lamp;
   lamp.kind = aniso::EnvSourceKind::Lamp;
   lamp.powerShare = 0.04;

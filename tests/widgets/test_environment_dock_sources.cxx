@@ -79,7 +79,8 @@ private slots:
     QVERIFY(env);
     const glm::dvec3 sun = env->sun().direction;
     const double azimuth = std::fmod(std::atan2(sun.x, -sun.y) * 180.0 / kPi + 360.0, 360.0);
-    const double elevation = std::asin(sun.z / std::sqrt(sun.x * sun.x + sun.y * sun.y + sun.z * sun.z)) * 180.0 / kPi;
+    const double elevation =
+        std::asin(sun.z / std::sqrt(sun.x * sun.x + sun.y * sun.y + sun.z * sun.z)) * 180.0 / kPi;
     // Within the sun's own radius (0.27 degrees), and the table's rounding to 0.1.
     const double tolerance = env->sun().angularRadius * 180.0 / kPi + 0.05;
 
@@ -92,6 +93,13 @@ private slots:
              qPrintable(table->item(0, 2)->text() + " vs " + QString::number(elevation)));
     QVERIFY2(dock.sourcesSummary()->text().startsWith("1 source carries "),
              qPrintable(dock.sourcesSummary()->text()));
+    // The environment turned by 30 degrees counter-clockwise about Z: the world's azimuth
+    // grows by 30, the elevation stays.
+    model.setValue("env-rotation", aniso::numberValue(30.0));
+    QVERIFY2(std::abs(degreesIn(table, 0, 1) - std::fmod(azimuth + 30.0, 360.0)) < tolerance,
+             qPrintable(table->item(0, 1)->text()));
+    QVERIFY(std::abs(degreesIn(table, 0, 2) - elevation) < tolerance);
+    model.setValue("env-rotation", aniso::numberValue(0.0));
 
     // The preview is the thumbnail, with a ring of kMinimumMarkRadius (the sun is far smaller
     // than a texel) around the sun's pixel, and unchanged beyond it.
