@@ -113,8 +113,7 @@ Image checkedRgb(const Image& image, const std::string& key)
       for (int c = 0; c < 3; ++c)
       {
         const float value = image.at(x, y, image.channels >= 3 ? c : 0);
-        const std::string where =
-            "texel (" + std::to_string(x) + ", " + std::to_string(y) + ")";
+        const std::string where = "texel (" + std::to_string(x) + ", " + std::to_string(y) + ")";
         if (!std::isfinite(value))
           throw errorAbout(key, where + " is not finite");
         if (value < 0.0f)
@@ -233,9 +232,9 @@ EnvAnalysis analyzeEquirect(const Image& equirect, const std::string& key,
   while (image.width > options.maxWidth && image.height % 2 == 0)
     image = halved(image);
   if (image.width > options.maxWidth)
-    throw errorAbout(key, "a " + std::to_string(image.width) + "x" +
-                              std::to_string(image.height) + " image cannot be halved down to "
-                              "maxWidth " + std::to_string(options.maxWidth));
+    throw errorAbout(key, "a " + std::to_string(image.width) + "x" + std::to_string(image.height) +
+                              " image cannot be halved down to maxWidth " +
+                              std::to_string(options.maxWidth));
 
   const int w = image.width;
   const int h = image.height;
@@ -305,12 +304,12 @@ EnvAnalysis analyzeEquirect(const Image& equirect, const std::string& key,
   double excessPower = 0.0;
   for (std::size_t i = 0; i < texels; ++i)
   {
-    const double y = lum[i];
+    // In double, as the threshold was found (lum is rounded to float).
+    const double y = luminance(image.data[i * 3], image.data[i * 3 + 1], image.data[i * 3 + 2]);
     if (!(y > threshold))
       continue;
     group[i] = 0;
     const double keep = threshold / y;
-    double excessLuminance = 0.0;
     for (int c = 0; c < 3; ++c)
     {
       const float value = image.data[i * 3 + std::size_t(c)];
@@ -318,8 +317,8 @@ EnvAnalysis analyzeEquirect(const Image& equirect, const std::string& key,
       result.residual.data[i * 3 + std::size_t(c)] = residual;
       result.excess.data[i * 3 + std::size_t(c)] = value - residual;
     }
-    excessLuminance = luminance(result.excess.data[i * 3], result.excess.data[i * 3 + 1],
-                                result.excess.data[i * 3 + 2]);
+    const double excessLuminance = luminance(
+        result.excess.data[i * 3], result.excess.data[i * 3 + 1], result.excess.data[i * 3 + 2]);
     excessPower += excessLuminance * omega[i / std::size_t(w)];
   }
   result.sourcePowerShare = total > 0.0 ? excessPower / total : 0.0;
@@ -343,8 +342,8 @@ EnvAnalysis analyzeEquirect(const Image& equirect, const std::string& key,
       if (region[i] < 0)
         continue;
       const std::size_t r = std::size_t(region[i]);
-      const bool split = regionSolidAngle[r] >= kSmallSolidAngle &&
-                         regionPeak[r] > kCoreContrast * threshold;
+      const bool split =
+          regionSolidAngle[r] >= kSmallSolidAngle && regionPeak[r] > kCoreContrast * threshold;
       group[i] = 2 * region[i] + (split && lum[i] > kCoreFactor * threshold ? 1 : 0);
     }
   }
@@ -385,18 +384,16 @@ EnvAnalysis analyzeEquirect(const Image& equirect, const std::string& key,
       Component& component = components[std::size_t(k)];
       for (int cy = 0; cy <= 1; ++cy)
         for (int cx = 0; cx <= 1; ++cx)
-          component.minCos = std::min(
-              component.minCos,
-              glm::dot(directions[std::size_t(k)], gridDirection(x + cx, y + cy, w, h)));
+          component.minCos =
+              std::min(component.minCos,
+                       glm::dot(directions[std::size_t(k)], gridDirection(x + cx, y + cy, w, h)));
     }
 
   std::vector<int> byPower(components.size());
   std::iota(byPower.begin(), byPower.end(), 0);
   std::sort(byPower.begin(), byPower.end(),
             [&](int a, int b)
-            {
-              return components[std::size_t(a)].power > components[std::size_t(b)].power;
-            });
+            { return components[std::size_t(a)].power > components[std::size_t(b)].power; });
   const std::size_t listed = std::min<std::size_t>(byPower.size(), std::size_t(options.maxSources));
   for (std::size_t rank = 0; rank < listed; ++rank)
   {
@@ -411,8 +408,8 @@ EnvAnalysis analyzeEquirect(const Image& equirect, const std::string& key,
     source.powerShare = total > 0.0 ? component.power / total : 0.0;
     source.peakLuminance = component.peak;
     source.texels = component.texels;
-    source.kind = component.solidAngle < kSmallSolidAngle ? EnvSourceKind::Lamp
-                                                          : EnvSourceKind::Window;
+    source.kind =
+        component.solidAngle < kSmallSolidAngle ? EnvSourceKind::Lamp : EnvSourceKind::Window;
     result.sources.push_back(source);
   }
   // The sun: the most powerful small source above the horizon, far brighter than T and alone.
@@ -435,8 +432,7 @@ EnvAnalysis analyzeEquirect(const Image& equirect, const std::string& key,
   if (sun >= 0)
   {
     const Component& component = components[std::size_t(sun)];
-    if (component.peak > kSunContrast * threshold &&
-        component.power >= kSunDominance * otherSmall)
+    if (component.peak > kSunContrast * threshold && component.power >= kSunDominance * otherSmall)
       for (std::size_t rank = 0; rank < listed; ++rank)
         if (byPower[rank] == sun)
           result.sources[rank].kind = EnvSourceKind::Sun;

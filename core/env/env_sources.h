@@ -37,6 +37,11 @@ struct EnvAnalysisOptions
   int maxSources = 8;
 };
 
+// The rule (docs/METHOD.md, "Environment analysis"): a window covers 2e-3 sr or more; a smaller
+// source is a lamp, but for the sun: the most powerful small source above the horizon
+// (z > -0.05), when its peak exceeds 100 T and it carries 4 times the power of any other small
+// source. A large region around a core above 400 T (a sun in a bright sky) is listed as its
+// core (the texels above 16 T) and the rest.
 enum class EnvSourceKind
 {
   Sun,    // a small disc far brighter than the rest, above the horizon
@@ -82,16 +87,18 @@ struct EnvAnalysis
 };
 
 // Analyses an equirectangular RGB image of texel-mean radiance (1 or 2 channels: grey, beyond
-// 3 only RGB). key names its content. Throws aniso::Error "key: reason" for an empty or
-// inconsistent image (width != 2 height), a non-finite or negative texel, or options out of
-// range (naming the option).
+// 3 only RGB), halved (solid-angle weighted) while wider than options.maxWidth. key names its
+// content. Throws aniso::Error "key: reason" for an empty or inconsistent image
+// (width != 2 height, or one that cannot be halved to maxWidth), a non-finite or negative
+// texel, or options out of range (naming the option).
 EnvAnalysis analyzeEquirect(const Image& equirect, const std::string& key,
                             const EnvAnalysisOptions& options = {});
 
 // Analyses an environment: an EquirectEnvironment's image as it is (or box-filtered to
-// maxWidth), any other sampled at options.width x options.width / 2, texels next to a steep
-// change of luminance sampled again more densely, so a sun smaller than a texel keeps its power
-// (within 1% for the built-in sun-sky's).
+// maxWidth), any other (and an image that is not exactly 2:1) sampled at options.width x
+// options.width / 2, texels next to a steep change of luminance sampled again more densely
+// (renderEquirectRefined), so a sun smaller than a texel keeps its power (within 1% for the
+// built-in sun-sky's; 0.02% measured).
 EnvAnalysis analyzeEnvironment(const Environment& env, const EnvAnalysisOptions& options = {});
 
 // Once per environment key and options per process: later calls share the result while anyone
