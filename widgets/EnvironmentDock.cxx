@@ -21,6 +21,7 @@
 #include <QTimer>
 #include <QVBoxLayout>
 #include <QtConcurrent>
+#include <atomic>
 
 namespace aniso
 {
@@ -39,13 +40,23 @@ struct SourcesOfEnvironment
   QString error;
 };
 
-SourcesOfEnvironment analysed(const QString& spec)
+// ALIVE false (the dock is gone) skips the work not yet begun: the pool's queue would otherwise
+// hold the analyses of closed docks, and the application's exit wait for them.
+SourcesOfEnvironment analysed(const QString& spec, const std::atomic<bool>& alive)
 {
   SourcesOfEnvironment result;
   result.spec = spec;
   try
   {
+    if (!alive)
+    {
+      return result;
+    }
     const std::shared_ptr<Environment> env = openEnvironment(spec.toStdString());
+    if (!alive)
+    {
+      return result;
+    }
     result.analysis = sharedEnvironmentAnalysis(*env);
     result.preview = markedSources(environmentThumbnail(*env, kPreviewWidth), *result.analysis);
   }
@@ -175,7 +186,10 @@ EnvironmentDock::EnvironmentDock(SceneEditor* editor, const QString& hdriDirecto
   sync();
 }
 
-EnvironmentDock::~EnvironmentDock() = default;
+EnvironmentDock::~EnvironmentDock()
+{
+  *alive_ = false;
+}
 
 QListWidgetItem* EnvironmentDock::addItem(const QString& label, const QString& spec)
 {
@@ -321,7 +335,7 @@ void EnvironmentDock::startAnalysis(const QString& spec)
             showSourceRows();
             emit sourcesShown();
           });
-  watcher->setFuture(QtConcurrent::run([spec] { return analysed(spec); }));
+  watcher->setFuture(QtConcurrent::run([spec, alive = alive_] { return analysed(spec, *alive); }));
 }
 
 void EnvironmentDock::showSourceRows()

@@ -7,6 +7,7 @@
 
 #include <QDockWidget>
 #include <QString>
+#include <atomic>
 #include <functional>
 #include <memory>
 
@@ -92,5 +93,7 @@ private:
   QString analysedSpec_;
   std::shared_ptr<const EnvAnalysis> analysis_;
   bool analysing_ = false; // a worker runs
+  // False once the dock is gone: its workers skip what they have not begun.
+  std::shared_ptr<std::atomic<bool>> alive_ = std::make_shared<std::atomic<bool>>(true);
 };
 } // namespace aniso
