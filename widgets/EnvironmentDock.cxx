@@ -21,7 +21,9 @@
 #include <QTimer>
 #include <QVBoxLayout>
 #include <QtConcurrent>
+#include <algorithm>
 #include <atomic>
+#include <deque>
 
 namespace aniso
 {
@@ -66,6 +68,31 @@ SourcesOfEnvironment analysed(const QString& spec, const std::atomic<bool>& aliv
     result.error = QString::fromStdString(e.what());
   }
   return result;
+}
+
+// The analyses shown last, in any dock of the process, the latest first: sharedEnvironmentAnalysis
+// keeps a result only while someone holds it, so going back to an environment, or a new window
+// on the same one, finds it here instead of analysing again. At most kRecentAnalyses, and
+// kRecentBytes of their images (an HDRI of 1024 x 512 holds 12 MB). UI thread only.
+constexpr std::size_t kRecentAnalyses = 4;
+constexpr std::size_t kRecentBytes = std::size_t(64) << 20;
+
+void keepRecent(const std::shared_ptr<const EnvAnalysis>& analysis)
+{
+  static std::deque<std::shared_ptr<const EnvAnalysis>> recent;
+  recent.erase(std::remove(recent.begin(), recent.end(), analysis), recent.end());
+  recent.push_front(analysis);
+  std::size_t bytes = 0;
+  for (auto it = recent.begin(); it != recent.end(); ++it)
+  {
+    bytes += ((*it)->excess.data.size() + (*it)->residual.data.size()) * sizeof(float);
+    if (it != recent.begin() &&
+        (std::size_t(it - recent.begin()) >= kRecentAnalyses || bytes > kRecentBytes))
+    {
+      recent.erase(it, recent.end());
+      break;
+    }
+  }
 }
 
 // The name the user knows an environment by: a file's name, or the built-in's spec.
@@ -330,6 +357,7 @@ void EnvironmentDock::startAnalysis(const QString& spec)
             }
             analysedSpec_ = result.spec;
             analysis_ = result.analysis;
+            keepRecent(analysis_);
             preview_->setPixmap(QPixmap::fromImage(result.preview));
             summary_->setText(QString::fromStdString(analysisSummary(*analysis_)));
             showSourceRows();
