@@ -42,8 +42,9 @@ public:
   int pendingThumbnails() const { return pending_; }
 
   // The selected environment's analysis (sharedEnvironmentAnalysis: whoever asks for the same
-  // environment shares it), made on a worker whenever the scene's environment changes; one runs
-  // at a time and the latest request wins; the previous one stays shown until then. The preview shows the environment with its sources marked
+  // environment shares it; the last few shown stay held, so a return to one is not analysed
+  // again), made on a worker whenever the scene's environment changes; one runs at a time and
+  // the latest request wins; the previous one stays shown until then. The preview shows the environment with its sources marked
   // (markedSources, in the image's own coordinates), the table lists them (kind, azimuth and
   // elevation in degrees in the world, env-rotation applied, as `aniso render --azimuth/
   // --elevation` take them; solid angle and the cone of that solid angle; share of the power),
