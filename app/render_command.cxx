@@ -560,9 +560,6 @@ int runRender(const std::vector<std::string>& args, std::ostream& out, std::ostr
     }
   }
   settings.environment = openEnvironment(parameters.text("env"));
-  const std::shared_ptr<const EnvAnalysis> environmentSources =
-      printEnvironmentSources(*settings.environment, parameters.text("env"),
-                              settings.environmentRotationDegrees, report);
   if (a.has("--normal-map"))
   {
     const std::string path = a.text("--normal-map");
@@ -634,6 +631,10 @@ int runRender(const std::vector<std::string>& args, std::ostream& out, std::ostr
     settings.parts = std::move(parts);
   }
   const std::string source = sceneSource(scene);
+  // Once every input is read, so a bad map's error is all a failed run prints.
+  const std::shared_ptr<const EnvAnalysis> environmentSources =
+      printEnvironmentSources(*settings.environment, parameters.text("env"),
+                              settings.environmentRotationDegrees, report);
 
   const RenderResult result =
       a.has("--compare") ? renderComparison(a, settings) : renderOffscreen(settings);
