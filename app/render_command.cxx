@@ -3,7 +3,10 @@
 #include "app/cli.h"
 #include "app/render_models.h"
 #include "app/render_parts.h"
+#include "core/env/env_source_text.h"
+#include "core/env/env_sources.h"
 #include "core/env/environment.h"
+#include "core/error.h"
 #include "core/image/image.h"
 #include "core/maps/map_files.h"
 #include "core/maps/quaternion_map.h"
@@ -341,6 +344,52 @@ std::string sceneSource(const std::vector<ScenePart>& parts)
   return text;
 }
 
+// The sources of ENV (opened from SPEC, turned by ROTATION_DEGREES: their angles are the
+// world's, as --azimuth and --elevation take them) on OUT: a summary line, then one line per
+// listed source, the first kSourceLines of them. A uniform environment has none and says
+// nothing; an analysis that fails is a note, the render goes on. Returns the analysis, which
+// the caller holds so the renderer's own request shares it (sharedEnvironmentAnalysis).
+std::shared_ptr<const EnvAnalysis> printEnvironmentSources(const Environment& env,
+                                                           const std::string& spec,
+                                                           double rotationDegrees,
+                                                           std::ostream& out)
+{
+  constexpr std::size_t kSourceLines = 4;
+  if (dynamic_cast<const UniformEnvironment*>(&env))
+  {
+    return nullptr;
+  }
+  const std::string name =
+      spec.rfind("builtin:", 0) == 0 ? spec : fs::path(spec).filename().string();
+  std::shared_ptr<const EnvAnalysis> analysis;
+  try
+  {
+    analysis = sharedEnvironmentAnalysis(env);
+  }
+  catch (const Error& e)
+  {
+    out << "render: environment " << name << ": no analysis of its sources: " << e.what() << "\n";
+    return nullptr;
+  }
+  out << "render: environment " << name << ": " << analysisSummary(*analysis) << "\n";
+  const std::vector<EnvSource>& sources = analysis->sources;
+  for (std::size_t i = 0; i < std::min(sources.size(), kSourceLines); ++i)
+  {
+    out << "render:   " << sourceText(sources[i], rotationDegrees) << "\n";
+  }
+  if (sources.size() > kSourceLines)
+  {
+    double share = 0.0;
+    for (std::size_t i = kSourceLines; i < sources.size(); ++i)
+    {
+      share += sources[i].powerShare;
+    }
+    out << "render:   and " << sources.size() - kSourceLines << " more (" << percentText(share)
+        << ")\n";
+  }
+  return analysis;
+}
+
 std::string formatMilliseconds(double seconds)
 {
   std::ostringstream s;
@@ -582,6 +631,10 @@ int runRender(const std::vector<std::string>& args, std::ostream& out, std::ostr
     settings.parts = std::move(parts);
   }
   const std::string source = sceneSource(scene);
+  // Once every input is read, so a bad map's error is all a failed run prints.
+  const std::shared_ptr<const EnvAnalysis> environmentSources =
+      printEnvironmentSources(*settings.environment, parameters.text("env"),
+                              settings.environmentRotationDegrees, report);
 
   const RenderResult result =
       a.has("--compare") ? renderComparison(a, settings) : renderOffscreen(settings);

@@ -4,6 +4,10 @@
 #include "core/error.h"
 #include "widgets/ParameterControls.h"
 
+#include <QColor>
+#include <QPainter>
+#include <QPen>
+#include <QPointF>
 #include <algorithm>
 #include <cmath>
 #include <vector>
@@ -18,6 +22,22 @@ float channel(const Image& image, int x, int y, int c)
   const int source = image.channels >= 3 ? c : 0;
   const float v = image.at(x, y, source);
   return std::isfinite(v) && v > 0.0f ? v : 0.0f;
+}
+
+constexpr double kPi = 3.14159265358979323846;
+
+QColor markColour(EnvSourceKind kind)
+{
+  switch (kind)
+  {
+  case EnvSourceKind::Sun:
+    return QColor(255, 190, 0);
+  case EnvSourceKind::Lamp:
+    return QColor(0, 220, 255);
+  case EnvSourceKind::Window:
+    break;
+  }
+  return QColor(255, 0, 200);
 }
 
 double aces(double x)
@@ -103,10 +123,56 @@ QImage environmentThumbnail(const std::string& spec, int width)
 {
   if (spec.rfind("builtin:", 0) == 0)
   {
-    const std::shared_ptr<Environment> env = openEnvironment(spec);
-    const int w = std::max(width, 2);
-    return toQImage(toneMappedThumbnail(renderEquirect(*env, w, w / 2, 1), w));
+    return environmentThumbnail(*openEnvironment(spec), width);
   }
   return toQImage(toneMappedThumbnail(readImage(spec), width));
+}
+
+QImage environmentThumbnail(const Environment& env, int width)
+{
+  if (const auto* equirect = dynamic_cast<const EquirectEnvironment*>(&env))
+  {
+    return toQImage(toneMappedThumbnail(equirect->image(), width));
+  }
+  const int w = std::max(width, 2);
+  return toQImage(toneMappedThumbnail(renderEquirect(env, w, w / 2, 1), w));
+}
+
+QImage markedSources(const QImage& preview, const EnvAnalysis& analysis)
+{
+  QImage marked = preview.convertToFormat(QImage::Format_RGB32);
+  if (marked.isNull() || analysis.sources.empty())
+  {
+    return marked;
+  }
+  const double w = marked.width();
+  const double h = marked.height();
+  QPainter painter(&marked);
+  painter.setRenderHint(QPainter::Antialiasing);
+  painter.setBrush(Qt::NoBrush);
+  for (const EnvSource& source : analysis.sources)
+  {
+    const glm::dvec2 uv = directionToEquirect(source.direction);
+    const QPointF centre(uv.x * w, (1.0 - uv.y) * h);
+    const double cosElevation =
+        std::sqrt(std::max(0.0, 1.0 - source.direction.z * source.direction.z));
+    const double ry = std::max<double>(kMinimumMarkRadius, source.angularRadius * h / kPi);
+    const double rx =
+        std::clamp(source.angularRadius * h / kPi / std::max(cosElevation, 1e-6),
+                   double(kMinimumMarkRadius), std::max(w / 2.0, double(kMinimumMarkRadius)));
+    for (const double shift : {-w, 0.0, w})
+    {
+      const QPointF at(centre.x() + shift, centre.y());
+      if (at.x() + rx < 0.0 || at.x() - rx > w)
+      {
+        continue;
+      }
+      painter.setPen(QPen(QColor(0, 0, 0, 160), 3.0));
+      painter.drawEllipse(at, rx, ry);
+      painter.setPen(QPen(markColour(source.kind), 1.5));
+      painter.drawEllipse(at, rx, ry);
+    }
+  }
+  return marked;
 }
 } // namespace aniso

@@ -6,16 +6,26 @@
 //  - An EXR holds linear radiance: for the built-in sphere with F0 = 1, the centre of the image
 //    agrees with the CPU reference integrator for the same lobe, view and pixels; PNGs are 8-bit
 //    RGB, or RGBA with --background none; --time reports the frame time.
+//  - The environment's sources are printed: under builtin:sunsky one line names the sun at an
+//    azimuth and elevation that, read as --azimuth and --elevation read them
+//    (viewDirectionFromAngles), point at SunSkyEnvironment's own sun direction; under
+//    builtin:white (uniform) nothing is printed of the environment.
 #include "core/env/environment.h"
+#include "core/env/sun_sky.h"
 #include "core/frame.h"
 #include "core/image/image.h"
 #include "core/reference/reference_integrator.h"
 #include "tests/app/cli_runner.h"
 #include "tests/vtkpasses/render/render_test_helpers.h"
+#include "vtkpasses/render/ViewSettings.h"
 
 #include <cmath>
+#include <cstdio>
 #include <fstream>
+#include <glm/geometric.hpp>
 #include <gtest/gtest.h>
+#include <memory>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -169,5 +179,54 @@ TEST_F(RenderCli, PngAndTimes)
   const aniso::Image rgba = aniso::readImage(transparent, &info);
   EXPECT_EQ(info.fileChannels, 4);
   EXPECT_EQ(rgba.at(12, 12, 3), 1.0f); // the plate fills the centre
+}
+
+TEST_F(RenderCli, PrintsTheEnvironmentsSources)
+{
+  ANISO_REQUIRE_DISPLAY();
+  const auto env =
+      std::dynamic_pointer_cast<aniso::SunSkyEnvironment>(aniso::openEnvironment("builtin:sunsky"));
+  ASSERT_TRUE(env);
+  // Within the sun's radius, and the print's rounding to 0.1 degree on each angle.
+  const double tolerance = env->sun().angularRadius + 0.1 * 3.14159265358979 / 180.0;
+  // The environment as it is, and turned by 30 degrees about Z (counter-clockwise seen from
+  // above): the sun's world direction is R_z(30) of the environment's.
+  for (const double rotation : {0.0, 30.0})
+  {
+    const Outcome r = run({"render", "--builtin", "sphere", "--env", "builtin:sunsky",
+                           "--env-rotation", std::to_string(rotation), "--size", "16x16",
+                           "--frames", "1", "--samples", "2", "-o", path("a.png").string()});
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    std::istringstream lines(r.out);
+    std::string line;
+    int summaries = 0;
+    int suns = 0;
+    double azimuth = 0.0;
+    double elevation = 0.0;
+    while (std::getline(lines, line))
+    {
+      summaries += line.rfind("render: environment builtin:sunsky: 1 source carries ", 0) == 0;
+      if (std::sscanf(line.c_str(), "render:   sun at azimuth %lf, elevation %lf (", &azimuth,
+                      &elevation) == 2)
+      {
+        ++suns;
+      }
+    }
+    EXPECT_EQ(summaries, 1) << r.out;
+    ASSERT_EQ(suns, 1) << r.out;
+    const double a = rotation * 3.14159265358979 / 180.0;
+    const glm::dvec3 d = env->sun().direction;
+    const glm::dvec3 world(d.x * std::cos(a) - d.y * std::sin(a),
+                           d.x * std::sin(a) + d.y * std::cos(a), d.z);
+    const double angle = std::acos(
+        std::min(1.0, glm::dot(aniso::viewDirectionFromAngles(azimuth, elevation), world)));
+    EXPECT_LT(angle, tolerance) << rotation << "\n" << r.out;
+  }
+
+  const Outcome white =
+      run({"render", "--builtin", "sphere", "--env", "builtin:white", "--size", "16x16", "--frames",
+           "1", "--samples", "2", "-o", path("b.png").string()});
+  ASSERT_EQ(white.exitCode, 0) << white.err;
+  EXPECT_EQ(white.out.find("environment"), std::string::npos) << white.out;
 }
 } // namespace
