@@ -390,6 +390,18 @@ std::shared_ptr<const EnvAnalysis> printEnvironmentSources(const Environment& en
   return analysis;
 }
 
+// The env-sampling choice as drawn: "auto (sources)" or "auto (off)" by the analysis the
+// lighting resolves it with (EnvAnalysis::concentrated), else the choice itself.
+std::string samplingSummary(const ParameterSet& parameters, const EnvAnalysis* analysis)
+{
+  const std::string chosen = parameters.text("env-sampling");
+  if (parseEnvironmentSampling(chosen) != EnvironmentSampling::Auto)
+  {
+    return chosen;
+  }
+  return chosen + (analysis && analysis->concentrated() ? " (sources)" : " (off)");
+}
+
 std::string formatMilliseconds(double seconds)
 {
   std::ostringstream s;
@@ -662,8 +674,9 @@ int runRender(const std::vector<std::string>& args, std::ostream& out, std::ostr
       << (exr ? "linear RGBA float, alpha = coverage" : "tone-mapped sRGB") << ") of " << source
       << ": " << settings.frames << " frame(s) x " << samples << " samples, "
       << parameters.text("method") << ", filtered " << parameters.text("filtered")
-      << ", half vectors from the " << parameters.text("half-vectors") << "; "
-      << modelSummary(a) << "\n";
+      << ", half vectors from the " << parameters.text("half-vectors")
+      << ", environment sampling " << samplingSummary(parameters, environmentSources.get())
+      << "; " << modelSummary(a) << "\n";
   if (a.has("--time"))
   {
     const double median = medianSeconds(result.frameSeconds);

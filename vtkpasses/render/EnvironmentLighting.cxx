@@ -42,6 +42,7 @@ std::shared_ptr<EnvironmentLighting> EnvironmentLighting::copyBakes() const
   copy->rotationDegrees_ = rotationDegrees_;
   copy->distribution_ = distribution_;
   copy->analysis_ = analysis_;
+  copy->analysisFailed_ = analysisFailed_;
   if (split_)
   {
     copy->split_ = std::make_unique<SourceSplit>(*split_);
@@ -194,7 +195,20 @@ EnvironmentSampling EnvironmentLighting::resolveSampling(EnvironmentSampling req
   {
     return requested;
   }
-  return analysis().concentrated() ? EnvironmentSampling::Sources : EnvironmentSampling::Off;
+  if (!analysis_ && !analysisFailed_)
+  {
+    try
+    {
+      analysis();
+    }
+    catch (const Error&)
+    {
+      // No analysis (reported where it is shown): auto keeps to the lobe samples.
+      analysisFailed_ = true;
+    }
+  }
+  return analysis_ && analysis_->concentrated() ? EnvironmentSampling::Sources
+                                                : EnvironmentSampling::Off;
 }
 
 void EnvironmentLighting::prepare(EnvironmentSampling requested)
@@ -218,7 +232,7 @@ bool EnvironmentLighting::prepared(EnvironmentSampling requested) const
   {
     if (!analysis_)
     {
-      return false;
+      return analysisFailed_;
     }
     requested = analysis_->concentrated() ? EnvironmentSampling::Sources : EnvironmentSampling::Off;
   }

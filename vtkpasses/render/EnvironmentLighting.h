@@ -83,7 +83,8 @@ public:
   // sharedEnvironmentAnalysis), made on first use.
   const EnvAnalysis& analysis();
   // What a material asking for REQUESTED draws with: Auto is Sources when the analysis finds
-  // concentrated sources and Off otherwise (it makes the analysis); the others stay.
+  // concentrated sources and Off otherwise, or when the analysis fails (it makes the analysis);
+  // the others stay.
   EnvironmentSampling resolveSampling(EnvironmentSampling requested);
   // Bakes now what a material drawing with REQUESTED needs (the analysis for Auto, the
   // distribution for Mis, the split for Sources): what a worker calls before the lighting is
@@ -134,6 +135,7 @@ private:
   vtkWeakPointer<vtkOpenGLRenderWindow> samplingWindow_;
 
   std::shared_ptr<const EnvAnalysis> analysis_;
+  bool analysisFailed_ = false; // resolveSampling found no analysis: auto is off
   std::unique_ptr<SourceSplit> split_;
   // residual cube, excess, CDF, pdf, guide
   std::array<vtkSmartPointer<vtkTextureObject>, 5> sourceTextures_;
