@@ -227,6 +227,13 @@ TEST_F(RenderCli, PrintsTheEnvironmentsSources)
       run({"render", "--builtin", "sphere", "--env", "builtin:white", "--size", "16x16", "--frames",
            "1", "--samples", "2", "-o", path("b.png").string()});
   ASSERT_EQ(white.exitCode, 0) << white.err;
-  EXPECT_EQ(white.out.find("environment"), std::string::npos) << white.out;
+  EXPECT_EQ(white.out.find("render: environment"), std::string::npos) << white.out;
+  // What auto drew with: lobe samples only under a uniform environment, the sources under a sun.
+  EXPECT_NE(white.out.find("environment sampling auto (off)"), std::string::npos) << white.out;
+  const Outcome sun =
+      run({"render", "--builtin", "sphere", "--env", "builtin:sunsky", "--size", "16x16", "--frames",
+           "1", "--samples", "2", "-o", path("c.png").string()});
+  ASSERT_EQ(sun.exitCode, 0) << sun.err;
+  EXPECT_NE(sun.out.find("environment sampling auto (sources)"), std::string::npos) << sun.out;
 }
 } // namespace
