@@ -1,6 +1,7 @@
 #include "bench/reference_image.h"
 
 #include "core/env/parallel.h"
+#include "core/env/sun_sky.h"
 #include "core/error.h"
 #include "core/frame.h"
 
@@ -94,6 +95,10 @@ std::string cacheKey(const std::vector<PixelSample>& geometry, int width, int he
   key << " f0 " << hex(model.f0.x) << " " << hex(model.f0.y) << " " << hex(model.f0.z) << " env "
       << environment.key() << " tol " << hex(options.relativeTolerance) << " "
       << hex(options.absoluteTolerance) << " max " << options.maxEvaluations;
+  if (dynamic_cast<const SunSkyEnvironment*>(&environment))
+  {
+    key << " sun-cone"; // the sun integrated over its own cone (integrateSpecularSunSky)
+  }
   return key.str();
 }
 
@@ -275,16 +280,24 @@ ReferenceImage computeReference(const std::vector<PixelSample>& geometry, int wi
         const PixelSample& s = geometry[std::size_t(index)];
         Frame frame = Frame::fromNormalTangent(s.normal, s.tangent);
         ReferenceResult r;
+        // The sun-sky's disc is far smaller than the general rules resolve: its own cone.
+        const auto* sunSky = dynamic_cast<const SunSkyEnvironment*>(&environment);
         if (model.ggx)
         {
           const double c = std::cos(model.tangentRotation);
           const double sn = std::sin(model.tangentRotation);
           frame = Frame::fromNormalTangent(frame.n, c * frame.t + sn * frame.b);
-          r = integrateSpecularGgx(model.ggxLobe, model.f0, frame, s.view, environment, options);
+          r = sunSky ? integrateSpecularGgxSunSky(model.ggxLobe, model.f0, frame, s.view, *sunSky,
+                                                  options)
+                     : integrateSpecularGgx(model.ggxLobe, model.f0, frame, s.view, environment,
+                                            options);
         }
         else
         {
-          r = integrateSpecular(model.asLobe, model.f0, frame, s.view, environment, options);
+          r = sunSky ? integrateSpecularSunSky(model.asLobe, model.f0, frame, s.view, *sunSky,
+                                               options)
+                     : integrateSpecular(model.asLobe, model.f0, frame, s.view, environment,
+                                         options);
         }
         image.pixels[std::size_t(i)] = {index % width, index / width, r.value, r.errorEstimate};
         evaluations[std::size_t(i)] = r.evaluations;
