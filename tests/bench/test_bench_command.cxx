@@ -354,7 +354,7 @@ TEST_F(BenchCommand, HdriQuickRunHasItsRows)
                 1)
           << environment << " " << lobe << ": the published method";
       std::map<std::string, std::map<int, double>> errors; // method, frames: error
-      for (const std::string method :
+      for (const std::string& method :
            {expectation.first, std::string("exact"), std::string("exact+mis"),
             std::string("exact+sources")})
       {
