@@ -45,7 +45,7 @@ Command benchCommand()
       "its goals and quality model), lit, leadr, micro, hdri (issue 14: the sphere under the "
       "studio and the eight Blender HDRIs, four lobes, the published method against progressive "
       "frames of the defaults (env-sampling auto) and of off, mis and sources; the default scene "
-      "under each; the goals of issue 14. With --quick: the studio and the sun-sky, two lobes, 16 "
+      "under four of them; the goals of issue 14. With --quick: the studio and the sun-sky, two lobes, 16 "
       "frames, no default scene) (default: as-env, lit, leadr, micro; hdri runs only when "
       "named: 14 min at --size 128 with an empty reference cache on two shared cores)"));
   c.options.push_back(textOption(
