@@ -77,7 +77,7 @@ std::string configText(const BenchRow& r)
 // them), as opposed to the other models' rows and their baselines.
 bool environmentSet(const BenchRow& r)
 {
-  return r.model == "as-env" && r.kind != "baseline";
+  return r.model == "as-env" && r.kind != "baseline" && r.kind.rfind("hdri", 0) != 0;
 }
 
 // Frame time over the environment frame on the same scene (0 where none was measured).
@@ -765,11 +765,564 @@ std::string modelsMarkdown(const BenchResult& result, const std::string& plotFil
   }
   return md.str();
 }
+// Issue 14: the "hdri" family. Rows "hdri" (the published method, one frame),
+// "hdri-progressive" (the sphere, frames of 16 samples accumulated) and
+// "hdri-default-progressive" (the default scene under each environment).
+bool hdriRow(const BenchRow& r)
+{
+  return r.kind.rfind("hdri", 0) == 0;
+}
+
+struct HdriConfig
+{
+  std::string label;
+  glm::dvec3 color;
+  std::function<bool(const std::string&)> method;
+};
+
+const std::vector<HdriConfig>& hdriConfigs()
+{
+  static const std::vector<HdriConfig> configs{
+      {"default (auto)",
+       {0.84, 0.37, 0.0},
+       [](const std::string& m) { return m.rfind("exact+auto", 0) == 0; }},
+      {"off (lobe only)", {0.0, 0.45, 0.70}, [](const std::string& m) { return m == "exact"; }},
+      {"mis", {0.55, 0.25, 0.6}, [](const std::string& m) { return m == "exact+mis"; }},
+      {"sources", {0.0, 0.62, 0.45}, [](const std::string& m) { return m == "exact+sources"; }},
+  };
+  return configs;
+}
+
+std::vector<std::string> hdriEnvironments(const std::vector<BenchRow>& rows)
+{
+  return uniqueValues(
+      rows, [](const BenchRow& r) { return r.kind == "hdri-progressive"; },
+      [](const BenchRow& r) { return r.environment; });
+}
+
+// The progressive rows of one environment, lobe and configuration, by frames.
+std::vector<const BenchRow*> hdriSeries(const std::vector<BenchRow>& rows, const std::string& kind,
+                                        const std::string& environment, const AsLobe& lobe,
+                                        const HdriConfig& config)
+{
+  std::vector<const BenchRow*> series;
+  for (const BenchRow& r : rows)
+  {
+    if (r.kind == kind && r.environment == environment && sameLobe(r.lobe, lobe) &&
+        config.method(r.method))
+    {
+      series.push_back(&r);
+    }
+  }
+  std::sort(series.begin(), series.end(),
+            [](const BenchRow* a, const BenchRow* b) { return a->frames < b->frames; });
+  return series;
+}
+
+const BenchRow* hdriPublished(const std::vector<BenchRow>& rows, const std::string& environment,
+                              const AsLobe& lobe)
+{
+  return find(rows,
+              [&](const BenchRow& r)
+              {
+                return r.kind == "hdri" && r.environment == environment &&
+                       sameLobe(r.lobe, lobe) && r.method == "split-sum";
+              });
+}
+
+// The first checkpoint from which on every one is at or below TARGET (an error that dips under
+// it and rises again has not converged), or null.
+const BenchRow* firstAtOrBelow(const std::vector<const BenchRow*>& series, double target)
+{
+  const BenchRow* first = nullptr;
+  for (const BenchRow* r : series)
+  {
+    if (r->relativeL2 > target)
+    {
+      first = nullptr;
+    }
+    else if (!first)
+    {
+      first = r;
+    }
+  }
+  return first;
+}
+
+// "0.84 s (F = 8, 0.0093)", or "not reached: 0.023 at F = 64 (5.2 s)".
+std::string timeToText(const std::vector<const BenchRow*>& series, double target)
+{
+  if (series.empty())
+  {
+    return "-";
+  }
+  if (const BenchRow* r = firstAtOrBelow(series, target))
+  {
+    return milliseconds(r->totalSeconds) + " (F = " + std::to_string(r->frames) + ", " +
+           number(r->relativeL2, 2) + ")";
+  }
+  const BenchRow* last = series.back();
+  return "not reached: " + number(last->relativeL2, 2) + " at F = " +
+         std::to_string(last->frames) + " (" + milliseconds(last->totalSeconds) + ")";
+}
+
+// "sources" from "exact+auto(sources)".
+std::string autoChoice(const std::vector<BenchRow>& rows, const std::string& environment,
+                       const std::string& kind = "hdri-progressive")
+{
+  const BenchRow* r = find(rows,
+                           [&](const BenchRow& x)
+                           {
+                             return x.kind == kind && x.environment == environment &&
+                                    x.method.rfind("exact+auto(", 0) == 0;
+                           });
+  if (!r)
+  {
+    return "-";
+  }
+  const std::size_t open = r->method.find('(');
+  return r->method.substr(open + 1, r->method.size() - open - 2);
+}
+
+bool hasSun(const std::vector<BenchRow>& rows, const std::string& environment)
+{
+  return find(rows, [&](const BenchRow& r)
+              { return hdriRow(r) && r.environment == environment && r.variant == "sun"; });
+}
+
+Goal hdriConvergenceGoal(const BenchResult& result)
+{
+  const auto& rows = result.rows;
+  Goal goal;
+  goal.name = "G1: with the defaults (exact, filtered, LUT, 16 samples per frame, env-sampling "
+              "auto) a still view of the sphere converges to <= 1% relative L2 (within the "
+              "frames run) for every lobe under the studio and every HDRI";
+  std::ostringstream figures;
+  int pairs = 0;
+  int reached = 0;
+  std::vector<std::string> missed;
+  const HdriConfig& def = hdriConfigs().front();
+  for (const std::string& env : hdriEnvironments(rows))
+  {
+    for (const AsLobe& lobe : lobesOf(rows, [&](const BenchRow& r)
+                                      { return r.kind == "hdri-progressive" && r.environment == env; }))
+    {
+      const auto series = hdriSeries(rows, "hdri-progressive", env, lobe, def);
+      if (series.empty())
+      {
+        continue;
+      }
+      ++pairs;
+      if (firstAtOrBelow(series, kConvergedError))
+      {
+        ++reached;
+      }
+      else
+      {
+        missed.push_back(env + " " + lobeText(lobe) + " " + number(series.back()->relativeL2, 2) +
+                         " at F = " + std::to_string(series.back()->frames));
+      }
+    }
+  }
+  goal.met = pairs > 0 && reached == pairs;
+  figures << reached << " of " << pairs << " environment x lobe pairs reach 1%";
+  if (!missed.empty())
+  {
+    figures << "; not: ";
+    for (std::size_t i = 0; i < missed.size(); ++i)
+    {
+      figures << (i ? "; " : "") << missed[i];
+    }
+  }
+  goal.figures = pairs > 0 ? figures.str() : "not measured in this run";
+  return goal;
+}
+
+Goal hdriSunGoal(const BenchResult& result)
+{
+  const auto& rows = result.rows;
+  Goal goal;
+  goal.name = "G2: one interactive frame (the defaults, 1 frame of 16 samples) under an HDRI with "
+              "a sun has at most 2x its error under the studio (" +
+              std::string(kStudio) + ", same lobe)";
+  const HdriConfig& def = hdriConfigs().front();
+  std::ostringstream figures;
+  int compared = 0;
+  goal.met = true;
+  for (const std::string& env : hdriEnvironments(rows))
+  {
+    if (env == kStudio || !hasSun(rows, env))
+    {
+      continue;
+    }
+    figures << (compared ? "; " : "") << env << ":";
+    for (const AsLobe& lobe : lobesOf(rows, [&](const BenchRow& r)
+                                      { return r.kind == "hdri-progressive" && r.environment == env; }))
+    {
+      const auto ours = hdriSeries(rows, "hdri-progressive", env, lobe, def);
+      const auto studio = hdriSeries(rows, "hdri-progressive", kStudio, lobe, def);
+      if (ours.empty() || studio.empty() || ours.front()->frames != 1 ||
+          studio.front()->frames != 1)
+      {
+        continue;
+      }
+      const double ratio = ours.front()->relativeL2 / studio.front()->relativeL2;
+      goal.met = goal.met && ratio <= 2.0;
+      ++compared;
+      figures << " " << lobeText(lobe) << " " << number(ours.front()->relativeL2, 2) << "/"
+              << number(studio.front()->relativeL2, 2) << " = " << number(ratio, 2) << "x"
+              << (ratio <= 2.0 ? "" : " (over)");
+    }
+  }
+  goal.met = goal.met && compared > 0;
+  goal.figures = compared > 0 ? "error under the sun / under the studio: " + figures.str()
+                              : "not measured in this run (no environment with a sun)";
+  return goal;
+}
+
+Goal hdriSpeedupGoal(const BenchResult& result)
+{
+  const auto& rows = result.rows;
+  Goal goal;
+  goal.name = "G3: equal-error speed-up over the published method (split sum, LUT, unfiltered, "
+              "256 samples, one frame) >= 10x for every lobe and environment: its time over the "
+              "time the best configuration (progressive, any of the four) takes to reach its "
+              "error";
+  int pairs = 0;
+  int met = 0;
+  double worst = std::numeric_limits<double>::infinity();
+  std::string worstText;
+  double worstDefault = std::numeric_limits<double>::infinity();
+  std::string worstDefaultText;
+  std::vector<std::string> failed;
+  for (const std::string& env : hdriEnvironments(rows))
+  {
+    for (const AsLobe& lobe : lobesOf(rows, [&](const BenchRow& r)
+                                      { return r.kind == "hdri-progressive" && r.environment == env; }))
+    {
+      const BenchRow* published = hdriPublished(rows, env, lobe);
+      if (!published)
+      {
+        continue;
+      }
+      ++pairs;
+      const BenchRow* best = nullptr;
+      const BenchRow* bestDefault = nullptr;
+      for (const BenchRow& r : rows)
+      {
+        if (r.kind == "hdri-progressive" && r.environment == env && sameLobe(r.lobe, lobe) &&
+            r.relativeL2 <= published->relativeL2)
+        {
+          if (!best || r.totalSeconds < best->totalSeconds)
+          {
+            best = &r;
+          }
+          if (hdriConfigs().front().method(r.method) &&
+              (!bestDefault || r.totalSeconds < bestDefault->totalSeconds))
+          {
+            bestDefault = &r;
+          }
+        }
+      }
+      const std::string where = env + " " + lobeText(lobe);
+      const double speedup = best ? published->medianFrameSeconds / best->totalSeconds : 0.0;
+      const double speedupDefault =
+          bestDefault ? published->medianFrameSeconds / bestDefault->totalSeconds : 0.0;
+      const std::string text =
+          where + ": published " + number(published->relativeL2, 2) + " in " +
+          milliseconds(published->medianFrameSeconds) + "; " +
+          (best ? best->method + " x " + std::to_string(best->frames) + " " +
+                      number(best->relativeL2, 2) + " in " + milliseconds(best->totalSeconds) +
+                      ": " + number(speedup, 2) + "x"
+                : std::string("no configuration reaches it within the frames run"));
+      if (speedup >= kSpeedupGoal)
+      {
+        ++met;
+      }
+      else
+      {
+        failed.push_back(where + " " + (best ? number(speedup, 2) + "x" : std::string("never")));
+      }
+      if (speedup < worst)
+      {
+        worst = speedup;
+        worstText = text;
+      }
+      if (speedupDefault < worstDefault)
+      {
+        worstDefault = speedupDefault;
+        worstDefaultText = where + ": " +
+                           (bestDefault ? number(speedupDefault, 2) + "x (F = " +
+                                              std::to_string(bestDefault->frames) + ")"
+                                        : std::string("never within the frames run"));
+      }
+    }
+  }
+  goal.met = pairs > 0 && met == pairs;
+  if (pairs == 0)
+  {
+    goal.figures = "not measured in this run";
+    return goal;
+  }
+  std::ostringstream figures;
+  figures << met << " of " << pairs << " pairs at >= 10x. Smallest: " << worstText
+          << ". The default alone, smallest: " << worstDefaultText;
+  if (!failed.empty())
+  {
+    figures << ". Under 10x: ";
+    for (std::size_t i = 0; i < failed.size(); ++i)
+    {
+      figures << (i ? ", " : "") << failed[i];
+    }
+  }
+  goal.figures = figures.str();
+  return goal;
+}
+
+Goal hdriDefaultSceneGoal(const BenchResult& result)
+{
+  const auto& rows = result.rows;
+  Goal goal;
+  goal.name = "G4: the default scene (torus, (1000, 50), 800x600, the defaults) under every "
+              "environment measured reaches <= 1% within 2 s of refinement";
+  const HdriConfig& def = hdriConfigs().front();
+  std::ostringstream figures;
+  int scenes = 0;
+  goal.met = true;
+  for (const std::string& env : uniqueValues(
+           rows, [](const BenchRow& r) { return r.kind == "hdri-default-progressive"; },
+           [](const BenchRow& r) { return r.environment; }))
+  {
+    const auto series = hdriSeries(rows, "hdri-default-progressive", env, AsLobe{1000.0, 50.0}, def);
+    if (series.empty())
+    {
+      continue;
+    }
+    const BenchRow* first = firstAtOrBelow(series, kConvergedError);
+    const bool met = first && first->totalSeconds <= kConvergenceSeconds;
+    goal.met = goal.met && met;
+    figures << (scenes++ ? "; " : "") << env << " "
+            << (first ? number(first->totalSeconds, 2) + " s (F = " +
+                            std::to_string(first->frames) + ")"
+                      : "not at F = " + std::to_string(series.back()->frames) + " (" +
+                            number(series.back()->relativeL2, 2) + ", " +
+                            number(series.back()->totalSeconds, 2) + " s)")
+            << (met ? "" : " (not met)");
+  }
+  goal.met = goal.met && scenes > 0;
+  goal.figures = scenes > 0 ? figures.str() : "not measured in this run";
+  return goal;
+}
+
+// Rows: the environments, columns: the lobes; per panel the four configurations' error against
+// the accumulated time, the published method's point and the 1% line.
+Figure hdriErrorAgainstTime(const BenchResult& result)
+{
+  const auto& rows = result.rows;
+  Figure figure;
+  figure.title = "Sphere under the studio and the HDRIs: relative L2 against time (frames of 16 "
+                 "samples accumulated), " +
+                 std::to_string(result.size) + "x" + std::to_string(result.size);
+  const auto lobes = lobesOf(rows, [](const BenchRow& r) { return r.kind == "hdri-progressive"; });
+  figure.columns = std::max(1, int(lobes.size()));
+  figure.panelWidth = 330;
+  figure.panelHeight = 250;
+  for (const std::string& env : hdriEnvironments(rows))
+  {
+    for (const AsLobe& lobe : lobes)
+    {
+      PlotPanel panel;
+      panel.title = env + " " + lobeText(lobe) + ", auto: " + autoChoice(rows, env);
+      panel.xLabel = "time [s]";
+      panel.yLabel = "relative L2";
+      double tMin = std::numeric_limits<double>::infinity();
+      double tMax = 0.0;
+      for (const HdriConfig& config : hdriConfigs())
+      {
+        PlotSeries s;
+        s.label = config.label;
+        s.color = config.color;
+        s.connect = true;
+        s.marker = Marker::Circle;
+        s.markerSize = config.label == hdriConfigs().front().label ? 3.0 : 2.0;
+        for (const BenchRow* r : hdriSeries(rows, "hdri-progressive", env, lobe, config))
+        {
+          s.points.push_back({r->totalSeconds, r->relativeL2});
+          tMin = std::min(tMin, r->totalSeconds);
+          tMax = std::max(tMax, r->totalSeconds);
+        }
+        panel.series.push_back(s);
+      }
+      if (const BenchRow* p = hdriPublished(rows, env, lobe))
+      {
+        PlotSeries s;
+        s.label = "published (split sum, 256, 1 frame)";
+        s.color = {0.1, 0.1, 0.1};
+        s.marker = Marker::Square;
+        s.markerSize = 4.0;
+        s.points = {{p->medianFrameSeconds, p->relativeL2}};
+        tMin = std::min(tMin, p->medianFrameSeconds);
+        tMax = std::max(tMax, p->medianFrameSeconds);
+        panel.series.push_back(s);
+      }
+      if (tMax > 0.0)
+      {
+        PlotSeries one;
+        one.label = "1%";
+        one.color = {0.6, 0.6, 0.6};
+        one.connect = true;
+        one.marker = Marker::None;
+        one.points = {{tMin, kConvergedError}, {tMax, kConvergedError}};
+        panel.series.push_back(one);
+      }
+      figure.panels.push_back(panel);
+    }
+  }
+  return figure;
+}
+
+std::string hdriMarkdown(const BenchResult& result, const std::string& plotFile)
+{
+  const auto& rows = result.rows;
+  if (!find(rows, hdriRow))
+  {
+    return {};
+  }
+  std::ostringstream md;
+  md << "\n## Real HDRIs with the default settings (issue 14)\n\n"
+        "The sphere at "
+     << result.size << "x" << result.size
+     << " under the built-in studio and the HDRIs, F0 = aluminium, no diffuse, "
+        "cube map 256², no jitter. Per lobe: the published method (split sum, LUT, unfiltered, "
+        "256 samples, one frame: the median of its timed frames) and progressive runs of frames "
+        "of 16 samples (exact, filtered, LUT) accumulated, the frames' times summed after a "
+        "warm-up accumulation: the default (env-sampling auto, as the environment's analysis "
+        "resolves it), off (lobe samples only), mis and sources (forced; in the full set up to "
+        "16 frames where the default runs to 64). Where auto resolves to "
+        "off or sources, that forced configuration draws the same shader with the same uniforms, "
+        "so its rows are the default's (rendered once). Error: relative L2 over RGB against the "
+        "CPU reference integrator on "
+     << (find(rows, [](const BenchRow& r) { return r.kind == "hdri-progressive"; })
+             ->comparedPixels)
+     << " pixels (cached on disk); the references' own bounds are in bench.csv "
+        "(reference_bound), at most ";
+  double largestBound = 0.0;
+  for (const BenchRow& r : rows)
+  {
+    if (hdriRow(r))
+    {
+      largestBound = std::max(largestBound, r.referenceBound);
+    }
+  }
+  md << number(largestBound, 2)
+     << " here. Time to 1%: the time of the first checkpoint (F = 1, 2, 4, ... frames) from "
+        "which on every checkpoint is at or below 1% (between checkpoints it is not known, so "
+        "an upper bound); 'not reached' gives the error at the last frame.\n\n";
+
+  const std::vector<Goal> goals =
+      result.hdriGoals.empty() ? evaluateHdriGoals(result) : result.hdriGoals;
+  md << "### Goals (issue 14)\n\n| Goal | Met | Figures |\n| --- | --- | --- |\n";
+  for (const Goal& g : goals)
+  {
+    md << "| " << g.name << " | " << (g.met ? "**met**" : "**not met**") << " | " << g.figures
+       << " |\n";
+  }
+  if (!plotFile.empty())
+  {
+    md << "\n![Relative L2 against time under the HDRIs](" << plotFile << ")\n";
+  }
+
+  md << "\n### What auto resolves to\n\n| Environment | auto | Sun listed |\n| --- | --- | --- |\n";
+  const auto environments = hdriEnvironments(rows);
+  for (const std::string& env : environments)
+  {
+    md << "| " << env << " | " << autoChoice(rows, env) << " | "
+       << (hasSun(rows, env) ? "yes" : "no") << " |\n";
+  }
+
+  const auto& configs = hdriConfigs();
+  for (const std::string& env : environments)
+  {
+    md << "\n### " << env << " (auto: " << autoChoice(rows, env) << ")\n\n"
+       << "| Lobe | published L2 (time) | default F = 1 L2 (time) | default at the last F |";
+    for (const HdriConfig& c : configs)
+    {
+      md << " to 1%: " << c.label << " |";
+    }
+    md << "\n| --- | --- | --- | --- |";
+    for (std::size_t i = 0; i < configs.size(); ++i)
+    {
+      md << " --- |";
+    }
+    md << "\n";
+    for (const AsLobe& lobe : lobesOf(rows, [&](const BenchRow& r)
+                                      { return r.kind == "hdri-progressive" && r.environment == env; }))
+    {
+      const BenchRow* published = hdriPublished(rows, env, lobe);
+      const auto def = hdriSeries(rows, "hdri-progressive", env, lobe, configs.front());
+      md << "| " << lobeText(lobe) << " | "
+         << (published ? number(published->relativeL2) + " (" +
+                             milliseconds(published->medianFrameSeconds) + ")"
+                       : std::string("-"))
+         << " | "
+         << (def.empty() ? std::string("-")
+                         : number(def.front()->relativeL2) + " (" +
+                               milliseconds(def.front()->totalSeconds) + ")")
+         << " | "
+         << (def.empty() ? std::string("-")
+                         : number(def.back()->relativeL2) + " (F = " +
+                               std::to_string(def.back()->frames) + ", " +
+                               milliseconds(def.back()->totalSeconds) + ")")
+         << " |";
+      for (const HdriConfig& c : configs)
+      {
+        md << " " << timeToText(hdriSeries(rows, "hdri-progressive", env, lobe, c), kConvergedError)
+           << " |";
+      }
+      md << "\n";
+    }
+  }
+
+  const auto torusEnvironments = uniqueValues(
+      rows, [](const BenchRow& r) { return r.kind == "hdri-default-progressive"; },
+      [](const BenchRow& r) { return r.environment; });
+  if (!torusEnvironments.empty())
+  {
+    md << "\n### The default scene under the HDRIs\n\nTorus, (1000, 50), 800x600, the "
+          "defaults, frames of 16 samples accumulated one by one until at or below 1% (at most "
+          "32); in the full set under the studio, city (a sun), interior (lamps) and sunset (a "
+          "weak sun) only.\n\n| Environment | auto | F = 1 L2 (time) | to 1% | last L2 (F, time) |\n"
+          "| --- | --- | --- | --- | --- |\n";
+    for (const std::string& env : torusEnvironments)
+    {
+      const auto series = hdriSeries(rows, "hdri-default-progressive", env, AsLobe{1000.0, 50.0},
+                                     configs.front());
+      if (series.empty())
+      {
+        continue;
+      }
+      md << "| " << env << " | " << autoChoice(rows, env, "hdri-default-progressive") << " | "
+         << number(series.front()->relativeL2) << " (" +
+                milliseconds(series.front()->totalSeconds) + ")"
+         << " | " << timeToText(series, kConvergedError) << " | "
+         << number(series.back()->relativeL2) << " (F = " << series.back()->frames << ", "
+         << milliseconds(series.back()->totalSeconds) << ") |\n";
+    }
+  }
+  return md.str();
+}
+
 } // namespace
 
 std::vector<Goal> evaluateGoals(const BenchResult& result)
 {
   return {publishedGoal(result), vtkCostGoal(result), convergenceGoal(result)};
+}
+
+std::vector<Goal> evaluateHdriGoals(const BenchResult& result)
+{
+  return {hdriConvergenceGoal(result), hdriSunGoal(result), hdriSpeedupGoal(result),
+          hdriDefaultSceneGoal(result)};
 }
 
 std::vector<QualityFit> fitQuality(const std::vector<BenchRow>& rows)
@@ -843,7 +1396,7 @@ std::string benchCsv(const BenchResult& result)
 }
 
 std::string benchMarkdown(const BenchResult& result, const std::string& plotFile,
-                          const std::string& modelsPlotFile)
+                          const std::string& modelsPlotFile, const std::string& hdriPlotFile)
 {
   std::ostringstream md;
   md << "## Time against error (`aniso bench`)\n\n";
@@ -856,6 +1409,7 @@ std::string benchMarkdown(const BenchResult& result, const std::string& plotFile
   {
     md << (result.quick ? " Quick set." : "") << "\n";
     md << modelsMarkdown(result, modelsPlotFile);
+    md << hdriMarkdown(result, hdriPlotFile);
     return md.str();
   }
   md << " Images " << result.size << "x" << result.size << (result.quick ? " (quick set)" : "")
@@ -870,7 +1424,7 @@ std::string benchMarkdown(const BenchResult& result, const std::string& plotFile
   double smallestError = std::numeric_limits<double>::infinity();
   for (const BenchRow& r : result.rows)
   {
-    if (r.model == "as-env")
+    if (environmentSet(r))
     {
       largestBound = std::max(largestBound, r.referenceBound);
       smallestError = std::min(smallestError, r.relativeL2);
@@ -1016,7 +1570,7 @@ std::string benchMarkdown(const BenchResult& result, const std::string& plotFile
   std::map<std::pair<std::string, int>, const BenchRow*> cells;
   for (const BenchRow& r : result.rows)
   {
-    if (r.kind.find("progressive") == std::string::npos)
+    if (r.kind.find("progressive") == std::string::npos || !environmentSet(r))
     {
       continue;
     }
@@ -1090,6 +1644,7 @@ std::string benchMarkdown(const BenchResult& result, const std::string& plotFile
     }
   }
   md << modelsMarkdown(result, modelsPlotFile);
+  md << hdriMarkdown(result, hdriPlotFile);
   return md.str();
 }
 
@@ -1122,7 +1677,15 @@ void writeBenchOutputs(const BenchResult& result, const std::string& directory)
     writeText("bench_models.svg", figureToSvg(modelsFigure));
     writeImage((fs::path(directory) / "bench_models.png").string(), figureToImage(modelsFigure));
   }
-  writeText("bench.md", benchMarkdown(result, "bench.svg", models ? "bench_models.svg" : ""));
+  const bool hdri = find(result.rows, hdriRow);
+  if (hdri)
+  {
+    const Figure hdriFigure = hdriErrorAgainstTime(result);
+    writeText("bench_hdri.svg", figureToSvg(hdriFigure));
+    writeImage((fs::path(directory) / "bench_hdri.png").string(), figureToImage(hdriFigure));
+  }
+  writeText("bench.md", benchMarkdown(result, "bench.svg", models ? "bench_models.svg" : "",
+                                      hdri ? "bench_hdri.svg" : ""));
   std::ostringstream model;
   model << "// Fitted by: " << result.commandLine << "\n// {n_u, n_v, filtered, a, p}: relative "
         << "L2 = a N^-p\n";

@@ -23,12 +23,17 @@ struct BenchOptions
   std::string hdriDirectory;  // HDRIs of the full set; empty: the Blender studio lights
   std::string commandLine;    // as typed, for the report
   // Which families run: "as-env" (the environment Ashikhmin-Shirley set with its goals,
-  // counters and quality model), "lit", "leadr", "micro" (bench_models.h). Empty: all of them.
+  // counters and quality model), "lit", "leadr", "micro" (bench_models.h), "hdri" (issue 14:
+  // the default settings under the studio and the Blender HDRIs, with their goals). Empty:
+  // defaultBenchFamilies().
   std::vector<std::string> families;
 };
 
 // The families `aniso bench --models` accepts, in the order they run.
 const std::vector<std::string>& benchFamilies();
+// Those a run without --models takes: all but "hdri" (which runs only when named: it takes
+// about as long as the rest together).
+const std::vector<std::string>& defaultBenchFamilies();
 // The comma-separated LIST as families; throws aniso::Error "--models: reason" for an unknown or
 // repeated name or an empty list.
 std::vector<std::string> parseBenchFamilies(const std::string& list);
@@ -36,12 +41,16 @@ std::vector<std::string> parseBenchFamilies(const std::string& list);
 struct BenchRow
 {
   // "sweep" (one frame of N samples), "progressive" (frames accumulated), "vtk" (VTK's PBR);
-  // "default", "default-progressive", "default-vtk" for the default scene at 800x600.
+  // "default", "default-progressive", "default-vtk" for the default scene at 800x600; "hdri",
+  // "hdri-progressive" for the sphere under the HDRIs (issue 14) and "hdri-default-progressive"
+  // for the default scene under them.
   std::string kind;
   std::string mesh;
   std::string environment;
   AsLobe lobe;
-  std::string method;      // "exact", "exact+mis", "split-sum", "vtk-pbr"
+  // "exact", "exact+mis", "exact+sources", "exact+auto(sources)" / "exact+auto(off)" (auto as
+  // the environment resolved it), "split-sum", "vtk-pbr"
+  std::string method;
   std::string filtered;    // "on", "off", "-"
   std::string halfVectors; // "lut", "shader", "-"
   int samples = 0;         // per pixel and frame
@@ -65,7 +74,9 @@ struct BenchRow
   // "microstructure"; kind "lit", "leadr", "micro", or "baseline" for the environment frame
   // timed on their scenes.
   std::string model = "as-env";
-  std::string variant;   // lit: the lights; microstructure: structure, masking and shadowing
+  // lit: the lights; microstructure: structure, masking and shadowing; hdri: "sun" or "no sun"
+  // (whether the environment's analysis lists a sun)
+  std::string variant;
   int lights = 0;        // point and directional lights
   int grid = 0;          // LEADR: slope grid n (n^2 samples); microstructure: K (K^2 samples)
   double mipLevel = 0.0; // LEADR: mean mip level of the moments over the compared pixels
@@ -110,6 +121,7 @@ struct BenchResult
   std::vector<BenchRow> rows;
   std::vector<CounterStep> counters;
   std::vector<Goal> goals;
+  std::vector<Goal> hdriGoals; // issue 14's, from the "hdri" family
   std::vector<QualityFit> qualityFits;
   std::string renderer; // OpenGL renderer string
   std::string machine;  // CPU model and core count
@@ -127,16 +139,24 @@ BenchResult runBench(const BenchOptions& options, std::ostream& log);
 // The goals of the benchmark issue (item 3) from the rows: the best mode against the published
 // method at 256 samples, the interactive frame against VTK's, the time to converge to 1%.
 std::vector<Goal> evaluateGoals(const BenchResult& result);
+// The goals of issue 14 from the "hdri" rows: a still view under every environment converges to
+// 1% with the defaults; an interactive frame under a sun has at most twice its error under the
+// studio; equal-error speed-up of at least 10x over the published method; the default scene
+// reaches 1% within 2 s under every environment.
+std::vector<Goal> evaluateHdriGoals(const BenchResult& result);
 // a and p of relative L2 = a N^-p per lobe and filtering, least squares in log-log over the
 // sphere-under-the-studio rows of `exact` (LUT half vectors, lobe sampling) with N >= 4.
 std::vector<QualityFit> fitQuality(const std::vector<BenchRow>& rows);
 
-// bench.csv, bench.md, bench.svg, bench.png and quality_model.txt in DIRECTORY (created), and
-// bench_models.svg and bench_models.png when the run measured the other models.
+// bench.csv, bench.md, bench.svg, bench.png and quality_model.txt in DIRECTORY (created),
+// bench_models.svg and bench_models.png when the run measured the other models, and
+// bench_hdri.svg and bench_hdri.png when it measured the "hdri" family.
 void writeBenchOutputs(const BenchResult& result, const std::string& directory);
 
 std::string benchCsv(const BenchResult& result);
-// The report; the other models' section embeds MODELSPLOTFILE when it is not empty.
+// The report; the other models' section embeds MODELSPLOTFILE and the HDRIs' section
+// HDRIPLOTFILE when not empty.
 std::string benchMarkdown(const BenchResult& result, const std::string& plotFile,
-                          const std::string& modelsPlotFile = "");
+                          const std::string& modelsPlotFile = "",
+                          const std::string& hdriPlotFile = "");
 } // namespace aniso::bench

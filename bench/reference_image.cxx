@@ -95,6 +95,10 @@ std::string cacheKey(const std::vector<PixelSample>& geometry, int width, int he
   key << " f0 " << hex(model.f0.x) << " " << hex(model.f0.y) << " " << hex(model.f0.z) << " env "
       << environment.key() << " tol " << hex(options.relativeTolerance) << " "
       << hex(options.absoluteTolerance) << " max " << options.maxEvaluations;
+  if (dynamic_cast<const SunSkyEnvironment*>(&environment))
+  {
+    key << " sun-cone"; // the sun integrated over its own cone (integrateSpecularSunSky)
+  }
   return key.str();
 }
 
@@ -269,6 +273,7 @@ ReferenceImage computeReference(const std::vector<PixelSample>& geometry, int wi
   }
 
   const auto start = std::chrono::steady_clock::now();
+  // The sun-sky's disc is far smaller than the general rules resolve: its own cone.
   const auto* sunSky = dynamic_cast<const SunSkyEnvironment*>(&environment);
   image.pixels.resize(selected.size());
   std::vector<uint64_t> evaluations(selected.size(), 0);

@@ -247,6 +247,15 @@ void RenderSession::setEnvironment(std::shared_ptr<const Environment> environmen
   }
 }
 
+EnvironmentLighting& RenderSession::lighting()
+{
+  if (!impl_->lighting)
+  {
+    throw errorAbout("environment", "no environment set");
+  }
+  return *impl_->lighting;
+}
+
 void RenderSession::useMaterial(const MaterialSettings& settings)
 {
   Impl& s = *impl_;

@@ -79,6 +79,9 @@ public:
   // Bakes the cubemap (cubeSize) and the irradiance of ENVIRONMENT; VTK's own environment
   // texture is made when VTK's shading first needs it.
   void setEnvironment(std::shared_ptr<const Environment> environment, int cubeSize);
+  // The lighting of the last setEnvironment (its analysis, what `auto` sampling resolves to).
+  // Throws aniso::Error "environment: reason" before any.
+  EnvironmentLighting& lighting();
 
   void useMaterial(const MaterialSettings& settings);
   void useVtkPbr(const VtkPbrMaterial& material);
