@@ -2,9 +2,12 @@
 // Shared by the render tests: the analytic view rays of a rendered image (from the camera
 // placement, not from VTK's matrices or the shaders), error metrics over covered pixels, checks
 // for non-finite values, and diff images kept when a comparison fails.
+#include "core/env/environment.h"
+#include "core/env/sun_sky.h"
 #include "core/frame.h"
 #include "core/image/image.h"
 #include "core/reference/reference_integrator.h"
+#include "vtkpasses/mesh/BuiltinMeshes.h"
 #include "vtkpasses/render/OffscreenRenderer.h"
 #include "vtkpasses/render/ViewSettings.h"
 
@@ -17,12 +20,41 @@
 #include <glm/vec3.hpp>
 #include <gtest/gtest.h>
 #include <iostream>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
 namespace aniso::test
 {
+// The environment `--env builtin:sunsky` opens (a sun of 1e5 over a sky of 1).
+inline std::shared_ptr<SunSkyEnvironment> sunSkyEnvironment()
+{
+  return std::dynamic_pointer_cast<SunSkyEnvironment>(openEnvironment("builtin:sunsky"));
+}
+
+// The sampling tests' scene: the built-in sphere (256 x 128, fine enough that facets and
+// interpolated normals stay far below the lobes compared) under ENV, seen from the front at
+// SIZE x SIZE, F0 = 1, no diffuse, the exact method, one frame, no jitter, no background. Each
+// test sets its cube size, filtering, half vectors, samples and frames.
+inline RenderSettings sphereScene(std::shared_ptr<const Environment> env, const AsLobe& lobe,
+                                  int size)
+{
+  RenderSettings s;
+  s.surface = makeSphere(256, 128);
+  s.environment = std::move(env);
+  s.material.lobe = lobe;
+  s.material.f0 = glm::dvec3(1.0);
+  s.material.albedo = glm::dvec3(0.0);
+  s.material.method = SpecularMethod::Exact;
+  s.display.background = BackgroundMode::Transparent;
+  s.width = size;
+  s.height = size;
+  s.frames = 1;
+  s.jitter = false;
+  return s;
+}
+
 // Render tests need an X server (./test runs the suite under xvfb-run).
 inline bool haveDisplay()
 {

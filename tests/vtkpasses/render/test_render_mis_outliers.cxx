@@ -31,30 +31,15 @@ namespace aniso::test
 {
 namespace
 {
-std::shared_ptr<SunSkyEnvironment> sunSky()
-{
-  return std::dynamic_pointer_cast<SunSkyEnvironment>(openEnvironment("builtin:sunsky"));
-}
-
 RenderSettings misSettings(const AsLobe& lobe, int size, bool filtered, int frames)
 {
-  RenderSettings s;
-  s.surface = makeSphere(256, 128);
-  s.environment = sunSky();
+  RenderSettings s = sphereScene(sunSkyEnvironment(), lobe, size);
   s.cubeSize = 256; // the default, 1.3 grid texels per cube texel at a face's centre
-  s.material.lobe = lobe;
-  s.material.f0 = glm::dvec3(1.0);
-  s.material.albedo = glm::dvec3(0.0);
-  s.material.method = SpecularMethod::Exact;
   s.material.filtered = filtered;
   s.material.halfVectors = HalfVectorSource::Shader;
   s.material.samples = 16;
   s.material.environmentSampling = EnvironmentSampling::Mis;
-  s.display.background = BackgroundMode::Transparent;
-  s.width = size;
-  s.height = size;
   s.frames = frames;
-  s.jitter = false;
   return s;
 }
 
@@ -118,7 +103,7 @@ TEST(RenderMisOutliers, NoSinglePixelSpikesNextToTheSun)
 TEST(RenderMisOutliers, FilteredMisMatchesTheReference)
 {
   ANISO_REQUIRE_DISPLAY();
-  const auto env = sunSky();
+  const auto env = sunSkyEnvironment();
   ASSERT_TRUE(env);
   for (const AsLobe lobe : {AsLobe{10.0, 10.0}, AsLobe{1000.0, 100.0}})
   {

@@ -33,26 +33,16 @@ const char* const kCity = "/usr/share/blender/datafiles/studiolights/world/city.
 
 std::shared_ptr<SunSkyEnvironment> sunSky()
 {
-  return std::dynamic_pointer_cast<SunSkyEnvironment>(openEnvironment("builtin:sunsky"));
+  return sunSkyEnvironment();
 }
 
 RenderSettings sphereSettings(std::shared_ptr<const Environment> env, const AsLobe& lobe,
                               int samples, int frames)
 {
-  RenderSettings s;
-  s.surface = makeSphere(256, 128);
-  s.environment = std::move(env);
+  RenderSettings s = sphereScene(std::move(env), lobe, kSize);
   s.cubeSize = 256;
-  s.material.lobe = lobe;
-  s.material.f0 = glm::dvec3(1.0);
-  s.material.albedo = glm::dvec3(0.0);
-  s.material.method = SpecularMethod::Exact;
   s.material.samples = samples;
-  s.display.background = BackgroundMode::Transparent;
-  s.width = kSize;
-  s.height = kSize;
   s.frames = frames;
-  s.jitter = false;
   return s;
 }
 
