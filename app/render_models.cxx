@@ -2,6 +2,7 @@
 
 #include "app/render_surface_models.h"
 #include "core/models/models.h"
+#include "core/parameters/choices.h"
 #include "vtkpasses/render/LitModelMaterial.h"
 
 #include <memory>
@@ -44,7 +45,9 @@ MaterialInstaller litInstaller(LitModel model, const Arguments& a, const RenderS
                        makeSampleMaterial(a.text("--sample-material"), "--sample-material"))
                  : std::make_shared<const SvMaps>(uniformSvMaps(uniformTexel(
                        settings.material.lobe, settings.material.f0, settings.material.albedo)));
-  return litModelInstaller(lit);
+  // env-lights: the environment's sources as lights too (analysed when the renderer's lighting
+  // is made).
+  return litModelInstaller(lit, parseOnOff("env-lights", a.text("--env-lights")) == OnOff::On);
 }
 
 constexpr std::size_t kMaxCompared = 8;
@@ -223,8 +226,9 @@ std::string modelSummary(const Arguments& a)
   {
     return "model " + name;
   }
-  return "model " + name + ", " + std::to_string(lightsFromOptions(a).size()) +
-         " light(s), material " +
+  return "model " + name + ", " + std::to_string(lightsFromOptions(a).size()) + " light(s)" +
+         (a.text("--env-lights") == "on" ? " and the environment's sources" : "") +
+         ", material " +
          (a.has("--sample-material") ? a.text("--sample-material") : std::string("uniform"));
 }
 } // namespace aniso::cli
