@@ -42,7 +42,7 @@ const char* const kDeclared[] = {"env",          "env-rotation", "nu",       "nv
                                  "f0",           "albedo",       "method",   "filtered",
                                  "half-vectors", "samples",      "lut-size", "lut-samples",
                                  "cube-size",    "height-scale", "exposure", "tone-mapping",
-                                 "env-sampling", "env-lights"};
+                                 "env-sampling"};
 
 Option declared(const char* name)
 {

@@ -120,6 +120,14 @@ void addModelOptions(Command& command)
       "mesh, camera, lights and material: a comma-separated list of as-env and " +
       litModelNames();
   command.options.push_back(textOption("--compare", "M1,M2,...", compareHelp));
+  // The environment's sources as lights of the lit models and LEADR (a declared parameter, as the
+  // window's scene key).
+  Option environmentLights = parameterOption("env-lights");
+  for (std::string_view choice : environmentLights.spec.choices)
+  {
+    environmentLights.choices.emplace_back(choice);
+  }
+  command.options.push_back(environmentLights);
   addSurfaceModelOptions(command);
 }
 
