@@ -39,8 +39,7 @@ double sourceMeanCosine(const EnvAnalysis& analysis, const EnvSource& source)
   double weightedCos = 0.0;
   for (int y = y0; y <= y1; ++y)
   {
-    const double omega =
-        2.0 * kPi / w * (std::cos(kPi * y / h) - std::cos(kPi * (y + 1) / h));
+    const double omega = 2.0 * kPi / w * (std::cos(kPi * y / h) - std::cos(kPi * (y + 1) / h));
     for (int x = 0; x < w; ++x)
     {
       const double lum = luminance(excess.at(x, y, 0), excess.at(x, y, 1), excess.at(x, y, 2));
@@ -61,8 +60,8 @@ std::vector<Light> environmentSourceLights(const EnvAnalysis& analysis, double r
                                            const EnvLightOptions& options)
 {
   if (options.maxLights < 0)
-    throw errorAbout("env-lights", "maxLights must be >= 0, got " +
-                                       std::to_string(options.maxLights));
+    throw errorAbout("env-lights",
+                     "maxLights must be >= 0, got " + std::to_string(options.maxLights));
   if (!(options.minPowerShare >= 0.0 && options.minPowerShare <= 1.0))
   {
     std::ostringstream reason;

@@ -187,9 +187,8 @@ TEST(EnvLights, LitModelsUnderTheSunMatchTheDiscIntegral)
       aniso::environmentSourceLights(*sunSkyAnalysis(), kRotation, options);
   ASSERT_EQ(lights.size(), 1u);
   const glm::dvec3 sunWorld = rotateZ(kSunEnv, kRotation);
-  const aniso::Frame frame =
-      aniso::Frame::fromNormalTangent(glm::normalize(glm::dvec3(0.1, -0.2, 1.0)),
-                                      glm::dvec3(1.0, 0.3, 0.0));
+  const aniso::Frame frame = aniso::Frame::fromNormalTangent(
+      glm::normalize(glm::dvec3(0.1, -0.2, 1.0)), glm::dvec3(1.0, 0.3, 0.0));
   aniso::SvTexel texel;
   texel.alphaX = 0.15;
   texel.alphaY = 0.3;
@@ -201,13 +200,13 @@ TEST(EnvLights, LitModelsUnderTheSunMatchTheDiscIntegral)
   const aniso::AsMaterial as = aniso::toAshikhminShirley(texel);
   for (const glm::dvec3& view : {mirror, off})
   {
-    const glm::dvec3 wardLit = aniso::shadeLitModel(aniso::LitModel::Ward, texel, frame,
-                                                    glm::dvec3(0.0), view, lights);
+    const glm::dvec3 wardLit =
+        aniso::shadeLitModel(aniso::LitModel::Ward, texel, frame, glm::dvec3(0.0), view, lights);
     const glm::dvec3 wardRef = discIntegral(frame, view, sunWorld,
                                             [&](const glm::dvec3& v, const glm::dvec3& l)
                                             { return aniso::evalWard(ward, v, l); });
-    const glm::dvec3 asLit = aniso::shadeLitModel(aniso::LitModel::AshikhminShirley, texel,
-                                                  frame, glm::dvec3(0.0), view, lights);
+    const glm::dvec3 asLit = aniso::shadeLitModel(aniso::LitModel::AshikhminShirley, texel, frame,
+                                                  glm::dvec3(0.0), view, lights);
     const glm::dvec3 asRef = discIntegral(frame, view, sunWorld,
                                           [&](const glm::dvec3& v, const glm::dvec3& l)
                                           { return aniso::evalAshikhminShirley(as, v, l); });
@@ -222,8 +221,8 @@ TEST(EnvLights, LitModelsUnderTheSunMatchTheDiscIntegral)
                 100.0 * (asLit.x / asRef.x - 1.0));
   }
   // The highlight is where the sun's mirror direction says: far brighter than off it.
-  const glm::dvec3 atMirror = aniso::shadeLitModel(aniso::LitModel::Ward, texel, frame,
-                                                   glm::dvec3(0.0), mirror, lights);
+  const glm::dvec3 atMirror =
+      aniso::shadeLitModel(aniso::LitModel::Ward, texel, frame, glm::dvec3(0.0), mirror, lights);
   const glm::dvec3 farOff = glm::normalize(mirror + 0.6 * frame.t);
   const glm::dvec3 atOff =
       aniso::shadeLitModel(aniso::LitModel::Ward, texel, frame, glm::dvec3(0.0), farOff, lights);

@@ -88,8 +88,8 @@ TEST(RenderEnvLights, WardSphereLitByTheSunSkysSun)
   const std::shared_ptr<const EnvAnalysis> analysis = sharedEnvironmentAnalysis(*env);
   const std::vector<Light> lights = withEnvironmentLights({}, analysis.get(), kRotation);
   ASSERT_FALSE(lights.empty());
-  const glm::dvec3 sun = rotateZ(glm::dvec3(0.3, -0.6, 0.74) / glm::length(glm::dvec3(0.3, -0.6, 0.74)),
-                                 kRotation);
+  const glm::dvec3 sun =
+      rotateZ(glm::dvec3(0.3, -0.6, 0.74) / glm::length(glm::dvec3(0.3, -0.6, 0.74)), kRotation);
   EXPECT_LT(std::acos(std::min(1.0, glm::dot(lights.front().vector, sun))) / kDegree, 0.2);
 
   const CameraPlacement camera = placeCamera(ViewSettings{}, glm::dvec3(0.0), 1.0);
@@ -183,8 +183,8 @@ TEST(RenderEnvLights, LeadrCountsTheSunOnce)
       std::make_shared<const EquirectEnvironment>(analysis->residual, "test:sun-disc:residual");
 
   LeadrSettings leadr;
-  leadr.moments = std::make_shared<const LeadrMips>(
-      bakeLeadrFromHeight(randomWaveHeight(64, 0.3), 1.0));
+  leadr.moments =
+      std::make_shared<const LeadrMips>(bakeLeadrFromHeight(randomWaveHeight(64, 0.3), 1.0));
   leadr.surface.diffuse = glm::dvec3(0.4);
   leadr.surface.f0 = glm::dvec3(0.5);
   leadr.surface.baseAlphaX = leadr.surface.baseAlphaY = 0.3;
