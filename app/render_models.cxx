@@ -2,6 +2,7 @@
 
 #include "app/render_surface_models.h"
 #include "core/models/models.h"
+#include "core/parameters/choices.h"
 #include "vtkpasses/render/LitModelMaterial.h"
 
 #include <memory>
@@ -44,7 +45,9 @@ MaterialInstaller litInstaller(LitModel model, const Arguments& a, const RenderS
                        makeSampleMaterial(a.text("--sample-material"), "--sample-material"))
                  : std::make_shared<const SvMaps>(uniformSvMaps(uniformTexel(
                        settings.material.lobe, settings.material.f0, settings.material.albedo)));
-  return litModelInstaller(lit);
+  // env-lights: the environment's sources as lights too (analysed when the renderer's lighting
+  // is made).
+  return litModelInstaller(lit, parseOnOff("env-lights", a.text("--env-lights")) == OnOff::On);
 }
 
 constexpr std::size_t kMaxCompared = 8;
@@ -117,6 +120,14 @@ void addModelOptions(Command& command)
       "mesh, camera, lights and material: a comma-separated list of as-env and " +
       litModelNames();
   command.options.push_back(textOption("--compare", "M1,M2,...", compareHelp));
+  // The environment's sources as lights of the lit models and LEADR (a declared parameter, as the
+  // window's scene key).
+  Option environmentLights = parameterOption("env-lights");
+  for (std::string_view choice : environmentLights.spec.choices)
+  {
+    environmentLights.choices.emplace_back(choice);
+  }
+  command.options.push_back(environmentLights);
   addSurfaceModelOptions(command);
 }
 
@@ -223,8 +234,9 @@ std::string modelSummary(const Arguments& a)
   {
     return "model " + name;
   }
-  return "model " + name + ", " + std::to_string(lightsFromOptions(a).size()) +
-         " light(s), material " +
+  return "model " + name + ", " + std::to_string(lightsFromOptions(a).size()) + " light(s)" +
+         (a.text("--env-lights") == "on" ? " and the environment's sources" : "") +
+         ", material " +
          (a.has("--sample-material") ? a.text("--sample-material") : std::string("uniform"));
 }
 } // namespace aniso::cli

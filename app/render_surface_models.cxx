@@ -4,6 +4,8 @@
 #include "core/error.h"
 #include "core/leadr/leadr.h"
 #include "core/maps/map_files.h"
+#include "core/parameters/choices.h"
+#include "vtkpasses/render/EnvironmentLighting.h"
 #include "vtkpasses/render/SurfaceModelSettings.h"
 
 #include <memory>
@@ -133,6 +135,16 @@ bool applySurfaceModelOptions(const Arguments& a, RenderSettings& settings)
     // The structure turns with the map (a brushed disk with circular grooves).
     return a.has("--tpr") ? std::make_shared<const Image>(readTprMap(a.text("--tpr"), "--tpr"))
                           : nullptr;
+  };
+  // env-lights: LEADR's lights are the environment's sources too, baked here (offscreen) as the
+  // window's worker bakes them: the analysis, and the split when env-sampling resolves to
+  // sources (LEADR then reads the residual).
+  inputs.environmentLights = parseOnOff("env-lights", a.text("--env-lights")) == OnOff::On;
+  const EnvironmentSampling sampling = settings.material.environmentSampling;
+  inputs.prepareLighting = [sampling](EnvironmentLighting& lighting)
+  {
+    lighting.analysis();
+    lighting.prepare(sampling);
   };
   MaterialInstaller installer = surfaceModelInstaller(model, values, inputs);
   if (!installer)

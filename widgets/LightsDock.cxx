@@ -90,6 +90,12 @@ LightsDock::LightsDock(SceneEditor* editor, QWidget* parent)
   form->addRow(tr("Model"), model_);
   form->addRow(tr("Sample material"), sample_);
   layout->addLayout(form);
+  // The environment's sources as lights of the lit models and LEADR, beside the list's.
+  auto* shared = new ParameterPanel(editor_, body);
+  shared->setObjectName("lightsParameters");
+  shared->addParameter("env-lights");
+  connect(shared, &ParameterPanel::errorOccurred, this, &LightsDock::errorOccurred);
+  layout->addWidget(shared);
 
   // The declared settings of LEADR and the microstructure, shown while that model is chosen.
   QList<QWidget*> panels;

@@ -115,6 +115,15 @@ CompareWindow::CompareWindow(SceneModel* model, SceneView* view, QWidget* parent
             syncParts();
             updateMaterials();
           });
+  // A new lighting on screen: its environment's sources (env-lights).
+  connect(view_, &SceneView::lightingBusyChanged, this,
+          [this](bool busy)
+          {
+            if (!busy)
+            {
+              updateMaterials();
+            }
+          });
   resize(300 * columns, 300 * rows);
   refresh();
 }
@@ -228,7 +237,8 @@ void CompareWindow::updateMaterials()
     {
       if (view_->partDrawn(i))
       {
-        litSceneOf(*model_, view_->partParameters(i), parts[std::size_t(i)]);
+        litSceneOf(*model_, view_->partParameters(i), parts[std::size_t(i)],
+                   view_->lighting().get());
         LitModelMaterial::validate(parts[std::size_t(i)]);
       }
     }

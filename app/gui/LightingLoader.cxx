@@ -30,13 +30,19 @@ LightingLoader::~LightingLoader()
   pool_->waitForDone();
 }
 
+bool LightingLoader::environmentLightsOn() const
+{
+  return parseOnOff("env-lights", model_->text("env-lights")) == OnOff::On;
+}
+
 void LightingLoader::loadNow()
 {
   lighting_ = std::make_shared<EnvironmentLighting>(assets_->environment(model_->text("env")),
                                                     model_->integer("cube-size"));
   lighting_->setRotationDegrees(model_->real("env-rotation"));
   sampled_ = true;
-  if (!lighting_->prepared(parseEnvironmentSampling(model_->text("env-sampling"))))
+  if (!lighting_->prepared(parseEnvironmentSampling(model_->text("env-sampling"))) ||
+      (environmentLightsOn() && !lighting_->bakedAnalysis()))
   {
     // The analysis (or what the sampling needs) comes from the worker; the lobe alone until then.
     request();
@@ -67,6 +73,7 @@ void LightingLoader::startBake()
   const int id = request_;
   const int cubeSize = model_->integer("cube-size");
   const EnvironmentSampling sampling = parseEnvironmentSampling(model_->text("env-sampling"));
+  const bool analysed = environmentLightsOn();
   std::shared_ptr<const Environment> environment;
   try
   {
@@ -80,7 +87,7 @@ void LightingLoader::startBake()
   }
   const bool same = lighting_ && &lighting_->environment() == environment.get() &&
                     lighting_->cubeSize() == cubeSize;
-  if (same && lighting_->prepared(sampling))
+  if (same && lighting_->prepared(sampling) && (!analysed || lighting_->bakedAnalysis()))
   {
     // Back to what is shown (an undo, or a change reverted while a bake ran).
     baked(id, lighting_, sampled_, QString());
@@ -90,7 +97,7 @@ void LightingLoader::startBake()
   std::shared_ptr<EnvironmentLighting> base = same ? lighting_->copyBakes() : nullptr;
   inFlight_ = true;
   pool_->start(
-      [this, id, environment, cubeSize, sampling, base]
+      [this, id, environment, cubeSize, sampling, analysed, base]
       {
         std::shared_ptr<EnvironmentLighting> lighting = base;
         const QString message = failureOf(
@@ -103,6 +110,11 @@ void LightingLoader::startBake()
               // What the material's sampling needs (the analysis that resolves auto, the
               // distribution, the sources' split): never baked on the UI thread.
               lighting->prepare(sampling);
+              // The sources the lit models and LEADR take as lights (env-lights).
+              if (analysed)
+              {
+                lighting->analysis();
+              }
             },
             tr("cube-size: %1 is too large for the memory available").arg(cubeSize));
         // Delivered on the UI thread; dropped with the loader if it is gone by then.

@@ -43,7 +43,8 @@ public:
   // (until then the first frame drawn with one uploads its textures).
   void setContextReady() { contextReady_ = true; }
   // Bakes the model's environment at its cube size (with what its env-sampling needs: the
-  // analysis, the distribution or the sources' split) on the worker. Back to the lighting shown (an undo, a change reverted while a bake ran):
+  // analysis, the distribution or the sources' split; and the analysis with env-lights on) on
+  // the worker. Back to the lighting shown (an undo, a change reverted while a bake ran):
   // nothing is baked.
   void request();
 
@@ -66,6 +67,9 @@ signals:
 
 private:
   void startBake();
+  // env-lights is on: the analysis is baked with every lighting (its sources are the lit
+  // models' and LEADR's lights), whatever env-sampling needs.
+  bool environmentLightsOn() const;
   // LIGHTING's textures (SAMPLED: its distribution's too) into the window's context, drawing
   // nothing; false when that failed (reported).
   bool upload(EnvironmentLighting& lighting, bool sampled);

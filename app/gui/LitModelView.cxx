@@ -2,8 +2,10 @@
 
 #include "app/gui/SceneView.h"
 #include "core/error.h"
+#include "core/parameters/choices.h"
 #include "scene/SceneShading.h"
 #include "vtkpasses/render/DrawingFrame.h"
+#include "vtkpasses/render/EnvironmentLighting.h"
 #include "vtkpasses/render/LitModelMaterial.h"
 
 #include <algorithm>
@@ -67,9 +69,14 @@ void litSceneOf(const SceneModel& model, LitModelSettings& settings)
 }
 
 void litSceneOf(const SceneModel& model, const ParameterSet& parameters,
-                LitModelSettings& settings)
+                LitModelSettings& settings, const EnvironmentLighting* lighting)
 {
   settings.lights = parseLightList(model.text("lights"), "lights");
+  if (lighting && parseOnOff("env-lights", model.text("env-lights")) == OnOff::On)
+  {
+    settings.lights = withEnvironmentLights(settings.lights, lighting->bakedAnalysis().get(),
+                                            model.real("env-rotation"));
+  }
   const std::string& sample = model.text("sample-material");
   if (sample == kUniformSampleMaterial)
   {
@@ -127,6 +134,15 @@ LitModelView::LitModelView(SceneModel* model, SceneView* view, QObject* parent)
           });
   // The stand-ins of large surfaces while things move, the surfaces once still, as the view.
   connect(view_, &SceneView::interactionChanged, this, &LitModelView::followSurfaces);
+  // A new lighting on screen: its environment's sources (env-lights).
+  connect(view_, &SceneView::lightingBusyChanged, this,
+          [this](bool busy)
+          {
+            if (!busy && active_ && view_->lighting().get() != lighting_)
+            {
+              update();
+            }
+          });
   update();
 }
 
@@ -211,7 +227,7 @@ void LitModelView::update()
         continue;
       }
       LitModelSettings settings = scene;
-      litSceneOf(*model_, view_->partParameters(i), settings);
+      litSceneOf(*model_, view_->partParameters(i), settings, view_->lighting().get());
       LitModelMaterial::validate(settings);
       drawn.emplace_back(i, std::move(settings));
     }
@@ -300,6 +316,7 @@ void LitModelView::update()
     view_->setPartsShown(!lit);
   }
   active_ = lit;
+  lighting_ = view_->lighting().get();
   view_->requestRender();
 }
 } // namespace aniso

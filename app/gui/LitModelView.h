@@ -21,6 +21,7 @@ class vtkRenderer;
 
 namespace aniso
 {
+class EnvironmentLighting;
 class LitModelMaterial;
 class SceneView;
 struct LitModelSettings;
@@ -36,9 +37,12 @@ vtkActor* firstActorOf(vtkRenderer* renderer);
 void litSceneOf(const SceneModel& model, LitModelSettings& settings);
 // The same for a part drawn with PARAMETERS (SceneModel::partParameters): the scene's lights, and
 // the uniform material of the part's n_u, n_v, F0 and albedo (or the scene's sample material when
-// it chooses one). Throws as litSettingsOf.
+// it chooses one). With env-lights on, the lights are followed by the sources of LIGHTING's
+// analysis (the lighting on screen) turned by env-rotation, up to LitModelMaterial::kMaxLights in
+// all (core/lights/env_lights.h), when it has its analysis baked (LightingLoader bakes it on its
+// worker; never made here): none until then. Throws as litSettingsOf.
 void litSceneOf(const SceneModel& model, const ParameterSet& parameters,
-                LitModelSettings& settings);
+                LitModelSettings& settings, const EnvironmentLighting* lighting = nullptr);
 
 class LitModelView : public QObject
 {
@@ -72,6 +76,7 @@ private:
   SceneView* view_;
   vtkRenderer* renderer_;
   bool active_ = false;
+  const EnvironmentLighting* lighting_ = nullptr; // whose sources the lights hold
   std::vector<std::unique_ptr<Part>> parts_; // parallel to the view's parts
 };
 } // namespace aniso

@@ -388,6 +388,12 @@ void SceneView::modelChanged(const QString& qkey)
       // material keeps sampling only its lobe.
       lightingLoader_->request();
     }
+    else if (key == "env-lights" && model_->text("env-lights") == "on" && lighting() &&
+             !lighting()->bakedAnalysis())
+    {
+      // The sources of the lit models and LEADR come with the analysis, baked on the worker.
+      lightingLoader_->request();
+    }
     if (!keepsFrameCost(key))
     {
       planner_.forgetCosts();

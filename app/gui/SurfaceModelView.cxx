@@ -5,6 +5,7 @@
 #include "app/gui/SceneView.h"
 #include "core/error.h"
 #include "core/leadr/leadr.h"
+#include "core/parameters/choices.h"
 #include "scene/SceneShading.h"
 #include "vtkpasses/render/DrawingFrame.h"
 #include "vtkpasses/render/SurfaceModelSettings.h"
@@ -45,6 +46,8 @@ MaterialInstaller surfaceInstaller(const SceneModel& model, const ParameterSet& 
   inputs.f0 = parameters.color("f0");
   inputs.albedo = parameters.color("albedo");
   inputs.lights = [&model] { return parseLightList(model.text("lights"), "lights"); };
+  // The sources of the lighting on screen, when its worker baked them (LightingLoader).
+  inputs.environmentLights = parseOnOff("env-lights", model.text("env-lights")) == OnOff::On;
   // As `aniso render --model leadr` without a map: the built-in relief.
   inputs.leadrMoments = [&parameters]
   { return leadrMoments(parameters.real("leadr-scale")); };

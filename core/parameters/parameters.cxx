@@ -193,8 +193,10 @@ std::vector<ParameterSpec> declare()
                 text("env", "Environment", "builtin:studio",
                      "environment: an equirectangular HDR/EXR file, builtin:studio, builtin:white "
                      "or builtin:sunsky")),
-      number("env-rotation", "Rotation", T::Real, 0.0, -180.0, 180.0, 1.0, S::Linear, "deg",
-             "rotation of the environment about the world Z axis"),
+      // The lit models' lights from the environment's sources turn with it.
+      affecting(A::LitModels,
+                number("env-rotation", "Rotation", T::Real, 0.0, -180.0, 180.0, 1.0, S::Linear,
+                       "deg", "rotation of the environment about the world Z axis")),
       affecting(A::Display, number("exposure", "Exposure", T::Real, 0.0, -16.0, 16.0, 0.1,
                                    S::Linear, "EV", "exposure applied before tone mapping")),
       affecting(A::FrameCost, powerOfTwo(number("cube-size", "Cube size", T::Integer, 256.0, 1.0,
@@ -220,6 +222,14 @@ std::vector<ParameterSpec> declare()
                        "otherwise; off: lobe samples only; mis: also sample the whole "
                        "environment by its luminance (one-sample MIS); sources: split the "
                        "sources off, sample them and the smooth rest separately")),
+      // The environment's analysis' sources (core/lights/env_lights.h) as directional lights of
+      // the lit models and LEADR (which then reads the residual: the sources are not counted
+      // twice) beside the scene's own lights.
+      affecting(A::FrameCost | A::LitModels | A::SurfaceModels,
+                choice("env-lights", "Environment lights", {OnOff::On, OnOff::Off}, OnOff::On,
+                       "light the lit models and LEADR by the environment's sun, lamps and "
+                       "windows too (its analysis' sources as directional lights, beside the "
+                       "scene's lights, up to 8 in all)")),
       // The LUT is the default: equally accurate, and 1.7x faster than computing the half
       // vectors at 64 samples on llvmpipe (docs/BENCHMARKS.md, "Frame time").
       affecting(A::Variant | A::FrameCost,

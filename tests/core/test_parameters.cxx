@@ -262,12 +262,15 @@ TEST(Parameters, RolesAreTheListedOnes)
                                 "samples",      "lut-size",     "lut-samples",  "target-samples",
                                 "env-rotation", "height-scale", "quality-mode", "error-target",
                                 "exposure",     "tone-mapping", "background",   "background-color"};
-  const Names litModels = {"nu",       "nv",           "f0",       "albedo",
-                           "tangents", "cad-deflection", "cad-angle"};
-  const Names surfaceModels = {"f0", "albedo", "tangents", "cad-deflection", "cad-angle"};
+  // env-rotation turns the environment's sources, env-lights adds them (core/lights/env_lights.h).
+  const Names litModels = {"nu",        "nv",         "f0",           "albedo",
+                           "tangents",  "cad-deflection", "cad-angle", "env-rotation",
+                           "env-lights"};
+  const Names surfaceModels = {"f0",        "albedo",    "tangents",
+                               "cad-deflection", "cad-angle", "env-lights"};
   // The tessellation of CAD files: their parts are read again.
   const Names meshes = {"cad-deflection", "cad-angle"};
-  const Names none = {"env-rotation", "target-samples", "quality-mode", "error-target"};
+  const Names none = {"target-samples", "quality-mode", "error-target"};
 
   for (const ParameterSpec& spec : aniso::parameterSpecs())
   {
@@ -336,6 +339,7 @@ TEST(Parameters, ChoicesParseToDistinctEnumsAndBack)
   expectEnumChoices<OnOff>(covered, "filtered", onOff("filtered"), {"on", "off"}, "on");
   expectEnumChoices<EnvironmentSampling>(covered, "env-sampling", parseEnvironmentSampling,
                                          {"auto", "off", "mis", "sources"}, "auto");
+  expectEnumChoices<OnOff>(covered, "env-lights", onOff("env-lights"), {"on", "off"}, "on");
   expectEnumChoices<HalfVectorSource>(covered, "half-vectors", parseHalfVectorSource,
                                       {"shader", "lut"}, "lut");
   expectEnumChoices<QualityMode>(covered, "quality-mode", parseQualityMode, {"samples", "error"},

@@ -10,6 +10,24 @@
 
 namespace aniso
 {
+namespace
+{
+// ENV's radiance SH9 times the cosine-lobe convolution factors of bands 0, 1, 2 (Ramamoorthi
+// and Hanrahan): irradiance coefficients.
+std::array<glm::vec3, 9> irradianceSh9(const Environment& env)
+{
+  const Sh9 radiance = projectSh9(env);
+  const double bandFactor[3] = {M_PI, 2.0 * M_PI / 3.0, M_PI / 4.0};
+  std::array<glm::vec3, 9> irradiance{};
+  for (int i = 0; i < 9; ++i)
+  {
+    const int band = i == 0 ? 0 : (i < 4 ? 1 : 2);
+    irradiance[i] = glm::vec3(radiance[i] * bandFactor[band]);
+  }
+  return irradiance;
+}
+} // namespace
+
 EnvironmentLighting::EnvironmentLighting(std::shared_ptr<const Environment> environment,
                                          int cubeSize)
     : environment_(std::move(environment))
@@ -21,14 +39,7 @@ EnvironmentLighting::EnvironmentLighting(std::shared_ptr<const Environment> envi
   cubemap_ = buildCubemap(*environment_, cubeSize);
   // Projected from the environment itself rather than the cubemap: the diffuse term then does
   // not depend on the cube resolution.
-  const Sh9 radiance = projectSh9(*environment_);
-  // Cosine-lobe convolution factors of bands 0, 1, 2 (Ramamoorthi and Hanrahan).
-  const double bandFactor[3] = {M_PI, 2.0 * M_PI / 3.0, M_PI / 4.0};
-  for (int i = 0; i < 9; ++i)
-  {
-    const int band = i == 0 ? 0 : (i < 4 ? 1 : 2);
-    irradiance_[i] = glm::vec3(radiance[i] * bandFactor[band]);
-  }
+  irradiance_ = irradianceSh9(*environment_);
 }
 
 EnvironmentLighting::~EnvironmentLighting() = default;
@@ -280,6 +291,7 @@ const EnvironmentLighting::SourceSplit& EnvironmentLighting::sourceSplit()
     // texel means hold every source's power.
     const EquirectEnvironment residual(analysis_->residual, analysis_->key + ":residual");
     split->residualCube = buildCubemap(residual, cubemap_.size);
+    split->residualIrradiance = irradianceSh9(residual);
     split->distribution = std::make_shared<const EnvironmentDistribution>(
         luminanceOf(analysis_->excess), 0.0, analysis_->key + ":excess");
     split_ = std::move(split);

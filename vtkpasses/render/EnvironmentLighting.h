@@ -82,6 +82,9 @@ public:
   // The environment's analysis (core/env/env_sources.h, shared through
   // sharedEnvironmentAnalysis), made on first use.
   const EnvAnalysis& analysis();
+  // The analysis if it was made (by analysis(), prepare or a copy's bakes), else null: what the
+  // UI thread reads, never baking.
+  const std::shared_ptr<const EnvAnalysis>& bakedAnalysis() const { return analysis_; }
   // What a material asking for REQUESTED draws with: Auto is Sources when the analysis finds
   // concentrated sources and Off otherwise, or when the analysis fails (it makes the analysis);
   // the others stay.
@@ -105,6 +108,9 @@ public:
   {
     std::shared_ptr<const EnvAnalysis> analysis;
     Cubemap residualCube;
+    // The residual's irradiance SH9 (as irradianceCoefficients): the diffuse of a material whose
+    // lights are the sources (LEADR with env-lights, core/lights/env_lights.h).
+    std::array<glm::vec3, 9> residualIrradiance{};
     std::shared_ptr<const EnvironmentDistribution> distribution;
   };
   const SourceSplit& sourceSplit();

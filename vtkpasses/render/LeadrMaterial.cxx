@@ -2,6 +2,7 @@
 
 #include "aniso_shaders.h"
 #include "core/error.h"
+#include "core/lights/env_lights.h"
 #include "vtkpasses/render/EnvironmentLighting.h"
 #include "vtkpasses/render/RendererMatrices.h"
 
@@ -136,6 +137,19 @@ LeadrShadingMaterial::LeadrShadingMaterial(std::shared_ptr<EnvironmentLighting> 
     : SurfaceModelMaterial(std::move(lighting), "LEADR material", std::move(settings)),
       textures_(std::make_unique<Textures>())
 {
+  const LeadrSettings& s = this->settings();
+  const std::shared_ptr<const EnvAnalysis>& analysis = this->lighting().bakedAnalysis();
+  // Only what is baked: the window's worker bakes the analysis and the split
+  // (LightingLoader), the command line before it installs the material.
+  if (s.environmentLights && analysis &&
+      (!s.environment || this->lighting().prepared(EnvironmentSampling::Sources)))
+  {
+    EnvLightOptions options;
+    options.maxLights = kMaxShaderLights - int(s.lights.size());
+    environmentLights_ = environmentSourceLights(*analysis, 0.0, options);
+    setEnvironmentLights(environmentLights_);
+    readsResidual_ = s.environment && !environmentLights_.empty();
+  }
 }
 
 LeadrShadingMaterial::~LeadrShadingMaterial() = default;
@@ -209,7 +223,10 @@ void LeadrShadingMaterial::setModelUniforms(vtkShaderProgram* program,
   // Bound even when unused: a cube sampler left on a unit that holds a 2D texture fails the draw.
   {
     window->GetState()->vtkglEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS);
-    bindTexture(program, "leadrEnvironment", lighting().cubeTexture(window));
+    // With the sources as lights, the rest: the residual cube and its SH9.
+    bindTexture(program, "leadrEnvironment",
+                readsResidual_ ? lighting().residualCubeTexture(window)
+                               : lighting().cubeTexture(window));
     setUniformMatrix(program, "leadrWorldToEnvironment", lighting().worldToEnvironment());
     const double cube = lighting().cubeSize();
     program->SetUniformf("leadrLog2TexelSolidAngle",
@@ -217,7 +234,9 @@ void LeadrShadingMaterial::setModelUniforms(vtkShaderProgram* program,
     program->SetUniformf("leadrMaxLod", float(lighting().mipLevels() - 1));
     program->SetUniform3fv(
         "leadrIrradianceSH", 9,
-        reinterpret_cast<const float(*)[3]>(lighting().irradianceCoefficients().data()));
+        reinterpret_cast<const float(*)[3]>(
+            readsResidual_ ? lighting().sourceSplit().residualIrradiance.data()
+                           : lighting().irradianceCoefficients().data()));
   }
 }
 } // namespace aniso

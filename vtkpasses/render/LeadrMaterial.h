@@ -30,6 +30,13 @@ struct LeadrSettings
   // normal map gives), so the spread of the fine normals is lost.
   bool plainNormals = false;
   std::vector<Light> lights;
+  // The environment's sources (core/lights/env_lights.h) as lights too, up to kMaxShaderLights
+  // with `lights`, when the lighting has them baked: its analysis, and with `environment` its
+  // sources' split, whose residual cube and residual SH9 the material then reads in place of the
+  // whole environment's, so a source is counted once (as a light), not also in the cube. Without
+  // the split (env-sampling off or mis, or auto on an environment that is not concentrated) the
+  // whole cube is read and no source is added.
+  bool environmentLights = false;
 };
 
 // installer(settings) gives RenderSettings::installMaterial (SurfaceModelMaterial).
@@ -42,6 +49,11 @@ public:
 
   static void validate(const LeadrSettings& settings);
 
+  // The environment's sources drawn as lights (environment coordinates), and whether the
+  // residual is read: what environmentLights found in the lighting when the material was made.
+  const std::vector<Light>& environmentLights() const { return environmentLights_; }
+  bool readsResidual() const { return readsResidual_; }
+
 protected:
   std::string fragmentDeclarations() const override;
   std::string fragmentImplementation() const override;
@@ -50,6 +62,8 @@ protected:
 private:
   class Textures;
   std::unique_ptr<Textures> textures_;
+  std::vector<Light> environmentLights_;
+  bool readsResidual_ = false;
 };
 
 // The mip level LEADR reads for a pixel whose texture coordinates change by dx and dy to the

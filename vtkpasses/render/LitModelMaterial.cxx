@@ -2,7 +2,9 @@
 
 #include "aniso_shaders.h"
 #include "core/error.h"
+#include "core/lights/env_lights.h"
 #include "vtkpasses/render/DrawingFrame.h"
+#include "vtkpasses/render/EnvironmentLighting.h"
 #include "vtkpasses/render/MaterialShaderSource.h"
 #include "vtkpasses/render/ShaderHook.h"
 #include "vtkpasses/render/TextureUpload.h"
@@ -214,6 +216,42 @@ MaterialInstaller litModelInstaller(const LitModelSettings& settings)
                     const std::shared_ptr<EnvironmentLighting>&) -> std::shared_ptr<void>
   {
     auto material = std::make_shared<LitModelMaterial>(settings);
+    material->apply(actor, renderer);
+    return material;
+  };
+}
+
+std::vector<Light> withEnvironmentLights(const std::vector<Light>& lights,
+                                         const EnvAnalysis* analysis, double rotationDegrees)
+{
+  std::vector<Light> all = lights;
+  if (analysis && int(all.size()) < LitModelMaterial::kMaxLights)
+  {
+    EnvLightOptions options;
+    options.maxLights = LitModelMaterial::kMaxLights - int(all.size());
+    const std::vector<Light> sources = environmentSourceLights(*analysis, rotationDegrees, options);
+    all.insert(all.end(), sources.begin(), sources.end());
+  }
+  return all;
+}
+
+MaterialInstaller litModelInstaller(const LitModelSettings& settings, bool environmentLights)
+{
+  if (!environmentLights)
+  {
+    return litModelInstaller(settings);
+  }
+  LitModelMaterial::validate(settings);
+  return [settings](vtkActor* actor, vtkRenderer* renderer,
+                    const std::shared_ptr<EnvironmentLighting>& lighting) -> std::shared_ptr<void>
+  {
+    LitModelSettings lit = settings;
+    if (lighting)
+    {
+      lit.lights =
+          withEnvironmentLights(lit.lights, &lighting->analysis(), lighting->rotationDegrees());
+    }
+    auto material = std::make_shared<LitModelMaterial>(lit);
     material->apply(actor, renderer);
     return material;
   };

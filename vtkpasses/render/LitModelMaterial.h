@@ -7,6 +7,7 @@
 // mesh's arrays ("Normals", "Tangents", "TCoords") choose the compiled variant. Each pixel
 // renormalises the interpolated vectors and builds its frame as core/brdf/shading_frame.h does,
 // then shades as core/models/models.h's shadeLitModel does on the CPU.
+#include "core/env/env_sources.h"
 #include "core/lights/light.h"
 #include "core/models/models.h"
 #include "core/models/sv_material.h"
@@ -79,4 +80,13 @@ private:
 // For RenderSettings::installMaterial: renders SETTINGS' model instead of the environment
 // material (validated here, so a bad setting fails before any window opens).
 MaterialInstaller litModelInstaller(const LitModelSettings& settings);
+// The same, ENVIRONMENTLIGHTS (env-lights): the settings' lights and the sources of the
+// renderer's lighting (its analysis, made now when not yet made: offscreen) as directional
+// lights turned by the lighting's rotation, up to kMaxLights in all
+// (core/lights/env_lights.h).
+MaterialInstaller litModelInstaller(const LitModelSettings& settings, bool environmentLights);
+// SETTINGS' lights followed by the sources of ANALYSIS turned by ROTATIONDEGREES, up to
+// LitModelMaterial::kMaxLights in all (none when ANALYSIS is null).
+std::vector<Light> withEnvironmentLights(const std::vector<Light>& lights,
+                                         const EnvAnalysis* analysis, double rotationDegrees);
 } // namespace aniso

@@ -56,7 +56,22 @@ MaterialInstaller surfaceModelInstaller(std::string_view model, const DeclaredVa
     leadr.surface.f0 = inputs.f0;
     leadr.surface.diffuse = inputs.albedo;
     leadr.lights = inputs.lights();
-    return LeadrShadingMaterial::installer(leadr);
+    leadr.environmentLights = inputs.environmentLights;
+    MaterialInstaller install = LeadrShadingMaterial::installer(leadr);
+    if (!inputs.prepareLighting || !leadr.environmentLights)
+    {
+      return install;
+    }
+    return [install, prepare = inputs.prepareLighting](
+               vtkActor* actor, vtkRenderer* renderer,
+               const std::shared_ptr<EnvironmentLighting>& lighting)
+    {
+      if (lighting)
+      {
+        prepare(*lighting);
+      }
+      return install(actor, renderer, lighting);
+    };
   }
   if (model == "microstructure")
   {

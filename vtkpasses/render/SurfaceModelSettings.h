@@ -18,6 +18,8 @@
 
 namespace aniso
 {
+class EnvironmentLighting;
+
 // The value of a declared parameter by its key: an option of the command line or a scene key.
 using DeclaredValues = std::function<const ParameterValue&(std::string_view key)>;
 
@@ -30,6 +32,12 @@ struct SurfaceModelInputs
   std::function<std::vector<Light>()> lights;
   std::function<std::shared_ptr<const LeadrMips>()> leadrMoments;
   std::function<std::shared_ptr<const Image>()> tprMap; // null: the structure does not turn
+  // env-lights: LEADR adds the environment's sources as lights (LeadrSettings::
+  // environmentLights) when its lighting has them baked.
+  bool environmentLights = false;
+  // Called with the lighting before LEADR's material is made, to bake what environmentLights
+  // reads (the command line; the window's worker has baked it): empty = nothing baked here.
+  std::function<void(EnvironmentLighting&)> prepareLighting;
 };
 
 // The material of MODEL "leadr" or "microstructure" (for RenderSettings::installMaterial): the

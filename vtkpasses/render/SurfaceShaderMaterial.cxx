@@ -3,9 +3,12 @@
 #include "aniso_shaders.h"
 #include "core/error.h"
 #include "vtkpasses/render/DrawingFrame.h"
+#include "vtkpasses/render/EnvironmentLighting.h"
 #include "vtkpasses/render/ShaderHook.h"
 
 #include <glm/geometric.hpp>
+#include <glm/mat3x3.hpp>
+#include <glm/matrix.hpp>
 #include <vtkActor.h>
 #include <vtkOpenGLPolyDataMapper.h>
 #include <vtkOpenGLRenderWindow.h>
@@ -37,6 +40,7 @@ class SurfaceShaderMaterial::Impl
 public:
   std::string name;
   std::vector<Light> lights;
+  std::vector<Light> environmentLights; // directional, environment coordinates
   SurfaceShaderMaterial* owner = nullptr;
   ShaderHook hook;
 
@@ -78,7 +82,18 @@ public:
     const DrawingFrame drawing = drawingFrame(hook.actor());
     std::vector<float> vectors;     // 4 per light
     std::vector<float> intensities; // 3 per light
-    for (const Light& given : lights)
+    std::vector<Light> drawn = lights;
+    if (!environmentLights.empty())
+    {
+      // R_z(+angle): the inverse of the lighting's world-to-environment rotation.
+      const glm::dmat3 toWorld = glm::transpose(owner->lighting().worldToEnvironment());
+      for (Light light : environmentLights)
+      {
+        light.vector = toWorld * light.vector;
+        drawn.push_back(light);
+      }
+    }
+    for (const Light& given : drawn)
     {
       const Light light = drawing.lightToDrawing(given);
       const bool point = light.type == LightType::Point;
@@ -87,7 +102,7 @@ public:
       intensities.insert(intensities.end(), {float(light.intensity.x), float(light.intensity.y),
                                              float(light.intensity.z)});
     }
-    const int count = static_cast<int>(lights.size());
+    const int count = static_cast<int>(drawn.size());
     program->SetUniformi("leadrLightCount", count);
     if (count > 0)
     {
@@ -137,6 +152,22 @@ void SurfaceShaderMaterial::setLights(const std::vector<Light>& lights)
 {
   validateShaderLights(lights);
   impl_->lights = lights;
+  changed();
+}
+
+void SurfaceShaderMaterial::setEnvironmentLights(const std::vector<Light>& lights)
+{
+  std::vector<Light> all = impl_->lights;
+  for (const Light& light : lights)
+  {
+    if (light.type != LightType::Directional)
+    {
+      throw errorAbout("light", "an environment light is directional");
+    }
+    all.push_back(light);
+  }
+  validateShaderLights(all);
+  impl_->environmentLights = lights;
   changed();
 }
 

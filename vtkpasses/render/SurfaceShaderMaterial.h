@@ -52,6 +52,11 @@ protected:
   virtual std::string fragmentImplementation() const = 0;
   virtual void setModelUniforms(vtkShaderProgram* program, vtkOpenGLRenderWindow* window) = 0;
   void setLights(const std::vector<Light>& lights);
+  // Directional lights in environment coordinates (an environment's sources,
+  // core/lights/env_lights.h, at rotation 0), drawn after the lights of setLights turned as the
+  // lighting is turned at each draw (world = environment-to-world of lighting()); together at
+  // most kMaxShaderLights (aniso::Error "light: ..." otherwise).
+  void setEnvironmentLights(const std::vector<Light>& lights);
   EnvironmentLighting& lighting() const { return *lighting_; }
   vtkRenderer* renderer() const;
   // Activates TEXTURE for the coming draw only (ShaderHook::bindTexture).

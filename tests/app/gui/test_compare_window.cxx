@@ -1,7 +1,9 @@
 // The shading model in the window (needs an X server: run under Xvfb, serially). Checks: a lit
-// model replaces the environment material on screen and as-env brings it back; with no light a
-// lit model reflects nothing (the sum over lights is empty), so the mesh is as black as a black
-// background, while a light from the camera makes it visible; the comparison view has one viewport
+// model replaces the environment material on screen and as-env brings it back; with no light
+// and env-lights off a lit model reflects nothing (the sum over lights is empty), so the mesh is
+// as black as a black background, while env-lights on (the environment's sources as lights,
+// from the analysis the view's worker baked) or a light from the camera makes it visible; the
+// comparison view has one viewport
 // per lit model of the registry, all drawing the view's mesh through one camera, each showing
 // the lit mesh at its centre. The surface models (LEADR, microstructure) replace the scene actor
 // as well.
@@ -10,6 +12,8 @@
 #include "app/gui/MainWindow.h"
 #include "app/gui/SceneView.h"
 #include "core/models/models.h"
+#include "vtkpasses/render/EnvironmentLighting.h"
+#include "vtkpasses/render/LitModelMaterial.h"
 #include "widgets/LightsDock.h"
 
 #include <QComboBox>
@@ -41,6 +45,23 @@ int centreBrightness(vtkRenderWindow* window, const double viewport[4])
   const int cy = int((viewport[1] + viewport[3]) * 0.5 * size[1]);
   vtkNew<vtkUnsignedCharArray> pixels;
   window->GetRGBACharPixelData(cx - 3, cy - 3, cx + 3, cy + 3, 0, pixels);
+  int peak = 0;
+  for (vtkIdType i = 0; i < pixels->GetNumberOfTuples(); ++i)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      peak = std::max(peak, int(pixels->GetComponent(i, c)));
+    }
+  }
+  return peak;
+}
+
+// The brightest channel of any pixel of the window.
+int peakBrightness(vtkRenderWindow* window)
+{
+  const int* size = window->GetSize();
+  vtkNew<vtkUnsignedCharArray> pixels;
+  window->GetRGBACharPixelData(0, 0, size[0] - 1, size[1] - 1, 0, pixels);
   int peak = 0;
   for (vtkIdType i = 0; i < pixels->GetNumberOfTuples(); ++i)
   {
@@ -96,11 +117,28 @@ private slots:
 
     window.editor()->edit("model", textValue("banks"));
     window.editor()->edit("lights", textValue("none"));
+    window.editor()->edit("env-lights", textValue("off"));
     QVERIFY(!sceneActor->GetVisibility());
     QTRY_VERIFY_WITH_TIMEOUT(view->converged(), 60000);
     const double whole[4] = {0.0, 0.0, 1.0, 1.0};
     vtkRenderWindow* rw = window.vtkWidget()->renderWindow();
     QCOMPARE(centreBrightness(rw, whole), 0);
+    QCOMPARE(peakBrightness(rw), 0);
+
+    // With env-lights, the environment's sources (the studio's soft boxes, from its analysis,
+    // baked on the view's worker) light the lit model though the scene has no light.
+    window.editor()->edit("env-lights", textValue("on"));
+    QTRY_VERIFY_WITH_TIMEOUT(view->converged() && !view->lightingBusy(), 60000);
+    QVERIFY(view->lighting()->bakedAnalysis());
+    QVERIFY(!view->lighting()->bakedAnalysis()->sources.empty());
+    QVERIFY(window.litView()->partMaterial(0));
+    QCOMPARE(window.litView()->partMaterial(0)->settings().lights.size(),
+             std::min<std::size_t>(view->lighting()->bakedAnalysis()->sources.size(),
+                                   aniso::LitModelMaterial::kMaxLights));
+    rw->Render();
+    QTRY_VERIFY_WITH_TIMEOUT(peakBrightness(rw) > 20, 60000);
+    window.editor()->edit("env-lights", textValue("off"));
+    QCOMPARE(window.litView()->partMaterial(0)->settings().lights.size(), std::size_t(0));
 
     window.editor()->edit("lights", textValue(headLight(view->renderer())));
     QTRY_VERIFY_WITH_TIMEOUT(view->converged(), 60000);

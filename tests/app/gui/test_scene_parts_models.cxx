@@ -152,10 +152,13 @@ private slots:
     // Frames of the material's samples whatever they cost: the same frames every run, so a part
     // whose material did not change has the same pixels after another part's edit.
     window.view()->setFrameBudgetMs(0);
+    // The scene's light alone (no environment source as a light, env-lights): the parts'
+    // colours, not the studio's soft boxes, decide the pixels.
     window.model()->setValues({{"samples", numberValue(1.0)},
                                {"target-samples", numberValue(1.0)},
                                {"background", textValue("color")},
-                               {"background-color", aniso::colorValue(0.0, 0.0, 0.0)}});
+                               {"background-color", aniso::colorValue(0.0, 0.0, 0.0)},
+                               {"env-lights", textValue("off")}});
     window.resize(900, 820);
     window.show();
     QVERIFY(QTest::qWaitForWindowExposed(&window));
