@@ -24,6 +24,7 @@
 #include <optional>
 #include <string>
 #include <vector>
+#include <vtkPolyData.h>
 
 namespace aniso::test
 {
