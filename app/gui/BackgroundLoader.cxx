@@ -26,6 +26,20 @@ bool BackgroundLoader::loading(const std::string& kind) const
   return it != requests_.end() && it->second.loading;
 }
 
+void BackgroundLoader::cancel(const std::string& kind)
+{
+  const auto it = requests_.find(kind);
+  if (it == requests_.end() || !it->second.loading)
+  {
+    return;
+  }
+  // The worker's delivery finds a later number and drops what it read.
+  ++it->second.latest;
+  it->second.loading = false;
+  emit finished();
+  emit ended(QString::fromStdString(kind));
+}
+
 void BackgroundLoader::load(const std::string& kind, const QString& name, const Load& load,
                             const Deliver& deliver, bool prefetch)
 {
@@ -33,6 +47,7 @@ void BackgroundLoader::load(const std::string& kind, const QString& name, const 
   const int id = ++requests.latest;
   requests.loading = true;
   emit started(name);
+  emit began(QString::fromStdString(kind), name);
   // The worker loads into assets of its own; this thread takes them over on delivery.
   auto staged = std::make_shared<SceneAssets>();
   staged->setMaxTextureSide(assets_->maxTextureSide());
@@ -56,6 +71,7 @@ void BackgroundLoader::load(const std::string& kind, const QString& name, const 
               }
               latest.loading = false;
               emit finished();
+              emit ended(QString::fromStdString(kind));
               assets_->adopt(*staged);
               if (!error.isEmpty() && !prefetch)
               {

@@ -39,9 +39,17 @@ public:
             bool prefetch = false);
   // A request of KIND is loading.
   bool loading(const std::string& kind) const;
+  // The request of KIND in flight is dropped: its result never reaches the scene (the worker's
+  // read runs out, its result is discarded); ended(KIND) follows. Nothing when none loads.
+  void cancel(const std::string& kind);
 
 signals:
   void started(const QString& name);
+  // A request of KIND (named NAME) loads; the same until ended(KIND), a later request of KIND
+  // taking its place.
+  void began(const QString& kind, const QString& name);
+  // No request of KIND loads any longer (delivered, failed or cancelled).
+  void ended(const QString& kind);
   // The latest request of a kind is done loading (before it is delivered or fails).
   void finished();
   void failed(const QString& message);

@@ -3,10 +3,12 @@
 #include "app/gui/BackgroundLoader.h"
 #include "app/gui/CompareWindow.h"
 #include "app/gui/LitModelView.h"
+#include "app/gui/ProgressReporter.h"
 #include "app/gui/SceneView.h"
 #include "app/gui/SurfaceModelView.h"
 #include "core/error.h"
 #include "core/image/image.h"
+#include "core/lut/lut_cache.h"
 #include "scene/Autosave.h"
 #include "scene/LutScheduler.h"
 #include "scene/SceneShading.h"
@@ -24,6 +26,7 @@
 #include <QAction>
 #include <QApplication>
 #include <QCheckBox>
+#include <QDoubleSpinBox>
 #include <QCloseEvent>
 #include <QDateTime>
 #include <QDialog>
@@ -41,6 +44,7 @@
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QMimeData>
+#include <QProgressDialog>
 #include <QScreen>
 #include <QSettings>
 #include <QSpinBox>
@@ -61,7 +65,6 @@ namespace aniso
 {
 namespace
 {
-constexpr int kMaxRecent = 8;
 // The kinds of background loads besides the edits of a key (named by the key): no key's names.
 const char* const kMeshLoad = "open mesh";
 const char* const kAddLoad = "add mesh";
@@ -101,7 +104,8 @@ MainWindow::MainWindow(QWidget* parent)
     : QMainWindow(parent), editor_(&model_), assets_(&model_),
       luts_(new LutScheduler(&model_, nullptr, this)), vtkWidget_(new QVTKOpenGLNativeWidget(this)),
       samplesLabel_(new QLabel(this)), lutLabel_(new QLabel(this)),
-      loader_(new BackgroundLoader(&assets_, this))
+      loader_(new BackgroundLoader(&assets_, this)),
+      progress_(new ProgressReporter(statusBar(), this))
 {
   setWindowTitle(tr("aniso"));
   setObjectName("MainWindow");
@@ -202,9 +206,16 @@ MainWindow::MainWindow(QWidget* parent)
   resizeDocks({materialDock_, environmentDock_}, {350, 370}, Qt::Horizontal);
   resizeDocks({materialDock_, mapsDock_}, {520, 380}, Qt::Vertical);
   resizeDocks({lightsDock_}, {190}, Qt::Vertical);
-  QSettings settings;
-  restoreGeometry(settings.value("window/geometry").toByteArray());
-  restoreState(settings.value("window/state").toByteArray());
+  const Preferences preferences = loadPreferences();
+  luts_->cache().setMemoryBudget(std::size_t(preferences.lutMemoryMiB) << 20);
+  luts_->cache().setDiskBudget(std::uintmax_t(preferences.lutDiskMiB) << 20);
+  if (preferences.restoreLayout)
+  {
+    QSettings settings;
+    restoreGeometry(settings.value("window/geometry").toByteArray());
+    restoreState(settings.value("window/state").toByteArray());
+  }
+  connectProgress();
 }
 
 MainWindow::~MainWindow()
@@ -294,6 +305,8 @@ void MainWindow::createMenus()
       QKeySequence::SaveAs);
   file->addAction(tr("E&xport Screenshot…"), this, &MainWindow::chooseAndExportScreenshot,
                   QKeySequence(tr("Ctrl+E")));
+  file->addAction(tr("Export &Turntable…"), this, &MainWindow::chooseAndExportTurntable,
+                  QKeySequence(tr("Ctrl+Shift+E")));
   file->addAction(tr("Export Scene as &glTF…"), this,
                   [this]
                   {
@@ -321,6 +334,13 @@ void MainWindow::createMenus()
   redo->setShortcut(QKeySequence::Redo);
   edit->addAction(undo);
   edit->addAction(redo);
+  edit->addSeparator();
+  // Ctrl+, where the platform names no key for preferences (X11 desktops other than KDE).
+  QAction* preferences = edit->addAction(tr("&Preferences…"), this, &MainWindow::showPreferences);
+  preferences->setShortcuts(QKeySequence::keyBindings(QKeySequence::Preferences).isEmpty()
+                                ? QList<QKeySequence>{QKeySequence(tr("Ctrl+,"))}
+                                : QKeySequence::keyBindings(QKeySequence::Preferences));
+  preferences->setMenuRole(QAction::PreferencesRole);
 
   QMenu* viewMenu = menuBar()->addMenu(tr("&View"));
   for (QDockWidget* dock :
@@ -332,7 +352,19 @@ void MainWindow::createMenus()
   }
   viewMenu->addSeparator();
   viewMenu->addAction(
-      tr("Reset &Camera"), this, [this] { view_->resetCamera(); }, QKeySequence(tr("Ctrl+R")));
+      tr("Reset &View"), this, [this] { view_->resetCamera(); }, QKeySequence(tr("Ctrl+R")));
+  viewMenu->addAction(tr("&Frame All"), this, &MainWindow::frameAll, QKeySequence(Qt::Key_Home));
+  QMenu* sides = viewMenu->addMenu(tr("&Standard Views"));
+  const std::pair<StandardView, QString> standardViews[] = {
+      {StandardView::Front, tr("&Front")}, {StandardView::Back, tr("&Back")},
+      {StandardView::Left, tr("&Left")},   {StandardView::Right, tr("&Right")},
+      {StandardView::Top, tr("&Top")},     {StandardView::Bottom, tr("Botto&m")}};
+  int number = 1;
+  for (const auto& [side, name] : standardViews)
+  {
+    sides->addAction(name, this, [this, side = side] { showStandardView(side); },
+                     QKeySequence(tr("Ctrl+%1").arg(number++)));
+  }
   viewMenu->addAction(tr("Compare &Models"), this, &MainWindow::showCompareWindow);
 }
 
@@ -1042,8 +1074,7 @@ void MainWindow::openImageInBackground(const QString& path)
 
 QString MainWindow::defaultScreenshotName(const QString& extension) const
 {
-  QSettings settings;
-  QString folder = settings.value("screenshot/folder").toString();
+  QString folder = loadPreferences().screenshotFolder;
   if (folder.isEmpty())
   {
     folder = QStandardPaths::writableLocation(QStandardPaths::PicturesLocation);
@@ -1069,28 +1100,7 @@ void MainWindow::exportScreenshot(const QString& path, const ScreenshotOptions& 
   const qreal ratio = vtkWidget_->devicePixelRatioF();
   const int width = std::max(1, static_cast<int>(vtkWidget_->width() * ratio)) * options.scale;
   const int height = std::max(1, static_cast<int>(vtkWidget_->height() * ratio)) * options.scale;
-  RenderSettings settings = view_->renderSettings(width, height);
-  // A lit model is exported as the view draws it, each part with its own material.
-  LitModelSettings lit;
-  if (litSettingsOf(model_, lit))
-  {
-    settings.installMaterial = litModelInstaller(lit);
-    for (std::size_t i = 0; i < settings.parts.size(); ++i)
-    {
-      LitModelSettings part = lit;
-      litSceneOf(model_, model_.partParameters(int(i)), part);
-      settings.parts[i].installMaterial = litModelInstaller(part);
-    }
-  }
-  // So are LEADR and the microstructure.
-  if (MaterialInstaller surface = surfaceModelInstallerOf(model_, assets_))
-  {
-    settings.installMaterial = std::move(surface);
-    for (std::size_t i = 0; i < settings.parts.size(); ++i)
-    {
-      settings.parts[i].installMaterial = surfaceModelInstallerOf(model_, int(i), assets_);
-    }
-  }
+  RenderSettings settings = exportSettings(width, height);
   if (options.transparent)
   {
     settings.display.background = BackgroundMode::Transparent;
@@ -1115,7 +1125,34 @@ void MainWindow::exportScreenshot(const QString& path, const ScreenshotOptions& 
     throw;
   }
   QApplication::restoreOverrideCursor();
-  QSettings().setValue("screenshot/folder", QFileInfo(path).absolutePath());
+  QSettings().setValue(preference_keys::kScreenshotFolder, QFileInfo(path).absolutePath());
+}
+
+RenderSettings MainWindow::exportSettings(int width, int height)
+{
+  RenderSettings settings = view_->renderSettings(width, height);
+  // A lit model is exported as the view draws it, each part with its own material.
+  LitModelSettings lit;
+  if (litSettingsOf(model_, lit))
+  {
+    settings.installMaterial = litModelInstaller(lit);
+    for (std::size_t i = 0; i < settings.parts.size(); ++i)
+    {
+      LitModelSettings part = lit;
+      litSceneOf(model_, model_.partParameters(int(i)), part);
+      settings.parts[i].installMaterial = litModelInstaller(part);
+    }
+  }
+  // So are LEADR and the microstructure.
+  if (MaterialInstaller surface = surfaceModelInstallerOf(model_, assets_))
+  {
+    settings.installMaterial = std::move(surface);
+    for (std::size_t i = 0; i < settings.parts.size(); ++i)
+    {
+      settings.parts[i].installMaterial = surfaceModelInstallerOf(model_, int(i), assets_);
+    }
+  }
+  return settings;
 }
 
 void MainWindow::chooseAndExportScreenshot()
@@ -1178,9 +1215,227 @@ void MainWindow::chooseAndExportScreenshot()
   }
 }
 
+TurntableResult MainWindow::exportTurntableFrames(const TurntableOptions& options)
+{
+  checkTurntableOptions(options, options.prefix.toStdString());
+  const std::vector<CameraState> cameras = turntableCameras(
+      view_->currentCamera(), view_->drawingFrame(), options.frames, options.elevationDegrees);
+  const RenderSettings settings = exportSettings(options.width, options.height);
+  QProgressDialog progress(tr("Rendering the turntable…"), tr("Cancel"), 0, options.frames, this);
+  progress.setWindowModality(Qt::WindowModal);
+  progress.setMinimumDuration(ProgressReporter::kShowAfterMs);
+  const TurntableResult result = exportTurntable(settings, cameras, options,
+                                                 [&progress](int done)
+                                                 {
+                                                   progress.setValue(done);
+                                                   QApplication::processEvents();
+                                                   return !progress.wasCanceled();
+                                                 });
+  QSettings().setValue(preference_keys::kScreenshotFolder,
+                       QFileInfo(options.prefix).absolutePath());
+  return result;
+}
+
+void MainWindow::chooseAndExportTurntable()
+{
+  QDialog dialog(this);
+  dialog.setWindowTitle(tr("Export turntable"));
+  QString prefix = defaultScreenshotName("png");
+  prefix.chop(4);
+  auto* pathEdit = new QLineEdit(prefix, &dialog);
+  pathEdit->setToolTip(tr("Frames PREFIX_0000.png, …; the video PREFIX.mp4"));
+  auto* browse = new QToolButton(&dialog);
+  browse->setText(tr("…"));
+  auto* pathRow = new QWidget(&dialog);
+  auto* pathLayout = new QHBoxLayout(pathRow);
+  pathLayout->setContentsMargins(0, 0, 0, 0);
+  pathLayout->addWidget(pathEdit, 1);
+  pathLayout->addWidget(browse);
+  connect(browse, &QToolButton::clicked, &dialog,
+          [&dialog, pathEdit]
+          {
+            const QString chosen = QFileDialog::getSaveFileName(
+                &dialog, tr("Export turntable"), pathEdit->text(), tr("PNG frames (*)"));
+            if (!chosen.isEmpty())
+            {
+              pathEdit->setText(chosen);
+            }
+          });
+  auto* frames = new QSpinBox(&dialog);
+  frames->setRange(1, 3600);
+  frames->setValue(36);
+  const qreal ratio = vtkWidget_->devicePixelRatioF();
+  auto* width = new QSpinBox(&dialog);
+  width->setRange(16, 8192);
+  width->setValue(static_cast<int>(vtkWidget_->width() * ratio));
+  auto* height = new QSpinBox(&dialog);
+  height->setRange(16, 8192);
+  height->setValue(static_cast<int>(vtkWidget_->height() * ratio));
+  auto* sizeRow = new QWidget(&dialog);
+  auto* sizeLayout = new QHBoxLayout(sizeRow);
+  sizeLayout->setContentsMargins(0, 0, 0, 0);
+  sizeLayout->addWidget(width);
+  sizeLayout->addWidget(new QLabel(tr("×"), &dialog));
+  sizeLayout->addWidget(height);
+  double azimuth = 0.0;
+  double elevationNow = 0.0;
+  azimuthElevationOf(view_->currentCamera(), view_->drawingFrame(), azimuth, elevationNow);
+  auto* elevation = new QDoubleSpinBox(&dialog);
+  elevation->setRange(-89.0, 89.0);
+  elevation->setSuffix(tr("°"));
+  elevation->setValue(elevationNow);
+  const bool ffmpeg = !ffmpegExecutable().isEmpty();
+  auto* video = new QCheckBox(ffmpeg ? tr("Also a video (PREFIX.mp4, 30 frames per second)")
+                                     : tr("A video needs ffmpeg, which is not installed"),
+                              &dialog);
+  video->setChecked(ffmpeg);
+  video->setEnabled(ffmpeg);
+  auto* buttons = new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel, &dialog);
+  connect(buttons, &QDialogButtonBox::accepted, &dialog, &QDialog::accept);
+  connect(buttons, &QDialogButtonBox::rejected, &dialog, &QDialog::reject);
+  auto* form = new QFormLayout(&dialog);
+  form->addRow(tr("Files"), pathRow);
+  form->addRow(tr("Frames"), frames);
+  form->addRow(tr("Size"), sizeRow);
+  form->addRow(tr("Elevation"), elevation);
+  form->addRow(QString(), video);
+  form->addRow(buttons);
+  if (dialog.exec() != QDialog::Accepted)
+  {
+    return;
+  }
+  TurntableOptions options;
+  options.prefix = pathEdit->text();
+  options.frames = frames->value();
+  options.width = width->value();
+  options.height = height->value();
+  options.elevationDegrees = elevation->value();
+  options.video = video->isChecked();
+  TurntableResult result;
+  if (!attempt([&] { result = exportTurntableFrames(options); }))
+  {
+    return;
+  }
+  if (result.cancelled)
+  {
+    statusBar()->showMessage(tr("Turntable cancelled after %n frames", nullptr,
+                                static_cast<int>(result.frames.size())),
+                             8000);
+  }
+  else if (!result.videoError.isEmpty())
+  {
+    reportError(tr("Wrote %n frames; %1", nullptr, static_cast<int>(result.frames.size()))
+                    .arg(result.videoError),
+                false);
+  }
+  else
+  {
+    statusBar()->showMessage(
+        result.video.isEmpty()
+            ? tr("Wrote %n frames", nullptr, static_cast<int>(result.frames.size()))
+            : tr("Wrote %n frames and %1", nullptr, static_cast<int>(result.frames.size()))
+                  .arg(result.video),
+        8000);
+  }
+}
+
+void MainWindow::showStandardView(StandardView side)
+{
+  const int* size = renderWindow_->GetSize();
+  attempt(
+      [&]
+      {
+        model_.setCamera(framedCamera(standardViewDirection(side), view_->drawingFrame(),
+                                      view_->currentCamera(), size[0], size[1]));
+      });
+}
+
+void MainWindow::frameAll()
+{
+  const int* size = renderWindow_->GetSize();
+  attempt(
+      [&]
+      {
+        model_.setCamera(
+            aniso::frameAll(view_->currentCamera(), view_->drawingFrame(), size[0], size[1]));
+      });
+}
+
+void MainWindow::applyPreferences(const Preferences& preferences)
+{
+  savePreferences(preferences);
+  luts_->cache().setMemoryBudget(std::size_t(preferences.lutMemoryMiB) << 20);
+  luts_->cache().setDiskBudget(std::uintmax_t(preferences.lutDiskMiB) << 20);
+  rebuildRecentMenu();
+}
+
+void MainWindow::showPreferences()
+{
+  PreferencesDialog dialog(loadPreferences(), QString::fromStdString(luts_->cache().directory()),
+                           this);
+  connect(&dialog, &PreferencesDialog::applied, this, &MainWindow::applyPreferences);
+  dialog.exec();
+}
+
+std::function<void()> MainWindow::undoIfLast()
+{
+  QUndoStack* stack = editor_.undoStack();
+  if (!stack->canUndo())
+  {
+    return {}; // the scene as it started: nothing to go back to
+  }
+  const int index = stack->index();
+  const QUndoCommand* command = stack->command(index - 1);
+  return [stack, index, command]
+  {
+    if (stack->index() == index && stack->command(index - 1) == command)
+    {
+      stack->undo();
+    }
+  };
+}
+
+void MainWindow::connectProgress()
+{
+  connect(loader_, &BackgroundLoader::began, this,
+          [this](const QString& kind, const QString& name)
+          {
+            progress_->begin(kind, tr("Loading %1").arg(QFileInfo(name).fileName()),
+                             [this, kind] { loader_->cancel(kind.toStdString()); });
+          });
+  connect(loader_, &BackgroundLoader::ended, progress_, &ProgressReporter::end);
+  // A bake follows an edit (an environment, its cube size or sampling; a lobe's exponents):
+  // Cancel takes that edit back, and with it what the bake would have shown (the lighting
+  // loader drops its bake's result, the scheduler cancels its bake).
+  connect(view_, &SceneView::lightingBusyChanged, this,
+          [this](bool busy)
+          {
+            if (busy)
+            {
+              progress_->begin("environment bake", tr("Baking the environment"), undoIfLast());
+            }
+            else
+            {
+              progress_->end("environment bake");
+            }
+          });
+  connect(luts_, &LutScheduler::busyChanged, this,
+          [this](bool busy)
+          {
+            if (busy)
+            {
+              progress_->begin("lookup-table bake", tr("Baking lookup tables"), undoIfLast());
+            }
+            else
+            {
+              progress_->end("lookup-table bake");
+            }
+          });
+}
+
 QStringList MainWindow::recentFiles() const
 {
-  return QSettings().value("recentFiles").toStringList();
+  return QSettings().value(preference_keys::kRecentFiles).toStringList();
 }
 
 void MainWindow::addRecent(const QString& path)
@@ -1189,11 +1444,12 @@ void MainWindow::addRecent(const QString& path)
   const QString absolute = QFileInfo(path).absoluteFilePath();
   files.removeAll(absolute);
   files.prepend(absolute);
-  while (files.size() > kMaxRecent)
+  const int count = loadPreferences().recentCount;
+  while (files.size() > count)
   {
     files.removeLast();
   }
-  QSettings().setValue("recentFiles", files);
+  QSettings().setValue(preference_keys::kRecentFiles, files);
   rebuildRecentMenu();
 }
 

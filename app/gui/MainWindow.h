@@ -3,7 +3,10 @@
 // lookup-table docks around it, menus (File, Edit, View), a status bar with the progressive
 // sample count, recent files, drag and drop, sessions and screenshot export. Every failure is
 // reported once, in words, and leaves the scene as it was.
+#include "app/gui/PreferencesDialog.h"
 #include "app/gui/SceneAssets.h"
+#include "app/gui/StandardViews.h"
+#include "app/gui/TurntableExport.h"
 #include "scene/SceneEditor.h"
 #include "scene/SceneModel.h"
 #include "scene/Session.h"
@@ -32,6 +35,7 @@ class LitModelView;
 class SurfaceModelView;
 class LutScheduler;
 class MapsDock;
+class ProgressReporter;
 class MaterialDock;
 class SceneDock;
 class SceneView;
@@ -69,6 +73,9 @@ public:
   CompareWindow* compareWindow() const { return compareWindow_; }
   void showCompareWindow();
   LutScheduler* lutScheduler() const { return luts_; }
+  // The background loads (File menu, drops, docks) and the progress of every long task.
+  BackgroundLoader* loader() const { return loader_; }
+  ProgressReporter* progress() const { return progress_; }
   QVTKOpenGLNativeWidget* vtkWidget() const { return vtkWidget_; }
 
   // Errors go to the status bar and errorReported; with dialogs on (the default) file
@@ -130,6 +137,23 @@ public:
   void exportScreenshot(const QString& path, const ScreenshotOptions& options);
   // A file name for a screenshot: the mesh's name and the time, in the last used folder.
   QString defaultScreenshotName(const QString& extension) const;
+  // What renderOffscreen needs to redraw the view at WIDTH x HEIGHT as screenshots draw it (the
+  // model shown: the anisotropic material, a lit model or a surface model, each part's own).
+  RenderSettings exportSettings(int width, int height);
+  // Writes a turntable (app/gui/TurntableExport.h) of the view's scene, its camera turned from
+  // the view's, with a progress dialog whose Cancel stops it. Throws aniso::Error as
+  // exportTurntable does.
+  TurntableResult exportTurntableFrames(const TurntableOptions& options);
+
+  // The camera framing the visible parts from one side (View > Front, ...), Frame All (the
+  // direction kept) and Reset View (the default view).
+  void showStandardView(StandardView view);
+  void frameAll();
+
+  // The preferences (app/gui/PreferencesDialog.h): saved to QSettings and applied (the recent
+  // files' count, the lookup tables' budgets; the screenshot folder is read when used).
+  void applyPreferences(const Preferences& preferences);
+  void showPreferences();
 
   QStringList recentFiles() const;
 
@@ -151,6 +175,12 @@ private:
   void showSamples(int samples, int target);
   void setInteractiveResolution(bool interacting);
   void chooseAndExportScreenshot();
+  void chooseAndExportTurntable();
+  // Long tasks to the progress: the background loads (Cancel drops them), the environment and
+  // lookup-table bakes (Cancel undoes the edit that started them, when it is the last one).
+  void connectProgress();
+  // The undo step that started a bake, for its Cancel: none when other edits came since.
+  std::function<void()> undoIfLast();
   // The parts of the blocks of PATH (loaded into assets_ already), named uniquely beside TAKEN,
   // placed where the file puts them, with the material the file gives them (adopted into
   // LIBRARY: MaterialLibrary::adopt), else MATERIAL; the blocks skipped go to WARNINGS.
@@ -194,6 +224,7 @@ private:
   Autosave* autosave_ = nullptr;
   // The background loads (the status bar says what loads), each kind's latest request winning.
   BackgroundLoader* loader_;
+  ProgressReporter* progress_;
   std::string rereading_; // the read options the latest rereadPartsInBackground reads with
 };
 } // namespace aniso

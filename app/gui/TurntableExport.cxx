@@ -1,0 +1,157 @@
+#include "app/gui/TurntableExport.h"
+
+#include "app/gui/StandardViews.h"
+#include "app/gui/ViewCamera.h"
+#include "core/error.h"
+#include "core/image/image.h"
+
+#include <QDir>
+#include <QFileInfo>
+#include <QProcess>
+#include <QStandardPaths>
+#include <algorithm>
+#include <cmath>
+
+namespace aniso
+{
+namespace
+{
+Image rgbOf(const Image& rgba)
+{
+  Image rgb(rgba.width, rgba.height, 3);
+  for (std::size_t i = 0, n = std::size_t(rgb.width) * rgb.height; i < n; ++i)
+  {
+    std::copy_n(&rgba.data[i * 4], 3, &rgb.data[i * 3]);
+  }
+  return rgb;
+}
+
+int digitsFor(int frames)
+{
+  int digits = 4;
+  for (int n = 10000; frames > n && digits < 9; n *= 10)
+  {
+    ++digits;
+  }
+  return digits;
+}
+} // namespace
+
+void checkTurntableOptions(const TurntableOptions& o, const std::string& subject)
+{
+  if (o.frames < 1 || o.frames > 3600)
+  {
+    throw errorAbout(subject, "a turntable has 1 to 3600 frames");
+  }
+  if (o.width < 16 || o.height < 16 || o.width > 8192 || o.height > 8192)
+  {
+    throw errorAbout(subject, "a turntable frame is 16 to 8192 pixels wide and high");
+  }
+  if (!(std::abs(o.elevationDegrees) <= 89.0))
+  {
+    throw errorAbout(subject, "the turntable's elevation is -89 to 89 degrees");
+  }
+  if (o.framesPerSecond < 1 || o.framesPerSecond > 120)
+  {
+    throw errorAbout(subject, "the video has 1 to 120 frames per second");
+  }
+  if (o.prefix.isEmpty())
+  {
+    throw errorAbout(subject, "no file name for the frames");
+  }
+}
+
+std::vector<CameraState> turntableCameras(const CameraState& start, const DrawingFrame& drawing,
+                                          int frames, double elevationDegrees)
+{
+  double azimuth = 0.0;
+  double elevation = 0.0;
+  azimuthElevationOf(start, drawing, azimuth, elevation);
+  std::vector<CameraState> cameras;
+  cameras.reserve(std::size_t(std::max(frames, 0)));
+  for (int k = 0; k < frames; ++k)
+  {
+    cameras.push_back(orbitCamera(start, drawing, azimuth + 360.0 * k / frames, elevationDegrees));
+  }
+  return cameras;
+}
+
+QString turntableFramePath(const QString& prefix, int frame, int frames)
+{
+  return QString("%1_%2.png").arg(prefix).arg(frame, digitsFor(frames), 10, QChar('0'));
+}
+
+QString ffmpegExecutable()
+{
+  return QStandardPaths::findExecutable("ffmpeg");
+}
+
+namespace
+{
+// PREFIX.mp4 from the frames; the reason on failure.
+QString encodeVideo(const TurntableOptions& o, QString& video)
+{
+  const QString ffmpeg = ffmpegExecutable();
+  if (ffmpeg.isEmpty())
+  {
+    return QObject::tr("ffmpeg is not installed: no video");
+  }
+  const QString path = o.prefix + ".mp4";
+  QProcess process;
+  process.setProcessChannelMode(QProcess::MergedChannels);
+  process.start(ffmpeg, {"-y", "-loglevel", "error", "-framerate",
+                         QString::number(o.framesPerSecond), "-i",
+                         o.prefix + "_%0" + QString::number(digitsFor(o.frames)) + "d.png",
+                         // yuv420p, which players expect, needs even sizes.
+                         "-vf", "pad=ceil(iw/2)*2:ceil(ih/2)*2", "-pix_fmt", "yuv420p", path});
+  if (!process.waitForFinished(600000) || process.exitStatus() != QProcess::NormalExit ||
+      process.exitCode() != 0)
+  {
+    const QString output = QString::fromLocal8Bit(process.readAll()).trimmed();
+    return QObject::tr("%1: ffmpeg failed: %2")
+        .arg(path, output.isEmpty() ? process.errorString() : output.section('\n', -1));
+  }
+  video = path;
+  return {};
+}
+} // namespace
+
+TurntableResult exportTurntable(RenderSettings settings, const std::vector<CameraState>& cameras,
+                                const TurntableOptions& options,
+                                const std::function<bool(int)>& progress)
+{
+  checkTurntableOptions(options, options.prefix.toStdString());
+  const QString folder = QFileInfo(options.prefix).absolutePath();
+  if (!QDir().mkpath(folder))
+  {
+    throw errorAbout(folder.toStdString(), "cannot make the folder");
+  }
+  settings.width = options.width;
+  settings.height = options.height;
+  TurntableResult result;
+  const int n = static_cast<int>(cameras.size());
+  for (int k = 0; k < n; ++k)
+  {
+    if (progress && !progress(k))
+    {
+      result.cancelled = true;
+      return result;
+    }
+    settings.camera = placementOf(cameras[std::size_t(k)]);
+    const RenderResult frame = renderOffscreen(settings);
+    const QString path = turntableFramePath(options.prefix, k, n);
+    writeImage(path.toStdString(), rgbOf(frame.display));
+    result.frames << path;
+  }
+  if (progress && !progress(n))
+  {
+    result.cancelled = true;
+    return result;
+  }
+  if (options.video)
+  {
+    result.videoError = encodeVideo(options, result.video);
+  }
+  return result;
+}
+} // namespace aniso
