@@ -50,6 +50,7 @@
 #include <QSpinBox>
 #include <QStandardPaths>
 #include <QStatusBar>
+#include <QTimer>
 #include <QToolButton>
 #include <QUndoStack>
 #include <QUrl>
@@ -1380,15 +1381,20 @@ void MainWindow::showPreferences()
 std::function<void()> MainWindow::undoIfLast()
 {
   QUndoStack* stack = editor_.undoStack();
-  if (!stack->canUndo())
-  {
-    return {}; // the scene as it started: nothing to go back to
-  }
-  const int index = stack->index();
-  const QUndoCommand* command = stack->command(index - 1);
+  auto index = std::make_shared<int>(0);
+  auto command = std::make_shared<const QUndoCommand*>(nullptr);
+  // A bake starts inside the push (or undo) of its edit, before the stack counts it: the edit
+  // is read once that is done.
+  QTimer::singleShot(0, stack,
+                     [stack, index, command]
+                     {
+                       *index = stack->index();
+                       *command = *index > 0 ? stack->command(*index - 1) : nullptr;
+                     });
   return [stack, index, command]
   {
-    if (stack->index() == index && stack->command(index - 1) == command)
+    // Nothing to take back (the scene as it started), or other edits came since.
+    if (*index > 0 && stack->index() == *index && stack->command(*index - 1) == *command)
     {
       stack->undo();
     }
