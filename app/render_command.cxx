@@ -3,6 +3,7 @@
 #include "app/cli.h"
 #include "app/render_models.h"
 #include "app/render_parts.h"
+#include "app/render_turntable.h"
 #include "core/env/env_source_text.h"
 #include "core/env/env_sources.h"
 #include "core/env/environment.h"
@@ -162,6 +163,10 @@ Command renderCommand()
                    "camera direction instead of --view: 0 on the -Y side, 90 on +X"));
   c.options.push_back(numberOption("--elevation", "DEG", ParameterType::Real, 0.0, -90.0, 90.0,
                                    "deg", "camera height above the XY plane, with --azimuth"));
+  c.options.push_back(numberOption(
+      "--turntable", "N", ParameterType::Integer, 36.0, 1.0, 3600.0, {},
+      "N images turning the camera about +Z around the parts' centre from the view's azimuth, "
+      "written as OUT_0000.png, OUT_0001.png, ... (OUT: --output's stem, its extension kept)"));
   c.options.push_back(flagOption("--ortho", "parallel projection (the view fits the object)"));
   c.options.push_back(textOption(
       "--background", "env|none|R,G,B",
@@ -448,6 +453,10 @@ int runRender(const std::vector<std::string>& args, std::ostream& out, std::ostr
   {
     throw usageError("--view", "give either --view or --azimuth/--elevation");
   }
+  if (a.has("--turntable") && a.has("--compare"))
+  {
+    throw usageError("--turntable", "give either --turntable or --compare");
+  }
   SurfaceOptions surfaceOptions;
   MeshReadOptions readOptions;
   try
@@ -648,27 +657,23 @@ int runRender(const std::vector<std::string>& args, std::ostream& out, std::ostr
       printEnvironmentSources(*settings.environment, parameters.text("env"),
                               settings.environmentRotationDegrees, report);
 
+  if (a.has("--turntable"))
+  {
+    const int images = a.integer("--turntable");
+    const std::vector<double> seconds = renderTurntable(settings, images, output, out);
+    out << "render: a turntable of " << images << " images of " << source << "\n";
+    if (a.has("--time"))
+    {
+      out << "time: median frame " << formatMilliseconds(medianSeconds(seconds)) << " over "
+          << seconds.size() << " frames\n";
+    }
+    return 0;
+  }
   const RenderResult result =
       a.has("--compare") ? renderComparison(a, settings) : renderOffscreen(settings);
 
   const bool exr = lowercaseExtension(output) == ".exr";
-  if (exr)
-  {
-    writeImage(output, result.linear);
-  }
-  else if (settings.display.background == BackgroundMode::Transparent)
-  {
-    writeImage(output, result.display);
-  }
-  else
-  {
-    Image rgb(result.display.width, result.display.height, 3);
-    for (std::size_t i = 0, n = std::size_t(rgb.width) * rgb.height; i < n; ++i)
-    {
-      std::copy_n(&result.display.data[i * 4], 3, &rgb.data[i * 3]);
-    }
-    writeImage(output, rgb);
-  }
+  writeRendered(output, result, settings.display.background == BackgroundMode::Transparent);
   const int samples = settings.material.samples;
   out << "render: wrote " << output << " (" << settings.width << "x" << settings.height << ", "
       << (exr ? "linear RGBA float, alpha = coverage" : "tone-mapped sRGB") << ") of " << source
