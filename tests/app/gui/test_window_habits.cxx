@@ -6,9 +6,9 @@
 // QSettings (a scope of the test's own), out-of-range values are clamped, and applied ones take
 // effect (the recent files trimmed or cleared, screenshots offered in the chosen folder); the
 // turntable writes N PNGs of the requested size whose first frame is the screenshot of the view
-// at its azimuth and whose frames differ; a load running past 0.5 s shows progress, and Cancel
+// at its azimuth and whose frames differ, and where ffmpeg is installed a video of those frames; a load running past 0.5 s shows progress, and Cancel
 // drops it with the scene kept, while a quick one never shows; Cancel of an environment bake
-// takes back the edit that started it.
+// or of a lookup-table bake takes back the edit that started it.
 #include "app/gui/BackgroundLoader.h"
 #include "app/gui/MainWindow.h"
 #include "app/gui/PreferencesDialog.h"
@@ -16,15 +16,18 @@
 #include "app/gui/SceneView.h"
 #include "app/gui/StandardViews.h"
 #include "app/gui/TurntableExport.h"
+#include "scene/LutScheduler.h"
 #include "vtkpasses/render/ViewSettings.h"
 
 #include <QApplication>
+#include <QDateTime>
 #include <QDialog>
 #include <QDialogButtonBox>
 #include <QElapsedTimer>
 #include <QFileDialog>
 #include <QImage>
 #include <QLineEdit>
+#include <QProcess>
 #include <QPushButton>
 #include <QSettings>
 #include <QSignalSpy>
@@ -335,6 +338,37 @@ private slots:
         aniso::Error);
   }
 
+  void turntableVideo()
+  {
+    if (aniso::ffmpegExecutable().isEmpty())
+    {
+      QSKIP("ffmpeg is not installed: the turntable writes no video");
+    }
+    const QString ffprobe = QStandardPaths::findExecutable("ffprobe");
+    if (ffprobe.isEmpty())
+    {
+      QSKIP("ffprobe is not installed: the video cannot be read back");
+    }
+    QTemporaryDir dir;
+    aniso::MainWindow& window = *window_;
+    aniso::TurntableOptions options;
+    options.frames = 5;
+    options.width = 63; // odd: padded to even for the encoder
+    options.height = 40;
+    options.prefix = dir.filePath("spin");
+    const aniso::TurntableResult result = window.exportTurntableFrames(options);
+    QVERIFY2(result.videoError.isEmpty(), qPrintable(result.videoError));
+    QCOMPARE(result.video, dir.filePath("spin.mp4"));
+    // What ffprobe, reading the file on its own, finds in it.
+    QProcess probe;
+    probe.start(ffprobe, {"-v", "error", "-count_frames", "-select_streams", "v:0",
+                          "-show_entries", "stream=nb_read_frames,width,height", "-of",
+                          "csv=p=0", result.video});
+    QVERIFY(probe.waitForFinished(30000));
+    QCOMPARE(QString::fromLocal8Bit(probe.readAllStandardOutput()).trimmed(),
+             QString("64,40,5"));
+  }
+
   void slowLoadShowsProgressAndCancelKeepsTheScene()
   {
     aniso::MainWindow& window = *window_;
@@ -409,6 +443,31 @@ private slots:
     QCOMPARE(kind, QString("environment bake"));
     QCOMPARE(window.model()->integer("cube-size"), cube);
     QTRY_VERIFY_WITH_TIMEOUT(!progress->running("environment bake"), 10000);
+
+    // The same for the lookup tables of new exponents (values no cache holds).
+    const double nu = window.model()->real("nu");
+    const double fresh = 1000.0 + std::fmod(double(QDateTime::currentMSecsSinceEpoch()), 9000.0);
+    bool lutRunning = false;
+    QString lutKind;
+    connect(window.lutScheduler(), &aniso::LutScheduler::busyChanged, this,
+            [&](bool busy)
+            {
+              if (busy && !lutRunning)
+              {
+                QTimer::singleShot(0, this,
+                                   [&]
+                                   {
+                                     lutRunning = progress->running("lookup-table bake");
+                                     lutKind = progress->shownKind();
+                                     progress->cancelButton()->click();
+                                   });
+              }
+            });
+    window.editor()->edit("nu", numberValue(fresh));
+    QTRY_VERIFY_WITH_TIMEOUT(lutRunning, 10000);
+    QCOMPARE(lutKind, QString("lookup-table bake"));
+    QCOMPARE(window.model()->real("nu"), nu);
+    QTRY_VERIFY_WITH_TIMEOUT(!window.lutScheduler()->busy(), 10000);
     // One step back, which Redo brings back.
     QCOMPARE(window.editor()->undoStack()->index(), steps);
     QCOMPARE(window.editor()->undoStack()->count(), steps + 1);
