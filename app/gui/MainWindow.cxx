@@ -1378,27 +1378,34 @@ void MainWindow::showPreferences()
   dialog.exec();
 }
 
-std::function<void()> MainWindow::undoIfLast()
+void MainWindow::beginBake(const QString& kind, const QString& text)
 {
   QUndoStack* stack = editor_.undoStack();
   auto index = std::make_shared<int>(0);
   auto command = std::make_shared<const QUndoCommand*>(nullptr);
+  progress_->begin(kind, text,
+                   [stack, index, command]
+                   {
+                     // Other edits came since: Cancel leaves them be.
+                     if (*index > 0 && stack->index() == *index &&
+                         stack->command(*index - 1) == *command)
+                     {
+                       stack->undo();
+                     }
+                   });
   // A bake starts inside the push (or undo) of its edit, before the stack counts it: the edit
   // is read once that is done.
-  QTimer::singleShot(0, stack,
-                     [stack, index, command]
+  QTimer::singleShot(0, this,
+                     [this, stack, index, command, kind, text]
                      {
                        *index = stack->index();
                        *command = *index > 0 ? stack->command(*index - 1) : nullptr;
+                       if (*index == 0 && progress_->running(kind))
+                       {
+                         // The scene as it started: nothing to go back to, no Cancel.
+                         progress_->begin(kind, text, {});
+                       }
                      });
-  return [stack, index, command]
-  {
-    // Nothing to take back (the scene as it started), or other edits came since.
-    if (*index > 0 && stack->index() == *index && stack->command(*index - 1) == *command)
-    {
-      stack->undo();
-    }
-  };
 }
 
 void MainWindow::connectProgress()
@@ -1418,7 +1425,7 @@ void MainWindow::connectProgress()
           {
             if (busy)
             {
-              progress_->begin("environment bake", tr("Baking the environment"), undoIfLast());
+              beginBake("environment bake", tr("Baking the environment"));
             }
             else
             {
@@ -1430,7 +1437,7 @@ void MainWindow::connectProgress()
           {
             if (busy)
             {
-              progress_->begin("lookup-table bake", tr("Baking lookup tables"), undoIfLast());
+              beginBake("lookup-table bake", tr("Baking lookup tables"));
             }
             else
             {

@@ -179,8 +179,9 @@ private:
   // Long tasks to the progress: the background loads (Cancel drops them), the environment and
   // lookup-table bakes (Cancel undoes the edit that started them, when it is the last one).
   void connectProgress();
-  // The undo step that started a bake, for its Cancel: none when other edits came since.
-  std::function<void()> undoIfLast();
+  // Bake KIND (TEXT) to the progress, its Cancel undoing the edit that started it while that is
+  // the last one (none at the start, with no edit to undo).
+  void beginBake(const QString& kind, const QString& text);
   // The parts of the blocks of PATH (loaded into assets_ already), named uniquely beside TAKEN,
   // placed where the file puts them, with the material the file gives them (adopted into
   // LIBRARY: MaterialLibrary::adopt), else MATERIAL; the blocks skipped go to WARNINGS.
