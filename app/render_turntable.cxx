@@ -7,8 +7,8 @@
 #include <cmath>
 #include <filesystem>
 #include <glm/geometric.hpp>
-#include <sstream>
 #include <iomanip>
+#include <sstream>
 
 namespace aniso::cli
 {

@@ -26,7 +26,6 @@
 #include <QAction>
 #include <QApplication>
 #include <QCheckBox>
-#include <QDoubleSpinBox>
 #include <QCloseEvent>
 #include <QDateTime>
 #include <QDialog>
@@ -363,8 +362,9 @@ void MainWindow::createMenus()
   int number = 1;
   for (const auto& [side, name] : standardViews)
   {
-    sides->addAction(name, this, [this, side = side] { showStandardView(side); },
-                     QKeySequence(tr("Ctrl+%1").arg(number++)));
+    sides->addAction(
+        name, this, [this, side = side] { showStandardView(side); },
+        QKeySequence(tr("Ctrl+%1").arg(number++)));
   }
   viewMenu->addAction(tr("Compare &Models"), this, &MainWindow::showCompareWindow);
 }
@@ -1239,79 +1239,20 @@ TurntableResult MainWindow::exportTurntableFrames(const TurntableOptions& option
 
 void MainWindow::chooseAndExportTurntable()
 {
-  QDialog dialog(this);
-  dialog.setWindowTitle(tr("Export turntable"));
-  QString prefix = defaultScreenshotName("png");
-  prefix.chop(4);
-  auto* pathEdit = new QLineEdit(prefix, &dialog);
-  pathEdit->setToolTip(tr("Frames PREFIX_0000.png, …; the video PREFIX.mp4"));
-  auto* browse = new QToolButton(&dialog);
-  browse->setText(tr("…"));
-  auto* pathRow = new QWidget(&dialog);
-  auto* pathLayout = new QHBoxLayout(pathRow);
-  pathLayout->setContentsMargins(0, 0, 0, 0);
-  pathLayout->addWidget(pathEdit, 1);
-  pathLayout->addWidget(browse);
-  connect(browse, &QToolButton::clicked, &dialog,
-          [&dialog, pathEdit]
-          {
-            const QString chosen = QFileDialog::getSaveFileName(
-                &dialog, tr("Export turntable"), pathEdit->text(), tr("PNG frames (*)"));
-            if (!chosen.isEmpty())
-            {
-              pathEdit->setText(chosen);
-            }
-          });
-  auto* frames = new QSpinBox(&dialog);
-  frames->setRange(1, 3600);
-  frames->setValue(36);
+  TurntableOptions options;
+  options.prefix = defaultScreenshotName("png");
+  options.prefix.chop(4);
   const qreal ratio = vtkWidget_->devicePixelRatioF();
-  auto* width = new QSpinBox(&dialog);
-  width->setRange(16, 8192);
-  width->setValue(static_cast<int>(vtkWidget_->width() * ratio));
-  auto* height = new QSpinBox(&dialog);
-  height->setRange(16, 8192);
-  height->setValue(static_cast<int>(vtkWidget_->height() * ratio));
-  auto* sizeRow = new QWidget(&dialog);
-  auto* sizeLayout = new QHBoxLayout(sizeRow);
-  sizeLayout->setContentsMargins(0, 0, 0, 0);
-  sizeLayout->addWidget(width);
-  sizeLayout->addWidget(new QLabel(tr("×"), &dialog));
-  sizeLayout->addWidget(height);
+  options.width = static_cast<int>(vtkWidget_->width() * ratio);
+  options.height = static_cast<int>(vtkWidget_->height() * ratio);
   double azimuth = 0.0;
-  double elevationNow = 0.0;
-  azimuthElevationOf(view_->currentCamera(), view_->drawingFrame(), azimuth, elevationNow);
-  auto* elevation = new QDoubleSpinBox(&dialog);
-  elevation->setRange(-89.0, 89.0);
-  elevation->setSuffix(tr("°"));
-  elevation->setValue(elevationNow);
-  const bool ffmpeg = !ffmpegExecutable().isEmpty();
-  auto* video = new QCheckBox(ffmpeg ? tr("Also a video (PREFIX.mp4, 30 frames per second)")
-                                     : tr("A video needs ffmpeg, which is not installed"),
-                              &dialog);
-  video->setChecked(ffmpeg);
-  video->setEnabled(ffmpeg);
-  auto* buttons = new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel, &dialog);
-  connect(buttons, &QDialogButtonBox::accepted, &dialog, &QDialog::accept);
-  connect(buttons, &QDialogButtonBox::rejected, &dialog, &QDialog::reject);
-  auto* form = new QFormLayout(&dialog);
-  form->addRow(tr("Files"), pathRow);
-  form->addRow(tr("Frames"), frames);
-  form->addRow(tr("Size"), sizeRow);
-  form->addRow(tr("Elevation"), elevation);
-  form->addRow(QString(), video);
-  form->addRow(buttons);
-  if (dialog.exec() != QDialog::Accepted)
+  azimuthElevationOf(view_->currentCamera(), view_->drawingFrame(), azimuth,
+                     options.elevationDegrees);
+  options.video = !ffmpegExecutable().isEmpty();
+  if (!askTurntableOptions(this, options))
   {
     return;
   }
-  TurntableOptions options;
-  options.prefix = pathEdit->text();
-  options.frames = frames->value();
-  options.width = width->value();
-  options.height = height->value();
-  options.elevationDegrees = elevation->value();
-  options.video = video->isChecked();
   TurntableResult result;
   if (!attempt([&] { result = exportTurntableFrames(options); }))
   {
@@ -1319,9 +1260,9 @@ void MainWindow::chooseAndExportTurntable()
   }
   if (result.cancelled)
   {
-    statusBar()->showMessage(tr("Turntable cancelled after %n frames", nullptr,
-                                static_cast<int>(result.frames.size())),
-                             8000);
+    statusBar()->showMessage(
+        tr("Turntable cancelled after %n frames", nullptr, static_cast<int>(result.frames.size())),
+        8000);
   }
   else if (!result.videoError.isEmpty())
   {

@@ -19,7 +19,7 @@ struct Preferences
   // Screenshots and turntables are offered in this folder; empty: the user's Pictures folder.
   // Each export sets it to the folder written to.
   QString screenshotFolder;
-  int recentCount = 8; // files File > Open Recent keeps, 0 to 30
+  int recentCount = 8;      // files File > Open Recent keeps, 0 to 30
   bool clearRecent = false; // applying empties File > Open Recent
   // The lookup tables' cache (core/lut/lut_cache.h): bytes kept in memory and on disk, MiB.
   int lutMemoryMiB = 256;

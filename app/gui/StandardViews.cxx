@@ -66,8 +66,8 @@ CameraState framedCamera(const glm::dvec3& direction, const DrawingFrame& drawin
   ViewSettings view;
   view.direction = direction;
   view.parallel = current.parallel;
-  view.viewAngleDegrees = current.viewAngle > 0.0 && current.viewAngle < 180.0 ? current.viewAngle
-                                                                               : 30.0;
+  view.viewAngleDegrees =
+      current.viewAngle > 0.0 && current.viewAngle < 180.0 ? current.viewAngle : 30.0;
   // placeCamera fits the sphere's height; a window narrower than high needs more room.
   if (width > 0 && height > 0 && width < height)
   {
@@ -76,8 +76,7 @@ CameraState framedCamera(const glm::dvec3& direction, const DrawingFrame& drawin
   return stateOf(placeCamera(view, drawing.centre, drawing.radius));
 }
 
-CameraState frameAll(const CameraState& current, const DrawingFrame& drawing, int width,
-                     int height)
+CameraState frameAll(const CameraState& current, const DrawingFrame& drawing, int width, int height)
 {
   glm::dvec3 direction = vec(current.position) - vec(current.focalPoint);
   if (!(glm::length(direction) > 0.0) || !std::isfinite(glm::length(direction)))

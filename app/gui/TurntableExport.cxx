@@ -5,10 +5,21 @@
 #include "core/error.h"
 #include "core/image/image.h"
 
+#include <QCheckBox>
+#include <QDialog>
+#include <QDialogButtonBox>
 #include <QDir>
+#include <QDoubleSpinBox>
+#include <QFileDialog>
 #include <QFileInfo>
+#include <QFormLayout>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QLineEdit>
 #include <QProcess>
+#include <QSpinBox>
 #include <QStandardPaths>
+#include <QToolButton>
 #include <algorithm>
 #include <cmath>
 
@@ -99,11 +110,11 @@ QString encodeVideo(const TurntableOptions& o, QString& video)
   const QString path = o.prefix + ".mp4";
   QProcess process;
   process.setProcessChannelMode(QProcess::MergedChannels);
-  process.start(ffmpeg, {"-y", "-loglevel", "error", "-framerate",
-                         QString::number(o.framesPerSecond), "-i",
-                         o.prefix + "_%0" + QString::number(digitsFor(o.frames)) + "d.png",
-                         // yuv420p, which players expect, needs even sizes.
-                         "-vf", "pad=ceil(iw/2)*2:ceil(ih/2)*2", "-pix_fmt", "yuv420p", path});
+  process.start(ffmpeg,
+                {"-y", "-loglevel", "error", "-framerate", QString::number(o.framesPerSecond), "-i",
+                 o.prefix + "_%0" + QString::number(digitsFor(o.frames)) + "d.png",
+                 // yuv420p, which players expect, needs even sizes.
+                 "-vf", "pad=ceil(iw/2)*2:ceil(ih/2)*2", "-pix_fmt", "yuv420p", path});
   if (!process.waitForFinished(600000) || process.exitStatus() != QProcess::NormalExit ||
       process.exitCode() != 0)
   {
@@ -153,5 +164,79 @@ TurntableResult exportTurntable(RenderSettings settings, const std::vector<Camer
     result.videoError = encodeVideo(options, result.video);
   }
   return result;
+}
+
+bool askTurntableOptions(QWidget* parent, TurntableOptions& options)
+{
+  QDialog dialog(parent);
+  dialog.setWindowTitle(QObject::tr("Export turntable"));
+  auto* pathEdit = new QLineEdit(options.prefix, &dialog);
+  pathEdit->setToolTip(QObject::tr("Frames PREFIX_0000.png, …; the video PREFIX.mp4"));
+  auto* browse = new QToolButton(&dialog);
+  browse->setText(QObject::tr("…"));
+  auto* pathRow = new QWidget(&dialog);
+  auto* pathLayout = new QHBoxLayout(pathRow);
+  pathLayout->setContentsMargins(0, 0, 0, 0);
+  pathLayout->addWidget(pathEdit, 1);
+  pathLayout->addWidget(browse);
+  QObject::connect(browse, &QToolButton::clicked, &dialog,
+                   [&dialog, pathEdit]
+                   {
+                     const QString chosen = QFileDialog::getSaveFileName(
+                         &dialog, QObject::tr("Export turntable"), pathEdit->text(),
+                         QObject::tr("PNG frames (*)"));
+                     if (!chosen.isEmpty())
+                     {
+                       pathEdit->setText(chosen);
+                     }
+                   });
+  auto* frames = new QSpinBox(&dialog);
+  frames->setRange(1, 3600);
+  frames->setValue(options.frames);
+  auto* width = new QSpinBox(&dialog);
+  width->setRange(16, 8192);
+  width->setValue(options.width);
+  auto* height = new QSpinBox(&dialog);
+  height->setRange(16, 8192);
+  height->setValue(options.height);
+  auto* sizeRow = new QWidget(&dialog);
+  auto* sizeLayout = new QHBoxLayout(sizeRow);
+  sizeLayout->setContentsMargins(0, 0, 0, 0);
+  sizeLayout->addWidget(width);
+  sizeLayout->addWidget(new QLabel(QObject::tr("×"), &dialog));
+  sizeLayout->addWidget(height);
+  auto* elevation = new QDoubleSpinBox(&dialog);
+  elevation->setRange(-89.0, 89.0);
+  elevation->setSuffix(QObject::tr("°"));
+  elevation->setValue(options.elevationDegrees);
+  const bool ffmpeg = !ffmpegExecutable().isEmpty();
+  auto* video =
+      new QCheckBox(ffmpeg ? QObject::tr("Also a video (PREFIX.mp4, %1 frames per second)")
+                                 .arg(options.framesPerSecond)
+                           : QObject::tr("A video needs ffmpeg, which is not installed"),
+                    &dialog);
+  video->setChecked(ffmpeg && options.video);
+  video->setEnabled(ffmpeg);
+  auto* buttons = new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel, &dialog);
+  QObject::connect(buttons, &QDialogButtonBox::accepted, &dialog, &QDialog::accept);
+  QObject::connect(buttons, &QDialogButtonBox::rejected, &dialog, &QDialog::reject);
+  auto* form = new QFormLayout(&dialog);
+  form->addRow(QObject::tr("Files"), pathRow);
+  form->addRow(QObject::tr("Frames"), frames);
+  form->addRow(QObject::tr("Size"), sizeRow);
+  form->addRow(QObject::tr("Elevation"), elevation);
+  form->addRow(QString(), video);
+  form->addRow(buttons);
+  if (dialog.exec() != QDialog::Accepted)
+  {
+    return false;
+  }
+  options.prefix = pathEdit->text();
+  options.frames = frames->value();
+  options.width = width->value();
+  options.height = height->value();
+  options.elevationDegrees = elevation->value();
+  options.video = video->isChecked();
+  return true;
 }
 } // namespace aniso

@@ -11,6 +11,8 @@
 #include <functional>
 #include <vector>
 
+class QWidget;
+
 namespace aniso
 {
 struct TurntableOptions
@@ -37,9 +39,9 @@ QString ffmpegExecutable();
 
 struct TurntableResult
 {
-  QStringList frames;  // the PNGs written
-  QString video;       // the video written, or empty
-  QString videoError;  // why no video was written when one was asked for (empty: none asked)
+  QStringList frames; // the PNGs written
+  QString video;      // the video written, or empty
+  QString videoError; // why no video was written when one was asked for (empty: none asked)
   bool cancelled = false;
 };
 
@@ -51,6 +53,11 @@ struct TurntableResult
 TurntableResult exportTurntable(RenderSettings settings, const std::vector<CameraState>& cameras,
                                 const TurntableOptions& options,
                                 const std::function<bool(int)>& progress);
+
+// File > Export Turntable's dialog (titled "Export turntable"): the files' prefix, N, the size,
+// the elevation and the video (offered only where ffmpeg is found), showing OPTIONS and editing
+// them. False when cancelled (OPTIONS unchanged then).
+bool askTurntableOptions(QWidget* parent, TurntableOptions& options);
 
 // Throws aniso::Error "SUBJECT: reason" for options out of range.
 void checkTurntableOptions(const TurntableOptions& options, const std::string& subject);

@@ -36,9 +36,9 @@ double meanDifference(const aniso::Image& a, const aniso::Image& b)
   return sum / double(a.data.size());
 }
 
-const std::vector<std::string> kScene = {"render",    "--builtin", "torus", "--size",
-                                         "48x32",     "--frames",  "1",     "--samples",
-                                         "4",         "--jitter",  "off"};
+const std::vector<std::string> kScene = {"render", "--builtin", "torus", "--size",
+                                         "48x32",  "--frames",  "1",     "--samples",
+                                         "4",      "--jitter",  "off"};
 
 std::vector<std::string> with(std::vector<std::string> args, const std::vector<std::string>& more)
 {
@@ -62,8 +62,8 @@ TEST_F(RenderTurntableCli, WritesNumberedImagesOfTheTurnedViews)
   }
   EXPECT_FALSE(aniso_test::fs::exists(path("spin.png")));
   // Image 1 is the view from 30 + 120 degrees, rendered on its own.
-  const Outcome plain = run(with(kScene, {"--azimuth", "150", "--elevation", "20", "-o",
-                                          path("plain.png").string()}));
+  const Outcome plain = run(
+      with(kScene, {"--azimuth", "150", "--elevation", "20", "-o", path("plain.png").string()}));
   ASSERT_EQ(plain.exitCode, 0) << plain.err;
   const aniso::Image reference = aniso::readImage(path("plain.png").string());
   EXPECT_LE(maxDifference(images[1], reference), 1.5 / 255.0);
@@ -73,8 +73,8 @@ TEST_F(RenderTurntableCli, WritesNumberedImagesOfTheTurnedViews)
 
 TEST_F(RenderTurntableCli, NotWithCompare)
 {
-  const Outcome r = run(with(kScene, {"--turntable", "3", "--compare", "as,ward", "-o",
-                                      path("spin.png").string()}));
+  const Outcome r = run(
+      with(kScene, {"--turntable", "3", "--compare", "as,ward", "-o", path("spin.png").string()}));
   EXPECT_EQ(r.exitCode, 2);
   EXPECT_NE(r.err.find("--turntable"), std::string::npos) << r.err;
   EXPECT_TRUE(files().empty());

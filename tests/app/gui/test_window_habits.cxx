@@ -6,9 +6,10 @@
 // QSettings (a scope of the test's own), out-of-range values are clamped, and applied ones take
 // effect (the recent files trimmed or cleared, screenshots offered in the chosen folder); the
 // turntable writes N PNGs of the requested size whose first frame is the screenshot of the view
-// at its azimuth and whose frames differ, and where ffmpeg is installed a video of those frames; a load running past 0.5 s shows progress, and Cancel
-// drops it with the scene kept, while a quick one never shows; Cancel of an environment bake
-// or of a lookup-table bake takes back the edit that started it.
+// at its azimuth and whose frames differ, and where ffmpeg is installed a video of those frames; a
+// load running past 0.5 s shows progress, and Cancel drops it with the scene kept, while a quick
+// one never shows; Cancel of an environment bake or of a lookup-table bake takes back the edit that
+// started it.
 #include "app/gui/BackgroundLoader.h"
 #include "app/gui/MainWindow.h"
 #include "app/gui/PreferencesDialog.h"
@@ -361,12 +362,10 @@ private slots:
     QCOMPARE(result.video, dir.filePath("spin.mp4"));
     // What ffprobe, reading the file on its own, finds in it.
     QProcess probe;
-    probe.start(ffprobe, {"-v", "error", "-count_frames", "-select_streams", "v:0",
-                          "-show_entries", "stream=nb_read_frames,width,height", "-of",
-                          "csv=p=0", result.video});
+    probe.start(ffprobe, {"-v", "error", "-count_frames", "-select_streams", "v:0", "-show_entries",
+                          "stream=nb_read_frames,width,height", "-of", "csv=p=0", result.video});
     QVERIFY(probe.waitForFinished(30000));
-    QCOMPARE(QString::fromLocal8Bit(probe.readAllStandardOutput()).trimmed(),
-             QString("64,40,5"));
+    QCOMPARE(QString::fromLocal8Bit(probe.readAllStandardOutput()).trimmed(), QString("64,40,5"));
   }
 
   void slowLoadShowsProgressAndCancelKeepsTheScene()
@@ -405,8 +404,8 @@ private slots:
 
     // A quick load never shows progress.
     delivered = false;
-    window.loader()->load("open mesh", "quick.ply", [](aniso::SceneAssets&) {},
-                          [&] { delivered = true; });
+    window.loader()->load(
+        "open mesh", "quick.ply", [](aniso::SceneAssets&) {}, [&] { delivered = true; });
     QTRY_VERIFY_WITH_TIMEOUT(delivered, 5000);
     QVERIFY(!progress->shown());
     QTest::qWait(aniso::ProgressReporter::kShowAfterMs + 100);
