@@ -12,17 +12,22 @@
 
 namespace aniso::cli
 {
-std::string turntableFramePath(const std::string& output, int frame, int frames)
+int turntableDigits(int frames)
 {
   int digits = 4;
   for (long long n = 10000; frames > n; n *= 10)
   {
     ++digits;
   }
+  return digits;
+}
+
+std::string turntableFramePath(const std::string& output, int frame, int frames)
+{
   const std::filesystem::path path(output);
   std::ostringstream name;
-  name << path.stem().string() << '_' << std::setw(digits) << std::setfill('0') << frame
-       << path.extension().string();
+  name << path.stem().string() << '_' << std::setw(turntableDigits(frames)) << std::setfill('0')
+       << frame << path.extension().string();
   return (path.parent_path() / name.str()).string();
 }
 

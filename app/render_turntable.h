@@ -10,7 +10,9 @@
 
 namespace aniso::cli
 {
-// OUTPUT's stem, _ and K in four digits (more when N needs them), OUTPUT's extension.
+// The digits of the images' numbers: four, more when N needs them.
+int turntableDigits(int frames);
+// OUTPUT's stem, _ and K in turntableDigits(N) digits, OUTPUT's extension.
 std::string turntableFramePath(const std::string& output, int frame, int frames);
 
 // RESULT written to OUTPUT by its extension: .exr linear RGBA float; else the displayed 8-bit

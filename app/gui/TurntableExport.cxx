@@ -2,8 +2,8 @@
 
 #include "app/gui/StandardViews.h"
 #include "app/gui/ViewCamera.h"
+#include "app/render_turntable.h"
 #include "core/error.h"
-#include "core/image/image.h"
 
 #include <QCheckBox>
 #include <QDialog>
@@ -25,29 +25,6 @@
 
 namespace aniso
 {
-namespace
-{
-Image rgbOf(const Image& rgba)
-{
-  Image rgb(rgba.width, rgba.height, 3);
-  for (std::size_t i = 0, n = std::size_t(rgb.width) * rgb.height; i < n; ++i)
-  {
-    std::copy_n(&rgba.data[i * 4], 3, &rgb.data[i * 3]);
-  }
-  return rgb;
-}
-
-int digitsFor(int frames)
-{
-  int digits = 4;
-  for (int n = 10000; frames > n && digits < 9; n *= 10)
-  {
-    ++digits;
-  }
-  return digits;
-}
-} // namespace
-
 void checkTurntableOptions(const TurntableOptions& o, const std::string& subject)
 {
   if (o.frames < 1 || o.frames > 3600)
@@ -89,7 +66,9 @@ std::vector<CameraState> turntableCameras(const CameraState& start, const Drawin
 
 QString turntableFramePath(const QString& prefix, int frame, int frames)
 {
-  return QString("%1_%2.png").arg(prefix).arg(frame, digitsFor(frames), 10, QChar('0'));
+  // The command line's names (aniso render --turntable -o PREFIX.png).
+  return QString::fromStdString(
+      cli::turntableFramePath((prefix + ".png").toStdString(), frame, frames));
 }
 
 QString ffmpegExecutable()
@@ -112,7 +91,7 @@ QString encodeVideo(const TurntableOptions& o, QString& video)
   process.setProcessChannelMode(QProcess::MergedChannels);
   process.start(ffmpeg,
                 {"-y", "-loglevel", "error", "-framerate", QString::number(o.framesPerSecond), "-i",
-                 o.prefix + "_%0" + QString::number(digitsFor(o.frames)) + "d.png",
+                 o.prefix + "_%0" + QString::number(cli::turntableDigits(o.frames)) + "d.png",
                  // yuv420p, which players expect, needs even sizes.
                  "-vf", "pad=ceil(iw/2)*2:ceil(ih/2)*2", "-pix_fmt", "yuv420p", path});
   if (!process.waitForFinished(600000) || process.exitStatus() != QProcess::NormalExit ||
@@ -151,7 +130,9 @@ TurntableResult exportTurntable(RenderSettings settings, const std::vector<Camer
     settings.camera = placementOf(cameras[std::size_t(k)]);
     const RenderResult frame = renderOffscreen(settings);
     const QString path = turntableFramePath(options.prefix, k, n);
-    writeImage(path.toStdString(), rgbOf(frame.display));
+    // As screenshots are written: alpha only with a transparent background.
+    cli::writeRendered(path.toStdString(), frame,
+                       settings.display.background == BackgroundMode::Transparent);
     result.frames << path;
   }
   if (progress && !progress(n))
