@@ -2,14 +2,14 @@
 // shortcut triggers its action, seen by its effect (Undo and Redo take an edit back and forth;
 // Ctrl+1..6 look from -Y, +Y, -X, +X, +Z, -Z at the parts' centre; Home frames the parts at the
 // distance the field of view needs, the direction kept; Ctrl+R forgets the camera; Open, Save,
-// Export Screenshot and Preferences open their dialogs); the preferences round-trip through
-// QSettings (a scope of the test's own), out-of-range values are clamped, and applied ones take
-// effect (the recent files trimmed or cleared, screenshots offered in the chosen folder); the
-// turntable writes N PNGs of the requested size whose first frame is the screenshot of the view
-// at its azimuth and whose frames differ, and where ffmpeg is installed a video of those frames; a
-// load running past 0.5 s shows progress, and Cancel drops it with the scene kept, while a quick
-// one never shows; Cancel of an environment bake or of a lookup-table bake takes back the edit that
-// started it.
+// Export Screenshot, Export Turntable and Preferences open their dialogs); the preferences
+// round-trip through QSettings (a scope of the test's own), out-of-range values are clamped, and
+// applied ones take effect (the recent files trimmed or cleared, screenshots offered in the chosen
+// folder); the turntable writes N PNGs of the requested size whose first frame is the screenshot of
+// the view at its azimuth and whose frames differ, and where ffmpeg is installed a video of those
+// frames; a load running past 0.5 s shows progress, and Cancel drops it with the scene kept, while
+// a quick one never shows; Cancel of an environment bake or of a lookup-table bake takes back the
+// edit that started it.
 #include "app/gui/BackgroundLoader.h"
 #include "app/gui/MainWindow.h"
 #include "app/gui/PreferencesDialog.h"
