@@ -14,6 +14,7 @@
 #include "vtkpasses/mesh/MeshLoader.h"
 #include "vtkpasses/render/LitModelMaterial.h"
 #include "vtkpasses/render/OffscreenRenderer.h"
+#include "vtkpasses/render/ViewSettings.h"
 #include "widgets/EnvironmentDock.h"
 #include "widgets/LightsDock.h"
 #include "widgets/LutView.h"
@@ -333,6 +334,15 @@ void MainWindow::createMenus()
   viewMenu->addSeparator();
   viewMenu->addAction(
       tr("Reset &Camera"), this, [this] { view_->resetCamera(); }, QKeySequence(tr("Ctrl+R")));
+  // The named views, as `aniso render --view` names them.
+  QMenu* views = viewMenu->addMenu(tr("&Standard Views"));
+  for (const ViewPreset& preset : viewPresets())
+  {
+    QAction* action =
+        views->addAction(QString::fromStdString(preset.label), this,
+                         [this, name = preset.name] { view_->showView(name); });
+    action->setData(QString::fromStdString(preset.name));
+  }
   viewMenu->addAction(tr("Compare &Models"), this, &MainWindow::showCompareWindow);
 }
 
