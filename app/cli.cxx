@@ -499,9 +499,8 @@ std::string helpText(const Command& command, std::size_t terminal)
 
   // Groups in their fixed order, then any other heading in the order of its first option, then
   // the options of no group with --help.
-  std::vector<std::string> order = {kGroupScene,    kGroupView,     kGroupMaterial,
-                                    kGroupMaps,     kGroupLighting, kGroupSampling,
-                                    kGroupModels,   kGroupOutput};
+  std::vector<std::string> order = {kGroupScene,    kGroupView,     kGroupMaterial, kGroupMaps,
+                                    kGroupLighting, kGroupSampling, kGroupModels,   kGroupOutput};
   std::map<std::string, std::string> rows;
   for (const auto& option : command.options)
   {

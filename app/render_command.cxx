@@ -136,21 +136,27 @@ Command renderCommand()
   {
     c.options.push_back(declared(name));
   }
-  c.options.push_back(in(kGroupSampling, numberOption(
-      "--frames", "N", ParameterType::Integer, 4.0, 1.0, 65536.0, {},
-      "progressive frames accumulated, each with a rotated sample set (N x samples per pixel)")));
+  c.options.push_back(in(
+      kGroupSampling, numberOption("--frames", "N", ParameterType::Integer, 4.0, 1.0, 65536.0, {},
+                                   "progressive frames accumulated, each with a rotated sample set "
+                                   "(N x samples per pixel)")));
   // The error target's default and range are the declared error-target's (the window's).
   const ParameterSpec& errorTarget = parameterSpec("error-target");
-  c.options.push_back(in(kGroupSampling, numberOption(
-      "--quality", "ERR", errorTarget.type, errorTarget.defaultValue[0], errorTarget.minimum,
-      errorTarget.maximum, errorTarget.unit,
-      "error target instead of --samples: the relative L2 error of one frame (0.01 = 1%); the "
-      "samples follow from the material's roughness and filtering, by the error model that "
-      "'aniso bench' measured")));
-  c.options.push_back(in(kGroupMaps, textOption(
-      "--normal-map", "FILE",
-      "tangent-space normal map; its quaternion map is baked and used unless --bump normal")));
-  c.options.push_back(in(kGroupMaps,
+  c.options.push_back(in(
+      kGroupSampling,
+      numberOption(
+          "--quality", "ERR", errorTarget.type, errorTarget.defaultValue[0], errorTarget.minimum,
+          errorTarget.maximum, errorTarget.unit,
+          "error target instead of --samples: the relative L2 error of one frame (0.01 = 1%); the "
+          "samples follow from the material's roughness and filtering, by the error model that "
+          "'aniso bench' measured")));
+  c.options.push_back(in(
+      kGroupMaps,
+      textOption(
+          "--normal-map", "FILE",
+          "tangent-space normal map; its quaternion map is baked and used unless --bump normal")));
+  c.options.push_back(in(
+      kGroupMaps,
       textOption("--quaternion-map", "FILE",
                  "quaternion map (a, b, c), stored like a normal map (8/16-bit files as 2c - 1)")));
   Option bump = textOption(
@@ -161,13 +167,17 @@ Command renderCommand()
   bump.choices = {"quaternion", "normal"};
   bump.group = kGroupMaps;
   c.options.push_back(bump);
-  c.options.push_back(in(kGroupMaps, textOption(
-      "--tpr", "PATTERN|FILE",
-      "tangent-plane rotation map: a file (2 channels x, y, or 1 channel angle in [0, pi]) or a "
-      "pattern linear[:ANGLE], circular[:U,V], radial[:U,V], spiral[:U,V[:PITCH]], wave")));
-  c.options.push_back(in(kGroupMaps,
-      textOption("--height-map", "FILE",
-                 "height map (first channel, 1 = top) for parallax occlusion mapping")));
+  c.options.push_back(
+      in(kGroupMaps,
+         textOption(
+             "--tpr", "PATTERN|FILE",
+             "tangent-plane rotation map: a file (2 channels x, y, or 1 channel angle in [0, pi]) "
+             "or a "
+             "pattern linear[:ANGLE], circular[:U,V], radial[:U,V], spiral[:U,V[:PITCH]], wave")));
+  c.options.push_back(
+      in(kGroupMaps,
+         textOption("--height-map", "FILE",
+                    "height map (first channel, 1 = top) for parallax occlusion mapping")));
   // Option help is a string_view: the composed text must outlive the command table.
   static const std::string tangentsHelp =
       "tangent field: " + spacedChoices(brushingModelSyntax()) +
@@ -177,13 +187,17 @@ Command renderCommand()
   // length.
   static const std::string deflectionDefault =
       formatNumber(parameterSpec("cad-deflection").defaultValue[0]);
-  c.options.push_back(in(kGroupScene, textOption(
-      "--cad-deflection", "F|Lmm",
-      "STEP and IGES: the largest distance of a triangle from its face, as a fraction F of each "
-      "part's bounding-box diagonal (0.0005: finer) or as a length in millimetres (0.05mm)",
-      deflectionDefault)));
+  c.options.push_back(
+      in(kGroupScene,
+         textOption(
+             "--cad-deflection", "F|Lmm",
+             "STEP and IGES: the largest distance of a triangle from its face, as a fraction F of "
+             "each "
+             "part's bounding-box diagonal (0.0005: finer) or as a length in millimetres (0.05mm)",
+             deflectionDefault)));
   c.options.push_back(parameterOption("cad-angle"));
-  c.options.push_back(in(kGroupOutput, textOption("--size", "WxH", "image size in pixels", "512x512")));
+  c.options.push_back(
+      in(kGroupOutput, textOption("--size", "WxH", "image size in pixels", "512x512")));
   // The named views are the window's View menu's (viewPresets); help texts are string_views.
   static const std::string viewHelp =
       "camera looking at the centre, Z up: three-quarter (from the front left, azimuth " +
@@ -198,17 +212,18 @@ Command renderCommand()
     view.choices.push_back(preset.name);
   }
   c.options.push_back(view);
-  c.options.push_back(in(kGroupView,
-      numberOption("--azimuth", "DEG", ParameterType::Real, 0.0, -360.0, 360.0, "deg",
-                   "camera direction instead of --view: 0 on the -Y side, 90 on +X")));
-  c.options.push_back(in(kGroupView, numberOption("--elevation", "DEG", ParameterType::Real, 0.0, -90.0, 90.0,
-                                   "deg", "camera height above the XY plane, with --azimuth")));
+  c.options.push_back(in(
+      kGroupView, numberOption("--azimuth", "DEG", ParameterType::Real, 0.0, -360.0, 360.0, "deg",
+                               "camera direction instead of --view: 0 on the -Y side, 90 on +X")));
+  c.options.push_back(
+      in(kGroupView, numberOption("--elevation", "DEG", ParameterType::Real, 0.0, -90.0, 90.0,
+                                  "deg", "camera height above the XY plane, with --azimuth")));
   c.options.push_back(
       in(kGroupView, flagOption("--ortho", "parallel projection (the view fits the object)")));
-  c.options.push_back(in(kGroupOutput, textOption(
-      "--background", "env|none|R,G,B",
-      "behind the object: the environment, nothing (transparent PNG), or a uniform linear radiance",
-      "env")));
+  c.options.push_back(in(kGroupOutput, textOption("--background", "env|none|R,G,B",
+                                                  "behind the object: the environment, nothing "
+                                                  "(transparent PNG), or a uniform linear radiance",
+                                                  "env")));
   Option jitter = textOption(
       "--jitter", "on|off",
       "sub-pixel camera jitter between frames (anti-aliased edges, fractional coverage)", "on");
@@ -223,15 +238,19 @@ Command renderCommand()
   output.required = true;
   output.group = kGroupOutput;
   c.options.push_back(output);
-  c.options.push_back(in(kGroupOutput, textOption(
-      "--export-gltf", "FILE",
-      "write the scene's visible parts as glTF 2.0 (.glb, or .gltf with its buffer inside): "
-      "each part's prepared surface (normals, tangents, UVs) in its own frame, its placement as "
-      "its node's matrix, and the material it is drawn with, the library's or the command "
-      "line's, as metallic-roughness with KHR_materials_anisotropy (maps are not written); "
-      "besides the image, or instead of it without -o")));
   c.options.push_back(
-      in(kGroupOutput, flagOption("--time", "print the median frame time and the samples per second")));
+      in(kGroupOutput,
+         textOption(
+             "--export-gltf", "FILE",
+             "write the scene's visible parts as glTF 2.0 (.glb, or .gltf with its buffer inside): "
+             "each part's prepared surface (normals, tangents, UVs) in its own frame, its "
+             "placement as "
+             "its node's matrix, and the material it is drawn with, the library's or the command "
+             "line's, as metallic-roughness with KHR_materials_anisotropy (maps are not written); "
+             "besides the image, or instead of it without -o")));
+  c.options.push_back(
+      in(kGroupOutput,
+         flagOption("--time", "print the median frame time and the samples per second")));
   addPartOptions(c);
   addModelOptions(c);
   c.details = "Examples:\n"

@@ -338,9 +338,8 @@ void MainWindow::createMenus()
   QMenu* views = viewMenu->addMenu(tr("&Standard Views"));
   for (const ViewPreset& preset : viewPresets())
   {
-    QAction* action =
-        views->addAction(QString::fromStdString(preset.label), this,
-                         [this, name = preset.name] { view_->showView(name); });
+    QAction* action = views->addAction(QString::fromStdString(preset.label), this,
+                                       [this, name = preset.name] { view_->showView(name); });
     action->setData(QString::fromStdString(preset.name));
   }
   viewMenu->addAction(tr("Compare &Models"), this, &MainWindow::showCompareWindow);

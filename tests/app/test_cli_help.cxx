@@ -100,17 +100,16 @@ protected:
 
 TEST_F(CliHelp, EverySubcommandFitsEightyColumns)
 {
-  const std::vector<std::vector<std::string>> commands = {
-      {"--help"},
-      {"bake", "--help"},
-      {"bake", "halfvector", "--help"},
-      {"bake", "brdf", "--help"},
-      {"bake", "quaternion", "--help"},
-      {"bake", "tpr", "--help"},
-      {"bake", "cubemap", "--help"},
-      {"bake", "irradiance", "--help"},
-      {"render", "--help"},
-      {"bench", "--help"}};
+  const std::vector<std::vector<std::string>> commands = {{"--help"},
+                                                          {"bake", "--help"},
+                                                          {"bake", "halfvector", "--help"},
+                                                          {"bake", "brdf", "--help"},
+                                                          {"bake", "quaternion", "--help"},
+                                                          {"bake", "tpr", "--help"},
+                                                          {"bake", "cubemap", "--help"},
+                                                          {"bake", "irradiance", "--help"},
+                                                          {"render", "--help"},
+                                                          {"bench", "--help"}};
   for (const auto& args : commands)
   {
     std::string what = "aniso";
@@ -141,9 +140,9 @@ TEST_F(CliHelp, RenderOptionsAreGrouped)
 {
   const std::string text = help({"render", "--help"}, "80").out;
   std::size_t previous = 0;
-  for (const char* heading : {"\nScene:\n", "\nView:\n", "\nMaterial:\n", "\nMaps:\n",
-                              "\nLighting:\n", "\nSampling:\n", "\nModels:\n", "\nOutput:\n",
-                              "\nOptions:\n"})
+  for (const char* heading :
+       {"\nScene:\n", "\nView:\n", "\nMaterial:\n", "\nMaps:\n", "\nLighting:\n", "\nSampling:\n",
+        "\nModels:\n", "\nOutput:\n", "\nOptions:\n"})
   {
     const std::size_t at = text.find(heading);
     ASSERT_NE(at, std::string::npos) << heading;
@@ -156,7 +155,8 @@ TEST_F(CliHelp, RenderOptionsAreGrouped)
     const std::size_t at = text.find("\n  " + option + " ");
     EXPECT_NE(at, std::string::npos) << option;
     const std::size_t heading = text.rfind(":\n", at);
-    return text.substr(text.rfind('\n', heading - 1) + 1, heading - text.rfind('\n', heading - 1) - 1);
+    return text.substr(text.rfind('\n', heading - 1) + 1,
+                       heading - text.rfind('\n', heading - 1) - 1);
   };
   EXPECT_EQ(headingOf("--builtin"), "Scene");
   EXPECT_EQ(headingOf("--cad-angle"), "Scene");
@@ -181,8 +181,8 @@ TEST(HelpText, ALongOptionDoesNotNarrowTheOthers)
   c.usage = "aniso try [options]";
   c.summary = "A summary long enough to be wrapped at the width of the terminal the help is "
               "printed to, word by word.";
-  aniso::cli::Option choice = aniso::cli::textOption(
-      "--a-rather-long-option-name", "WORD", "picks one of eight words", "one");
+  aniso::cli::Option choice = aniso::cli::textOption("--a-rather-long-option-name", "WORD",
+                                                     "picks one of eight words", "one");
   choice.choices = {"one", "two", "three", "four", "five", "six", "seven", "eight"};
   c.options.push_back(choice);
   c.options.push_back(aniso::cli::textOption(
@@ -191,8 +191,8 @@ TEST(HelpText, ALongOptionDoesNotNarrowTheOthers)
       "on about nothing in particular for a while"));
   const std::string text = aniso::cli::helpText(c, 80);
   EXPECT_NE(text.find("\n  --a-rather-long-option-name WORD\n" + std::string(30, ' ') +
-                      "picks one of eight words (default one)\n" +
-                      std::string(30, ' ') + "one of: one|two|three|four|five|six|seven|eight\n"),
+                      "picks one of eight words (default one)\n" + std::string(30, ' ') +
+                      "one of: one|two|three|four|five|six|seven|eight\n"),
             std::string::npos)
       << text;
   EXPECT_NE(text.find("\n  --short X" + std::string(30 - 11, ' ') + "a description long"),

@@ -229,13 +229,12 @@ TEST_F(RenderCli, FlatPartIsVisibleByDefault)
 {
   ANISO_REQUIRE_DISPLAY();
   const std::string seen = path("seen.png").string();
-  ASSERT_EQ(run({"render", "--builtin", "plate", "--background", "none", "--size", "48",
-                 "--frames", "1", "--samples", "1", "--jitter", "off", "-o", seen})
+  ASSERT_EQ(run({"render", "--builtin", "plate", "--background", "none", "--size", "48", "--frames",
+                 "1", "--samples", "1", "--jitter", "off", "-o", seen})
                 .exitCode,
             0);
-  const double expected =
-      plateCoverage(aniso::placeCamera(aniso::defaultViewSettings(), glm::dvec3(0.0),
-                                       std::sqrt(2.0)));
+  const double expected = plateCoverage(
+      aniso::placeCamera(aniso::defaultViewSettings(), glm::dvec3(0.0), std::sqrt(2.0)));
   const double share = covered(aniso::readImage(seen));
   EXPECT_GT(expected, 0.2);
   EXPECT_NEAR(share, expected, 0.03) << "default view";

@@ -34,12 +34,11 @@ aniso::CameraPlacement renderCamera(aniso::SceneView* view, std::vector<std::str
   args.insert(args.end(), {"--builtin", "plate", "-o", "out.png"});
   const int* size = view->renderer()->GetRenderWindow()->GetSize();
   return aniso::placeCamera(
-      aniso::fittedToFrame(aniso::cli::renderViewSettings(args), size[0], size[1]),
-      glm::dvec3(0.0), 1.0);
+      aniso::fittedToFrame(aniso::cli::renderViewSettings(args), size[0], size[1]), glm::dvec3(0.0),
+      1.0);
 }
 
-void compareCameras(vtkCamera* camera, const aniso::CameraPlacement& expected,
-                    const char* what)
+void compareCameras(vtkCamera* camera, const aniso::CameraPlacement& expected, const char* what)
 {
   double p[3], f[3], u[3];
   camera->GetPosition(p);
@@ -50,7 +49,8 @@ void compareCameras(vtkCamera* camera, const aniso::CameraPlacement& expected,
   QVERIFY2(glm::length(glm::dvec3(f[0], f[1], f[2]) - expected.focalPoint) < tolerance, what);
   // The view-up as it shows on screen: its part across the direction of projection.
   const glm::dvec3 forward = glm::normalize(expected.focalPoint - expected.position);
-  const auto across = [&](const glm::dvec3& v) { return glm::normalize(v - glm::dot(v, forward) * forward); };
+  const auto across = [&](const glm::dvec3& v)
+  { return glm::normalize(v - glm::dot(v, forward) * forward); };
   QVERIFY2(glm::length(across(glm::dvec3(u[0], u[1], u[2])) - across(expected.viewUp)) < 1e-6,
            what);
   QCOMPARE(camera->GetViewAngle(), expected.viewAngleDegrees);
