@@ -648,13 +648,17 @@ std::string kindNames()
 
 std::string bakeHelp()
 {
-  return "Usage: aniso bake KIND [options] -o OUTPUT\n\n"
-         "Bakes lookup tables, maps and environment data to files (32-bit float EXR, or "
-         "text).\n\nKinds:\n" +
-         bakeKindsSummary(2) +
-         "\nRun 'aniso bake KIND --help' for the options of a kind. Exit codes: 0 done, 1 "
-         "run-time\n"
-         "failure, 2 bad command line; on failure no output file is left behind.\n";
+  const std::size_t width = terminalWidth();
+  return "Usage: aniso bake KIND [options] -o OUTPUT\n\n" +
+         wrapText("Bakes lookup tables, maps and environment data to files (32-bit float EXR, "
+                  "or text).",
+                  0, width) +
+         "\n\nKinds:\n" + bakeKindsSummary(2) + "\n" +
+         wrapText("Run 'aniso bake KIND --help' for the options of a kind. Exit codes: 0 done, 1 "
+                  "run-time failure, 2 bad command line; on failure no output file is left "
+                  "behind.",
+                  0, width) +
+         "\n";
 }
 } // namespace
 
@@ -664,7 +668,8 @@ std::string bakeKindsSummary(int indent)
   for (const auto& kind : kinds())
   {
     s += std::string(static_cast<std::size_t>(indent), ' ') + kind.name +
-         std::string(12 - kind.name.size(), ' ') + kind.summary + "\n";
+         std::string(12 - kind.name.size(), ' ') +
+         wrapText(kind.summary, static_cast<std::size_t>(indent) + 12, terminalWidth()) + "\n";
   }
   return s;
 }

@@ -1,9 +1,14 @@
 #include "app/cli.h"
 
 #include <algorithm>
+#include <cctype>
+#include <cstdlib>
+#include <map>
 #include <new>
 #include <ostream>
 #include <sstream>
+#include <sys/ioctl.h>
+#include <unistd.h>
 
 namespace aniso::cli
 {
@@ -79,35 +84,149 @@ std::string rangeAndDefault(const Option& option)
   return parts.empty() ? std::string() : " (" + joined(parts, ", ") + ")";
 }
 
-constexpr std::size_t kHelpWidth = 100;
+// The column option descriptions start at, and the narrowest they may be.
+constexpr std::size_t kDescriptionColumn = 30;
+constexpr std::size_t kMinDescription = 40;
 
-// TEXT broken at spaces into lines of at most WIDTH columns, continuation lines indented to
-// INDENT (the first line starts there already).
-std::string wrapped(const std::string& text, std::size_t indent, std::size_t width)
+bool startsWith(std::string_view text, std::string_view prefix)
 {
-  const std::size_t room = width > indent + 20 ? width - indent : 20;
-  std::string out;
-  std::size_t column = 0;
-  std::istringstream words(text);
+  return text.substr(0, prefix.size()) == prefix;
+}
+
+// One option's rows: "  -o, --output FILE" and its description (range and default included),
+// then its choices, each wrapped at COLUMN to WIDTH.
+// "one of: a|b|c" from COLUMN, broken after a '|' where a line would pass WIDTH.
+std::string choiceRows(const std::vector<std::string>& choices, std::size_t column,
+                       std::size_t width)
+{
+  std::string out = std::string(column, ' ') + "one of: ";
+  std::size_t length = out.size();
+  for (std::size_t i = 0; i < choices.size(); ++i)
+  {
+    const std::string piece = choices[i] + (i + 1 < choices.size() ? "|" : "");
+    if (length + piece.size() > width && length > column + 8)
+    {
+      out += "\n" + std::string(column + 8, ' ');
+      length = column + 8;
+    }
+    out += piece;
+    length += piece.size();
+  }
+  return out + "\n";
+}
+
+std::string optionRows(const std::string& left, const std::string& description,
+                       const std::vector<std::string>& choices, std::size_t column,
+                       std::size_t width)
+{
+  std::string out = "  " + left;
+  if (2 + left.size() + 2 <= column)
+  {
+    out += std::string(column - 2 - left.size(), ' ');
+  }
+  else
+  {
+    out += "\n" + std::string(column, ' ');
+  }
+  out += wrapText(description, column, width) + "\n";
+  if (!choices.empty())
+  {
+    out += choiceRows(choices, column, width);
+  }
+  return out;
+}
+
+// A line of a help's details that is a command (indented): broken where it would pass WIDTH
+// into lines continued with " \\", each after the first indented by four more blanks.
+std::string wrappedCommandLine(const std::string& line, std::size_t width)
+{
+  const std::size_t indent = line.find_first_not_of(' ');
+  if (line.size() <= width || indent == std::string::npos)
+  {
+    return line + "\n";
+  }
+  std::string out = line.substr(0, indent);
+  std::size_t column = indent;
+  std::istringstream words(line.substr(indent));
   std::string word;
+  bool first = true;
   while (words >> word)
   {
-    if (column > 0 && column + 1 + word.size() > room)
+    if (!first && column + 1 + word.size() + 2 > width)
     {
-      out += "\n" + std::string(indent, ' ');
-      column = 0;
+      out += " \\\n" + std::string(indent + 4, ' ');
+      column = indent + 4;
     }
-    else if (column > 0)
+    else if (!first)
     {
       out += ' ';
       ++column;
     }
     out += word;
     column += word.size();
+    first = false;
   }
+  return out + "\n";
+}
+
+// A help's details wrapped to WIDTH: indented lines (commands) stay lines of their own
+// (wrappedCommandLine); other lines are rewrapped as paragraphs, a paragraph ending at a blank
+// or indented line, or where a line ending in '.' or ':' is followed by one starting with a
+// capital ("Output: ...", "Example: ...").
+std::string wrappedDetails(const std::string& text, std::size_t width)
+{
+  std::string out;
+  std::string paragraph;
+  const auto flush = [&]
+  {
+    if (!paragraph.empty())
+    {
+      out += wrapText(paragraph, 0, width) + "\n";
+      paragraph.clear();
+    }
+  };
+  std::istringstream lines(text);
+  for (std::string line; std::getline(lines, line);)
+  {
+    if (line.empty() || line.front() == ' ')
+    {
+      flush();
+      out += line.empty() ? "\n" : wrappedCommandLine(line, width);
+      continue;
+    }
+    const char last = paragraph.empty() ? ' ' : paragraph.back();
+    if ((last == '.' || last == ':') && std::isupper(static_cast<unsigned char>(line.front())))
+    {
+      flush();
+    }
+    paragraph += (paragraph.empty() ? "" : " ") + line;
+  }
+  flush();
   return out;
 }
 
+// The summary's paragraphs (separated by a blank line; single line breaks are blanks) wrapped.
+std::string wrappedParagraphs(const std::string& text, std::size_t width)
+{
+  std::string out;
+  std::size_t begin = 0;
+  while (begin <= text.size())
+  {
+    std::size_t end = text.find("\n\n", begin);
+    if (end == std::string::npos)
+    {
+      end = text.size();
+    }
+    std::string paragraph = text.substr(begin, end - begin);
+    std::replace(paragraph.begin(), paragraph.end(), '\n', ' ');
+    if (paragraph.find_first_not_of(' ') != std::string::npos)
+    {
+      out += (out.empty() ? "" : "\n") + wrapText(paragraph, 0, width) + "\n";
+    }
+    begin = end + 2;
+  }
+  return out;
+}
 } // namespace
 
 Option parameterOption(std::string_view parameter, std::string name, std::string_view help)
@@ -116,6 +235,7 @@ Option parameterOption(std::string_view parameter, std::string name, std::string
   option.spec = parameterSpec(parameter);
   option.name = name.empty() ? "--" + std::string(parameter) : std::move(name);
   option.valueName = valueNameOf(option.spec.type);
+  option.group = groupOf(option.spec);
   if (!help.empty())
   {
     option.spec.help = help;
@@ -296,40 +416,121 @@ Arguments parseArguments(const Command& command, const std::vector<std::string>&
   return parsed;
 }
 
+std::string groupOf(const ParameterSpec& spec)
+{
+  if (spec.affects(Affects::Meshes))
+  {
+    return kGroupScene;
+  }
+  if (spec.scope == ParameterScope::Material)
+  {
+    return spec.affects(Affects::Variant) ? kGroupMaps : kGroupMaterial;
+  }
+  if (spec.affects(Affects::Display))
+  {
+    return kGroupOutput;
+  }
+  if (spec.affects(Affects::Variant | Affects::Luts | Affects::Uniforms))
+  {
+    return kGroupSampling;
+  }
+  if (spec.affects(Affects::LitModels) || startsWith(spec.name, "env"))
+  {
+    return kGroupLighting;
+  }
+  return kGroupModels;
+}
+
+std::string wrapText(const std::string& text, std::size_t indent, std::size_t width)
+{
+  const std::size_t room = width > indent ? width - indent : 1;
+  std::string out;
+  std::size_t column = 0;
+  std::istringstream words(text);
+  std::string word;
+  while (words >> word)
+  {
+    if (column > 0 && column + 1 + word.size() > room)
+    {
+      out += "\n" + std::string(indent, ' ');
+      column = 0;
+    }
+    else if (column > 0)
+    {
+      out += ' ';
+      ++column;
+    }
+    out += word;
+    column += word.size();
+  }
+  return out;
+}
+
+std::size_t terminalWidth()
+{
+  if (const char* columns = std::getenv("COLUMNS"))
+  {
+    char* end = nullptr;
+    const long n = std::strtol(columns, &end, 10);
+    if (end != columns && *end == '\0' && n > 0 && n < 10000)
+    {
+      return static_cast<std::size_t>(n);
+    }
+  }
+  winsize size{};
+  if (isatty(STDOUT_FILENO) && ioctl(STDOUT_FILENO, TIOCGWINSZ, &size) == 0 && size.ws_col > 0)
+  {
+    return size.ws_col;
+  }
+  return 80;
+}
+
 std::string helpText(const Command& command)
 {
+  return helpText(command, terminalWidth());
+}
+
+std::string helpText(const Command& command, std::size_t terminal)
+{
+  // Room for the description column and 40 columns of description, however narrow the terminal.
+  const std::size_t width = std::max(terminal, kDescriptionColumn + kMinDescription);
   std::ostringstream s;
-  s << "Usage: " << command.usage << "\n\n" << command.summary << "\n";
-  std::vector<std::pair<std::string, std::string>> rows;
+  s << "Usage: " << command.usage << "\n\n" << wrappedParagraphs(command.summary, width);
+
+  // Groups in their fixed order, then any other heading in the order of its first option, then
+  // the options of no group with --help.
+  std::vector<std::string> order = {kGroupScene,    kGroupView,     kGroupMaterial, kGroupMaps,
+                                    kGroupLighting, kGroupSampling, kGroupModels,   kGroupOutput};
+  std::map<std::string, std::string> rows;
   for (const auto& option : command.options)
   {
+    const std::string group = command.grouped ? option.group : std::string();
     std::string left = (option.alias.empty() ? "" : option.alias + ", ") + option.name;
-    if (!option.valueName.empty() || !option.choices.empty())
+    if (!option.valueName.empty())
     {
-      left += " " + (option.choices.empty() ? option.valueName : joined(option.choices, "|"));
+      const bool chosen = !option.choices.empty();
+      left += " " + (chosen && option.valueName == "TEXT" ? std::string("WORD") : option.valueName);
     }
-    rows.emplace_back(left, std::string(option.spec.help) + rangeAndDefault(option));
+    if (!group.empty() && std::find(order.begin(), order.end(), group) == order.end())
+    {
+      order.push_back(group);
+    }
+    rows[group] += optionRows(left, std::string(option.spec.help) + rangeAndDefault(option),
+                              option.choices, kDescriptionColumn, width);
   }
-  rows.emplace_back("-h, --help", "show this help and exit");
-  std::size_t width = 0;
-  for (const auto& row : rows)
+  rows[""] += optionRows("-h, --help", "show this help and exit", {}, kDescriptionColumn, width);
+  order.push_back("");
+  for (const std::string& group : order)
   {
-    width = std::max(width, row.first.size());
-  }
-  s << "\nOptions:\n";
-  const std::size_t indent = 2 + width + 2;
-  for (const auto& row : rows)
-  {
-    s << "  " << row.first << std::string(width - row.first.size() + 2, ' ')
-      << wrapped(row.second, indent, kHelpWidth) << "\n";
+    const auto found = rows.find(group);
+    if (found != rows.end())
+    {
+      s << "\n" << (group.empty() ? std::string("Options") : group) << ":\n" << found->second;
+    }
   }
   if (!command.details.empty())
   {
-    s << "\n" << command.details;
-    if (command.details.back() != '\n')
-    {
-      s << "\n";
-    }
+    s << "\n" << wrappedDetails(command.details, width);
   }
   return s.str();
 }

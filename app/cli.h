@@ -5,6 +5,7 @@
 #include "core/error.h"
 #include "core/parameters/parameters.h"
 
+#include <cstddef>
 #include <functional>
 #include <glm/vec3.hpp>
 #include <map>
@@ -36,7 +37,29 @@ struct Option
   std::vector<std::string> choices; // allowed values of a text option, if restricted
   bool required = false;
   bool repeatable = false; // may be given more than once (Arguments::texts lists every value)
+  // The heading the option is listed under in a grouped help (Command::grouped): one of the
+  // kGroup names below. parameterOption derives it from the declaration (groupOf); an option
+  // the declaration does not cover states it where it is made.
+  std::string group;
 };
+
+// The headings of a grouped help, in the order it lists them (options of no group come last,
+// under "Options", with --help).
+inline constexpr const char* kGroupScene = "Scene";
+inline constexpr const char* kGroupView = "View";
+inline constexpr const char* kGroupMaterial = "Material";
+inline constexpr const char* kGroupMaps = "Maps";
+inline constexpr const char* kGroupLighting = "Lighting";
+inline constexpr const char* kGroupSampling = "Sampling";
+inline constexpr const char* kGroupModels = "Models";
+inline constexpr const char* kGroupOutput = "Output";
+
+// The group of a declared parameter, from what it is and what a change of it affects: a mesh
+// reading setting is the scene's; a material's value is the material's, or of its maps when it
+// changes the shader variant (bump); the display transform is the output's; the shader variant,
+// the lookup tables and the sample uniforms are sampling; the environment and what lights the lit
+// models is lighting; the rest (settings of the LEADR and microstructure models) the models'.
+std::string groupOf(const ParameterSpec& spec);
 
 // The option of declared parameter PARAMETER, named "--" + PARAMETER unless NAME is given
 // (the bake commands call lut-size just --size); HELP replaces the declared help if given.
@@ -56,6 +79,8 @@ struct Command
   // The last positional may be given more than once ("MESH..."): Arguments::positionals holds
   // every one given.
   bool lastPositionalRepeats = false;
+  // Lists the options under their groups' headings (Option::group) rather than all together.
+  bool grouped = false;
 };
 
 class Arguments
@@ -86,7 +111,22 @@ private:
 // Throws UsageError naming the argument.
 Arguments parseArguments(const Command& command, const std::vector<std::string>& args);
 
+// The help of COMMAND laid out for a terminal of WIDTH columns: the summary wrapped, each option
+// with its description beside it from column 30 (under it when the option's own text is longer),
+// wrapped, its choices on a line of their own; descriptions are never narrower than 40 columns
+// (a terminal narrower than 70 gets lines longer than itself rather than a slim column).
+std::string helpText(const Command& command, std::size_t width);
+// The same for the terminal the help is printed to (terminalWidth).
 std::string helpText(const Command& command);
+
+// Columns of the terminal standard output is: $COLUMNS when set to a number, else the
+// terminal's own width when standard output is one, else 80.
+std::size_t terminalWidth();
+
+// TEXT broken at blanks into lines that fit WIDTH columns, each line after the first starting
+// with INDENT spaces (the first starts at column INDENT already); no trailing newline. A word
+// longer than the room keeps its own line.
+std::string wrapText(const std::string& text, std::size_t indent, std::size_t width);
 
 // An image size "N" (square) or "WxH", each side in [1, maxSide]; throws UsageError
 // "SUBJECT: reason".

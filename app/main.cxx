@@ -13,18 +13,24 @@ namespace
 {
 std::string mainHelp()
 {
+  using aniso::cli::wrapText;
+  const std::size_t width = aniso::cli::terminalWidth();
+  const auto row = [&](const std::string& left, const std::string& text)
+  { return "  " + left + std::string(12 - left.size(), ' ') + wrapText(text, 14, width) + "\n"; };
   return "Usage: aniso [--help | --version] COMMAND [ARGS...]\n       " + aniso::gui::guiUsage() +
-         "  (opens the window)\n\n"
-         "aniso renders meshes with anisotropic Ashikhmin-Shirley materials under image-based\n"
-         "lighting.\n\n"
-         "Commands:\n"
-         "  bake KIND   bake lookup tables, maps and environment data to files, KIND one of:\n" +
-         aniso::cli::bakeKindsSummary(6) + "  render      " + aniso::cli::renderSummary() + "\n" +
-         "  bench       " + aniso::cli::benchSummary() + "\n" +
+         "\n\n" +
+         wrapText("aniso renders meshes with anisotropic Ashikhmin-Shirley materials under "
+                  "image-based lighting. Without a command it opens the window.",
+                  0, width) +
+         "\n\nCommands:\n" +
+         row("bake KIND", "bake lookup tables, maps and environment data; KIND one of:") +
+         aniso::cli::bakeKindsSummary(6) + row("render", aniso::cli::renderSummary()) +
+         row("bench", aniso::cli::benchSummary()) +
          "\nOptions:\n"
          "  -h, --help  show this help and exit\n"
-         "  --version   print the version and exit\n\n"
-         "Run 'aniso bake --help' or 'aniso bake KIND --help' for details.\n";
+         "  --version   print the version and exit\n\n" +
+         wrapText("Run 'aniso bake --help' or 'aniso bake KIND --help' for details.", 0, width) +
+         "\n";
 }
 
 int run(const std::vector<std::string>& args)

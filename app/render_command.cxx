@@ -48,16 +48,44 @@ const char* const kDeclared[] = {"env",          "env-rotation", "nu",       "nv
                                  "cube-size",    "height-scale", "exposure", "tone-mapping",
                                  "env-sampling"};
 
+// "a|b|c" as "a | b | c", so that help texts can wrap between the alternatives.
+std::string spacedChoices(const std::string& syntax)
+{
+  std::string out;
+  for (char ch : syntax)
+  {
+    out += ch == '|' ? std::string(" | ") : std::string(1, ch);
+  }
+  return out;
+}
+
+// OPTION listed under GROUP in the help.
+Option in(const char* group, Option option)
+{
+  option.group = group;
+  return option;
+}
+
 Option declared(const char* name)
 {
   Option o = parameterOption(name);
+  // The relief depth serves the height map; the cubemap's size is how the environment is
+  // sampled.
+  if (o.spec.name == "height-scale")
+  {
+    o.group = kGroupMaps;
+  }
+  if (o.spec.name == "cube-size")
+  {
+    o.group = kGroupSampling;
+  }
   for (std::string_view choice : o.spec.choices)
   {
     o.choices.emplace_back(choice);
   }
   if (std::string(name) == "env")
   {
-    o.valueName = "FILE|builtin:studio|builtin:sunsky";
+    o.valueName = "FILE|builtin:NAME";
   }
   return o;
 }
@@ -100,82 +128,114 @@ Command renderCommand()
               "parts). Needs an X display; where there is none, run it under xvfb-run.";
   c.positionals = {"MESH"};
   c.lastPositionalRepeats = true;
+  c.grouped = true;
   Option builtin = textOption("--builtin", "NAME", "render a built-in mesh instead of a file");
   builtin.choices = {"sphere", "torus", "plate", "disk"};
+  builtin.group = kGroupScene;
   c.options.push_back(builtin);
   for (const char* name : kDeclared)
   {
     c.options.push_back(declared(name));
   }
-  c.options.push_back(numberOption(
-      "--frames", "N", ParameterType::Integer, 4.0, 1.0, 65536.0, {},
-      "progressive frames accumulated, each with a rotated sample set (N x samples per pixel)"));
+  c.options.push_back(in(
+      kGroupSampling, numberOption("--frames", "N", ParameterType::Integer, 4.0, 1.0, 65536.0, {},
+                                   "progressive frames accumulated, each with a rotated sample set "
+                                   "(N x samples per pixel)")));
   // The error target's default and range are the declared error-target's (the window's).
   const ParameterSpec& errorTarget = parameterSpec("error-target");
-  c.options.push_back(numberOption(
-      "--quality", "ERR", errorTarget.type, errorTarget.defaultValue[0], errorTarget.minimum,
-      errorTarget.maximum, errorTarget.unit,
-      "error target instead of --samples: the relative L2 error of one frame (0.01 = 1%); the "
-      "samples follow from the material's roughness and filtering, by the error model that "
-      "'aniso bench' measured"));
-  c.options.push_back(textOption(
-      "--normal-map", "FILE",
-      "tangent-space normal map; its quaternion map is baked and used unless --bump normal"));
-  c.options.push_back(
+  c.options.push_back(in(
+      kGroupSampling,
+      numberOption(
+          "--quality", "ERR", errorTarget.type, errorTarget.defaultValue[0], errorTarget.minimum,
+          errorTarget.maximum, errorTarget.unit,
+          "error target instead of --samples: the relative L2 error of one frame (0.01 = 1%); the "
+          "samples follow from the material's roughness and filtering, by the error model that "
+          "'aniso bench' measured")));
+  c.options.push_back(in(
+      kGroupMaps,
+      textOption(
+          "--normal-map", "FILE",
+          "tangent-space normal map; its quaternion map is baked and used unless --bump normal")));
+  c.options.push_back(in(
+      kGroupMaps,
       textOption("--quaternion-map", "FILE",
-                 "quaternion map (a, b, c), stored like a normal map (8/16-bit files as 2c - 1)"));
+                 "quaternion map (a, b, c), stored like a normal map (8/16-bit files as 2c - 1)")));
   Option bump = textOption(
       "--bump", "MODE",
       "how --normal-map perturbs the frame: the baked quaternion frame (the source's method) or "
       "the normal alone with the tangent re-orthogonalised",
       "quaternion");
   bump.choices = {"quaternion", "normal"};
+  bump.group = kGroupMaps;
   c.options.push_back(bump);
-  c.options.push_back(textOption(
-      "--tpr", "PATTERN|FILE",
-      "tangent-plane rotation map: a file (2 channels x, y, or 1 channel angle in [0, pi]) or a "
-      "pattern linear[:ANGLE], circular[:U,V], radial[:U,V], spiral[:U,V[:PITCH]], wave"));
   c.options.push_back(
-      textOption("--height-map", "FILE",
-                 "height map (first channel, 1 = top) for parallax occlusion mapping"));
+      in(kGroupMaps,
+         textOption(
+             "--tpr", "PATTERN|FILE",
+             "tangent-plane rotation map: a file (2 channels x, y, or 1 channel angle in [0, pi]) "
+             "or a "
+             "pattern linear[:ANGLE], circular[:U,V], radial[:U,V], spiral[:U,V[:PITCH]], wave")));
+  c.options.push_back(
+      in(kGroupMaps,
+         textOption("--height-map", "FILE",
+                    "height map (first channel, 1 = top) for parallax occlusion mapping")));
   // Option help is a string_view: the composed text must outlive the command table.
   static const std::string tangentsHelp =
-      "tangent field: " + brushingModelSyntax() +
+      "tangent field: " + spacedChoices(brushingModelSyntax()) +
       "; by default the mesh's own, else from its UVs, else axis:1,0,0";
-  c.options.push_back(textOption("--tangents", "MODEL", tangentsHelp));
+  c.options.push_back(in(kGroupMaterial, textOption("--tangents", "MODEL", tangentsHelp)));
   // The declared cad-deflection is the window's (relative only); the command line also takes a
   // length.
   static const std::string deflectionDefault =
       formatNumber(parameterSpec("cad-deflection").defaultValue[0]);
-  c.options.push_back(textOption(
-      "--cad-deflection", "F|Lmm",
-      "STEP and IGES: the largest distance of a triangle from its face, as a fraction F of each "
-      "part's bounding-box diagonal (0.0005: finer) or as a length in millimetres (0.05mm)",
-      deflectionDefault));
-  c.options.push_back(parameterOption("cad-angle"));
-  c.options.push_back(textOption("--size", "WxH", "image size in pixels", "512x512"));
-  c.options.push_back(textOption(
-      "--view", "SIDE",
-      "camera on that side of the object looking at its centre, Z up: +x, -x, +y, -y, +z, -z",
-      "-y"));
   c.options.push_back(
-      numberOption("--azimuth", "DEG", ParameterType::Real, 0.0, -360.0, 360.0, "deg",
-                   "camera direction instead of --view: 0 on the -Y side, 90 on +X"));
-  c.options.push_back(numberOption("--elevation", "DEG", ParameterType::Real, 0.0, -90.0, 90.0,
-                                   "deg", "camera height above the XY plane, with --azimuth"));
-  c.options.push_back(numberOption(
-      "--turntable", "N", ParameterType::Integer, 36.0, 1.0, 3600.0, {},
-      "N images turning the camera about +Z around the parts' centre from the view's azimuth, "
-      "written as OUT_0000.png, OUT_0001.png, ... (OUT: --output's stem, its extension kept)"));
-  c.options.push_back(flagOption("--ortho", "parallel projection (the view fits the object)"));
-  c.options.push_back(textOption(
-      "--background", "env|none|R,G,B",
-      "behind the object: the environment, nothing (transparent PNG), or a uniform linear radiance",
-      "env"));
+      in(kGroupScene,
+         textOption(
+             "--cad-deflection", "F|Lmm",
+             "STEP and IGES: the largest distance of a triangle from its face, as a fraction F of "
+             "each "
+             "part's bounding-box diagonal (0.0005: finer) or as a length in millimetres (0.05mm)",
+             deflectionDefault)));
+  c.options.push_back(parameterOption("cad-angle"));
+  c.options.push_back(
+      in(kGroupOutput, textOption("--size", "WxH", "image size in pixels", "512x512")));
+  // The named views are the window's View menu's (viewPresets); help texts are string_views.
+  static const std::string viewHelp =
+      "camera looking at the centre, Z up: three-quarter (from the front left, azimuth " +
+      formatNumber(kDefaultViewAzimuth) + ", and above, elevation " +
+      formatNumber(kDefaultViewElevation) +
+      ": a flat part is seen from above), or from one side of the object";
+  static const std::string defaultView = defaultViewName();
+  Option view = textOption("--view", "NAME", viewHelp, defaultView);
+  view.group = kGroupView;
+  for (const ViewPreset& preset : viewPresets())
+  {
+    view.choices.push_back(preset.name);
+  }
+  c.options.push_back(view);
+  c.options.push_back(in(
+      kGroupView, numberOption("--azimuth", "DEG", ParameterType::Real, 0.0, -360.0, 360.0, "deg",
+                               "camera direction instead of --view: 0 on the -Y side, 90 on +X")));
+  c.options.push_back(
+      in(kGroupView, numberOption("--elevation", "DEG", ParameterType::Real, 0.0, -90.0, 90.0,
+                                  "deg", "camera height above the XY plane, with --azimuth")));
+  c.options.push_back(in(
+      kGroupOutput,
+      numberOption(
+          "--turntable", "N", ParameterType::Integer, 36.0, 1.0, 3600.0, {},
+          "N images turning the camera about +Z around the parts' centre from the view's azimuth, "
+          "written as OUT_0000.png, OUT_0001.png, ... (OUT: --output's stem, its extension kept)")));
+  c.options.push_back(
+      in(kGroupView, flagOption("--ortho", "parallel projection (the view fits the object)")));
+  c.options.push_back(in(kGroupOutput, textOption("--background", "env|none|R,G,B",
+                                                  "behind the object: the environment, nothing "
+                                                  "(transparent PNG), or a uniform linear radiance",
+                                                  "env")));
   Option jitter = textOption(
       "--jitter", "on|off",
       "sub-pixel camera jitter between frames (anti-aliased edges, fractional coverage)", "on");
   jitter.choices = {"on", "off"};
+  jitter.group = kGroupSampling;
   c.options.push_back(jitter);
   Option output =
       textOption("--output", "FILE",
@@ -183,16 +243,21 @@ Command renderCommand()
                  "--export-gltf)");
   output.alias = "-o";
   output.required = true;
+  output.group = kGroupOutput;
   c.options.push_back(output);
-  c.options.push_back(textOption(
-      "--export-gltf", "FILE",
-      "write the scene's visible parts as glTF 2.0 (.glb, or .gltf with its buffer inside): "
-      "each part's prepared surface (normals, tangents, UVs) in its own frame, its placement as "
-      "its node's matrix, and the material it is drawn with, the library's or the command "
-      "line's, as metallic-roughness with KHR_materials_anisotropy (maps are not written); "
-      "besides the image, or instead of it without -o"));
   c.options.push_back(
-      flagOption("--time", "print the median frame time and the samples per second"));
+      in(kGroupOutput,
+         textOption(
+             "--export-gltf", "FILE",
+             "write the scene's visible parts as glTF 2.0 (.glb, or .gltf with its buffer inside): "
+             "each part's prepared surface (normals, tangents, UVs) in its own frame, its "
+             "placement as "
+             "its node's matrix, and the material it is drawn with, the library's or the command "
+             "line's, as metallic-roughness with KHR_materials_anisotropy (maps are not written); "
+             "besides the image, or instead of it without -o")));
+  c.options.push_back(
+      in(kGroupOutput,
+         flagOption("--time", "print the median frame time and the samples per second")));
   addPartOptions(c);
   addModelOptions(c);
   c.details = "Examples:\n"
@@ -244,6 +309,29 @@ Arguments parse(Command command, const std::vector<std::string>& args)
     }
     return checkOutputGiven(a);
   }
+}
+
+// The view of --view, or --azimuth and --elevation, and --ortho (the three-quarter view by
+// default, as the window's).
+ViewSettings viewOf(const Arguments& a)
+{
+  if (a.has("--view") && (a.has("--azimuth") || a.has("--elevation")))
+  {
+    throw usageError("--view", "give either --view or --azimuth/--elevation");
+  }
+  ViewSettings view = defaultViewSettings();
+  try
+  {
+    view.direction = a.has("--azimuth") || a.has("--elevation")
+                         ? viewDirectionFromAngles(a.real("--azimuth"), a.real("--elevation"))
+                         : viewDirectionFromName(a.text("--view"), "--view");
+  }
+  catch (const Error& e)
+  {
+    throw UsageError(e.what());
+  }
+  view.parallel = a.has("--ortho");
+  return view;
 }
 
 std::string lowercaseExtension(const std::string& path)
@@ -417,6 +505,11 @@ std::string formatMilliseconds(double seconds)
 }
 } // namespace
 
+ViewSettings renderViewSettings(const std::vector<std::string>& args)
+{
+  return viewOf(parse(renderCommand(), args));
+}
+
 std::string renderSummary()
 {
   return "render a mesh with an anisotropic material to a PNG or EXR, headless";
@@ -449,22 +542,15 @@ int runRender(const std::vector<std::string>& args, std::ostream& out, std::ostr
   }
   RenderSettings settings;
   std::tie(settings.width, settings.height) = parseImageSize(a.text("--size"), "--size", kMaxSide);
-  if (a.has("--view") && (a.has("--azimuth") || a.has("--elevation")))
-  {
-    throw usageError("--view", "give either --view or --azimuth/--elevation");
-  }
   if (a.has("--turntable") && a.has("--compare"))
   {
     throw usageError("--turntable", "give either --turntable or --compare");
   }
+  settings.view = viewOf(a);
   SurfaceOptions surfaceOptions;
   MeshReadOptions readOptions;
   try
   {
-    settings.view.direction =
-        a.has("--azimuth") || a.has("--elevation")
-            ? viewDirectionFromAngles(a.real("--azimuth"), a.real("--elevation"))
-            : viewDirectionFromName(a.text("--view"), "--view");
     if (a.has("--tangents"))
     {
       surfaceOptions.brushing = parseBrushingModel(a.text("--tangents"));
@@ -477,7 +563,6 @@ int runRender(const std::vector<std::string>& args, std::ostream& out, std::ostr
   {
     throw UsageError(e.what());
   }
-  settings.view.parallel = a.has("--ortho");
   if (a.has("--quaternion-map") && a.has("--normal-map"))
   {
     throw usageError("--quaternion-map", "give either --normal-map or --quaternion-map");

@@ -88,13 +88,14 @@ void addModelOptions(Command& command)
 {
   // Help texts are string_views: the composed texts must outlive the command table.
   static const std::string modelHelp =
-      "shading model: " + shadingModelNames(", ") +
-      " (as-env: Ashikhmin-Shirley under the environment; the others under --light)";
+      "shading model (as-env: Ashikhmin-Shirley under the environment; the others under "
+      "--light)";
   Option model = textOption("--model", "NAME", modelHelp, kEnvironmentModel);
   for (const ShadingModelInfo& info : shadingModels())
   {
     model.choices.emplace_back(info.name);
   }
+  model.group = kGroupModels;
   command.options.push_back(model);
   static const std::string lightHelp =
       "a light, repeatable (at most " + std::to_string(LitModelMaterial::kMaxLights) +
@@ -104,9 +105,9 @@ void addModelOptions(Command& command)
       std::string(kDefaultLights[0]) + " and " + kDefaultLights[1];
   Option light = textOption("--light", "SPEC", lightHelp);
   light.repeatable = true;
+  light.group = kGroupLighting;
   command.options.push_back(light);
   static const std::string sampleHelp = "built-in shift-variant material for " + litModelNames() +
-                                        ": " + sampleMaterialNames(", ") +
                                         " (instead of the uniform one made from --nu, --nv, --f0, "
                                         "--albedo)";
   Option sample = textOption("--sample-material", "NAME", sampleHelp);
@@ -114,12 +115,15 @@ void addModelOptions(Command& command)
   {
     sample.choices.emplace_back(info.name);
   }
+  sample.group = kGroupModels;
   command.options.push_back(sample);
   static const std::string compareHelp =
       "render several models side by side, one tile of --size each, left to right, with the same "
       "mesh, camera, lights and material: a comma-separated list of as-env and " +
       litModelNames();
-  command.options.push_back(textOption("--compare", "M1,M2,...", compareHelp));
+  Option compare = textOption("--compare", "M1,M2,...", compareHelp);
+  compare.group = kGroupModels;
+  command.options.push_back(compare);
   // The environment's sources as lights of the lit models and LEADR (a declared parameter, as the
   // window's scene key).
   Option environmentLights = parameterOption("env-lights");

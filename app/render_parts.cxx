@@ -54,10 +54,12 @@ std::shared_ptr<const Image> imageOf(Image image)
 
 void addPartOptions(Command& c)
 {
-  c.options.push_back(textOption(
+  Option materials = textOption(
       "--materials", "FILE",
       "a material library (JSON, format aniso-materials) whose materials --part may assign, "
-      "besides the built-in metals (a material of the same name as a built-in one wins)"));
+      "besides the built-in metals (a material of the same name as a built-in one wins)");
+  materials.group = kGroupScene;
+  c.options.push_back(materials);
   Option part = textOption(
       "--part", "PATTERN=MATERIAL",
       "draw the parts whose names match PATTERN ('*' any run of characters, '?' one character) "
@@ -66,15 +68,18 @@ void addPartOptions(Command& c)
       "their block in a file of several (OBJ g and o, VTM blocks, glTF nodes); 'name 2' for a "
       "second of the same name; --list-parts shows them");
   part.repeatable = true;
+  part.group = kGroupScene;
   c.options.push_back(part);
   Option hide = textOption("--hide", "PATTERN",
                            "leave out the parts whose names match PATTERN (not drawn, and the "
                            "camera fits the others); repeatable");
   hide.repeatable = true;
+  hide.group = kGroupScene;
   c.options.push_back(hide);
   Option list = textOption("--list-parts", "",
                            "print the parts, one line each (name, triangles, material, 'hidden' "
                            "for a hidden one), and exit without rendering");
+  list.group = kGroupScene;
   c.options.push_back(list);
 }
 

@@ -67,13 +67,10 @@ Option declaredOption(const ModelOption& m)
   {
     o.choices.emplace_back(choice);
   }
+  // A choice shows WORD and its choices on a line of their own (helpText).
   if (!o.choices.empty())
   {
-    o.valueName = o.choices.front();
-    for (std::size_t i = 1; i < o.choices.size(); ++i)
-    {
-      o.valueName += "|" + o.choices[i];
-    }
+    o.valueName = "WORD";
   }
   else if (!m.valueName.empty())
   {

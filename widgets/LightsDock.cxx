@@ -1,6 +1,7 @@
 #include "widgets/LightsDock.h"
 
 #include "core/error.h"
+#include "core/lights/light_text.h"
 #include "core/models/models.h"
 #include "scene/SceneShading.h"
 #include "widgets/ParameterPanel.h"
@@ -300,7 +301,9 @@ void LightsDock::syncFromModel()
   list_->clear();
   for (const Light& light : all)
   {
-    list_->addItem(QString::fromStdString(formatLight(light)));
+    // Readable words in the list; the stored text (what sessions and --light read) as the tip.
+    list_->addItem(QString::fromStdString(lightText(light)));
+    list_->item(list_->count() - 1)->setToolTip(QString::fromStdString(formatLight(light)));
   }
   list_->setCurrentRow(all.empty() ? -1 : std::clamp(row, 0, int(all.size()) - 1));
   syncing_ = false;

@@ -16,6 +16,7 @@
 #include "vtkpasses/mesh/MeshLoader.h"
 #include "vtkpasses/render/LitModelMaterial.h"
 #include "vtkpasses/render/OffscreenRenderer.h"
+#include "vtkpasses/render/ViewSettings.h"
 #include "widgets/EnvironmentDock.h"
 #include "widgets/LightsDock.h"
 #include "widgets/LutView.h"
@@ -354,17 +355,17 @@ void MainWindow::createMenus()
   viewMenu->addAction(
       tr("Reset &View"), this, [this] { view_->resetCamera(); }, QKeySequence(tr("Ctrl+R")));
   viewMenu->addAction(tr("&Frame All"), this, &MainWindow::frameAll, QKeySequence(Qt::Key_Home));
-  QMenu* sides = viewMenu->addMenu(tr("&Standard Views"));
-  const std::pair<StandardView, QString> standardViews[] = {
-      {StandardView::Front, tr("&Front")}, {StandardView::Back, tr("&Back")},
-      {StandardView::Left, tr("&Left")},   {StandardView::Right, tr("&Right")},
-      {StandardView::Top, tr("&Top")},     {StandardView::Bottom, tr("Botto&m")}};
-  int number = 1;
-  for (const auto& [side, name] : standardViews)
+  // The named views, as `aniso render --view` names them: Ctrl+0 the three-quarter view, Ctrl+1
+  // to Ctrl+6 the sides (front, back, left, right, top, bottom).
+  QMenu* views = viewMenu->addMenu(tr("&Standard Views"));
+  int number = 0;
+  for (const ViewPreset& preset : viewPresets())
   {
-    sides->addAction(
-        name, this, [this, side = side] { showStandardView(side); },
+    QAction* action = views->addAction(
+        QString::fromStdString(preset.label), this,
+        [this, name = preset.name] { view_->showView(name); },
         QKeySequence(tr("Ctrl+%1").arg(number++)));
+    action->setData(QString::fromStdString(preset.name));
   }
   viewMenu->addAction(tr("Compare &Models"), this, &MainWindow::showCompareWindow);
 }
@@ -1279,17 +1280,6 @@ void MainWindow::chooseAndExportTurntable()
                   .arg(result.video),
         8000);
   }
-}
-
-void MainWindow::showStandardView(StandardView side)
-{
-  const int* size = renderWindow_->GetSize();
-  attempt(
-      [&]
-      {
-        model_.setCamera(framedCamera(standardViewDirection(side), view_->drawingFrame(),
-                                      view_->currentCamera(), size[0], size[1]));
-      });
 }
 
 void MainWindow::frameAll()

@@ -147,7 +147,6 @@ public:
 
   // The camera framing the visible parts from one side (View > Front, ...), Frame All (the
   // direction kept) and Reset View (the default view).
-  void showStandardView(StandardView view);
   void frameAll();
 
   // The preferences (app/gui/PreferencesDialog.h): saved to QSettings and applied (the recent

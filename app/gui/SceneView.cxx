@@ -986,6 +986,18 @@ void SceneView::resetCamera()
   requestRender();
 }
 
+void SceneView::showView(const std::string& name)
+{
+  ViewSettings view = defaultViewSettings();
+  view.direction = viewDirectionFromName(name, "view");
+  const int* size = window_->GetSize();
+  applyCamera(renderer_, viewPlacement(view, size[0], size[1]));
+  applyingCamera_ = true;
+  model_->setCamera(name == defaultViewName() ? CameraState{} : currentCamera());
+  applyingCamera_ = false;
+  requestRender();
+}
+
 CameraState SceneView::currentCamera() const
 {
   return cameraStateOf(renderer_->GetActiveCamera(), drawing_);

@@ -123,6 +123,9 @@ public:
 
   // Frames the current mesh from the default direction and forgets any stored camera.
   void resetCamera();
+  // Frames the current mesh from the named view NAME (viewPresets, `aniso render --view`'s
+  // names), kept as the scene's camera; throws aniso::Error for an unknown name.
+  void showView(const std::string& name);
   // The window's camera as the model stores it.
   CameraState currentCamera() const;
 

@@ -40,26 +40,6 @@ double degrees(double radians)
 }
 } // namespace
 
-glm::dvec3 standardViewDirection(StandardView view)
-{
-  switch (view)
-  {
-  case StandardView::Front:
-    return {0.0, -1.0, 0.0};
-  case StandardView::Back:
-    return {0.0, 1.0, 0.0};
-  case StandardView::Left:
-    return {-1.0, 0.0, 0.0};
-  case StandardView::Right:
-    return {1.0, 0.0, 0.0};
-  case StandardView::Top:
-    return {0.0, 0.0, 1.0};
-  case StandardView::Bottom:
-    return {0.0, 0.0, -1.0};
-  }
-  return {0.0, -1.0, 0.0};
-}
-
 CameraState framedCamera(const glm::dvec3& direction, const DrawingFrame& drawing,
                          const CameraState& current, int width, int height)
 {
@@ -68,12 +48,7 @@ CameraState framedCamera(const glm::dvec3& direction, const DrawingFrame& drawin
   view.parallel = current.parallel;
   view.viewAngleDegrees =
       current.viewAngle > 0.0 && current.viewAngle < 180.0 ? current.viewAngle : 30.0;
-  // placeCamera fits the sphere's height; a window narrower than high needs more room.
-  if (width > 0 && height > 0 && width < height)
-  {
-    view.margin *= static_cast<double>(height) / width;
-  }
-  return stateOf(placeCamera(view, drawing.centre, drawing.radius));
+  return stateOf(placeCamera(fittedToFrame(view, width, height), drawing.centre, drawing.radius));
 }
 
 CameraState frameAll(const CameraState& current, const DrawingFrame& drawing, int width, int height)
@@ -81,7 +56,7 @@ CameraState frameAll(const CameraState& current, const DrawingFrame& drawing, in
   glm::dvec3 direction = vec(current.position) - vec(current.focalPoint);
   if (!(glm::length(direction) > 0.0) || !std::isfinite(glm::length(direction)))
   {
-    direction = standardViewDirection(StandardView::Front);
+    direction = glm::dvec3(0.0, -1.0, 0.0); // the front view
   }
   CameraState framed = framedCamera(direction, drawing, current, width, height);
   // The user's roll stays, unless it lies along the view direction.

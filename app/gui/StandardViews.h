@@ -1,5 +1,6 @@
 #pragma once
-// The window's standard views (View > Front, Back, ...), Frame All, and the turntable's cameras:
+// The cameras of the window's Frame All and of the turntable (View > Standard Views are
+// SceneView::showView, as `aniso render --view`):
 // cameras that frame the drawn parts' bounding sphere (DrawingFrame.h), in the mesh's
 // coordinates as the model stores them (CameraState). Z is up.
 #include "scene/SceneModel.h"
@@ -9,19 +10,6 @@
 
 namespace aniso
 {
-enum class StandardView
-{
-  Front,  // from -Y
-  Back,   // from +Y
-  Left,   // from -X
-  Right,  // from +X
-  Top,    // from +Z
-  Bottom, // from -Z
-};
-
-// From the object's centre towards the camera of VIEW (a unit vector).
-glm::dvec3 standardViewDirection(StandardView view);
-
 // The camera looking from DIRECTION (centre towards camera, any length > 0) at DRAWING's centre,
 // at the distance that fits its bounding sphere in a WIDTH x HEIGHT view, with CURRENT's
 // projection and view angle. Up is +Z, or +Y looking along Z. Throws aniso::Error "view: reason"

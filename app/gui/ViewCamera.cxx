@@ -50,14 +50,12 @@ CameraPlacement placementOf(const CameraState& c)
 
 CameraPlacement defaultPlacement(int width, int height)
 {
-  ViewSettings view;
-  view.direction = viewDirectionFromAngles(-35.0, 25.0);
-  // placeCamera fits the object's height; a window narrower than high needs more room.
-  if (width > 0 && height > 0 && width < height)
-  {
-    view.margin *= static_cast<double>(height) / width;
-  }
-  return placeCamera(view, glm::dvec3(0.0), 1.0);
+  return viewPlacement(defaultViewSettings(), width, height);
+}
+
+CameraPlacement viewPlacement(const ViewSettings& view, int width, int height)
+{
+  return placeCamera(fittedToFrame(view, width, height), glm::dvec3(0.0), 1.0);
 }
 
 } // namespace aniso

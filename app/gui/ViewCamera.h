@@ -15,7 +15,11 @@ void setCameraState(vtkCamera* camera, const CameraState& state, const DrawingFr
 CameraState cameraStateOf(vtkCamera* camera, const DrawingFrame& drawing);
 // STATE as a placement in the same coordinates (renderOffscreen's camera).
 CameraPlacement placementOf(const CameraState& state);
-// The default view of the drawing frame's unit sphere in a window of WIDTH x HEIGHT: a
-// three-quarter view from the front, slightly above (Z up), with room for a narrow window.
+// The default view (defaultViewSettings: the three-quarter view, `aniso render`'s default too)
+// of the drawing frame's unit sphere in a window of WIDTH x HEIGHT, with room for a narrow
+// window (fittedToFrame), as renderOffscreen places its camera.
 CameraPlacement defaultPlacement(int width, int height);
+// VIEW of the drawing frame's unit sphere in a window of WIDTH x HEIGHT (a named view of the
+// View menu: viewPresets).
+CameraPlacement viewPlacement(const ViewSettings& view, int width, int height);
 } // namespace aniso

@@ -6,6 +6,9 @@
 //  - An EXR holds linear radiance: for the built-in sphere with F0 = 1, the centre of the image
 //    agrees with the CPU reference integrator for the same lobe, view and pixels; PNGs are 8-bit
 //    RGB, or RGBA with --background none; --time reports the frame time.
+//  - A flat part (the built-in plate) is seen by default: the share of covered pixels is the
+//    pinhole projection's of its corners for the default (three-quarter) view, and near none
+//    from the front view (edge-on).
 //  - The environment's sources are printed: under builtin:sunsky one line names the sun at an
 //    azimuth and elevation that, read as --azimuth and --elevation read them
 //    (viewDirectionFromAngles), point at SunSkyEnvironment's own sun direction; under
@@ -126,7 +129,7 @@ TEST_F(RenderCli, ExrIsLinearRadianceThatMatchesTheReference)
 
   // The 8 x 8 pixels around the centre, averaged (the mean's sampling error is small).
   const aniso::CameraPlacement camera =
-      aniso::placeCamera(aniso::ViewSettings{}, glm::dvec3(0.0), 1.0);
+      aniso::placeCamera(aniso::defaultViewSettings(), glm::dvec3(0.0), 1.0);
   const aniso::StudioEnvironment env;
   glm::dvec3 rendered(0.0);
   glm::dvec3 expected(0.0);
@@ -179,6 +182,69 @@ TEST_F(RenderCli, PngAndTimes)
   const aniso::Image rgba = aniso::readImage(transparent, &info);
   EXPECT_EQ(info.fileChannels, 4);
   EXPECT_EQ(rgba.at(12, 12, 3), 1.0f); // the plate fills the centre
+}
+
+// The fraction of a square image of CAMERA that the plate [-1, 1]^2 (z = 0) covers: its corners
+// projected by a pinhole camera, the area of that quadrilateral over the image's.
+double plateCoverage(const aniso::CameraPlacement& camera)
+{
+  const glm::dvec3 forward = glm::normalize(camera.focalPoint - camera.position);
+  const glm::dvec3 right = glm::normalize(glm::cross(forward, camera.viewUp));
+  const glm::dvec3 up = glm::cross(right, forward);
+  const double t = std::tan(0.5 * camera.viewAngleDegrees * M_PI / 180.0);
+  const glm::dvec3 corners[4] = {{-1, -1, 0}, {1, -1, 0}, {1, 1, 0}, {-1, 1, 0}};
+  double x[4], y[4];
+  for (int i = 0; i < 4; ++i)
+  {
+    const glm::dvec3 d = corners[i] - camera.position;
+    x[i] = glm::dot(d, right) / glm::dot(d, forward) / t;
+    y[i] = glm::dot(d, up) / glm::dot(d, forward) / t;
+  }
+  double area = 0.0; // shoelace, in the [-1, 1]^2 image
+  for (int i = 0; i < 4; ++i)
+  {
+    area += x[i] * y[(i + 1) % 4] - x[(i + 1) % 4] * y[i];
+  }
+  return std::abs(area) / 2.0 / 4.0;
+}
+
+// The share of pixels of an RGBA image with alpha above one half.
+double covered(const aniso::Image& rgba)
+{
+  int n = 0;
+  for (int y = 0; y < rgba.height; ++y)
+  {
+    for (int x = 0; x < rgba.width; ++x)
+    {
+      n += rgba.at(x, y, 3) > 0.5f;
+    }
+  }
+  return double(n) / (rgba.width * rgba.height);
+}
+
+// A flat part in the XY plane is seen by default (the three-quarter view from above, not the
+// front view edge-on): its covered pixels are what the pinhole projection of its corners
+// predicts for the default view's camera, far above the edge-on front view's.
+TEST_F(RenderCli, FlatPartIsVisibleByDefault)
+{
+  ANISO_REQUIRE_DISPLAY();
+  const std::string seen = path("seen.png").string();
+  ASSERT_EQ(run({"render", "--builtin", "plate", "--background", "none", "--size", "48", "--frames",
+                 "1", "--samples", "1", "--jitter", "off", "-o", seen})
+                .exitCode,
+            0);
+  const double expected = plateCoverage(
+      aniso::placeCamera(aniso::defaultViewSettings(), glm::dvec3(0.0), std::sqrt(2.0)));
+  const double share = covered(aniso::readImage(seen));
+  EXPECT_GT(expected, 0.2);
+  EXPECT_NEAR(share, expected, 0.03) << "default view";
+
+  const std::string edgeOn = path("edge-on.png").string();
+  ASSERT_EQ(run({"render", "--builtin", "plate", "--view", "-y", "--background", "none", "--size",
+                 "48", "--frames", "1", "--samples", "1", "--jitter", "off", "-o", edgeOn})
+                .exitCode,
+            0);
+  EXPECT_LT(covered(aniso::readImage(edgeOn)), 0.05) << "the front view sees the plate edge-on";
 }
 
 TEST_F(RenderCli, PrintsTheEnvironmentsSources)

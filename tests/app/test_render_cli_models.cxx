@@ -94,7 +94,7 @@ double tileError(const aniso::Image& image, int x0, aniso::LitModel model,
     lights = {aniso::parseLight(kLight)};
   }
   const aniso::CameraPlacement camera =
-      aniso::placeCamera(aniso::ViewSettings{}, glm::dvec3(0.0), 1.0);
+      aniso::placeCamera(aniso::defaultViewSettings(), glm::dvec3(0.0), 1.0);
   double diff = 0.0;
   double norm = 0.0;
   int pixels = 0;

@@ -80,8 +80,9 @@ protected:
     std::vector<std::string> command = {"render"};
     command.insert(command.end(), args.begin(), args.end());
     for (const char* option :
-         {"--env", "builtin:white", "--f0", "0.6", "--nu", "200", "--nv", "200", "--samples", "4",
-          "--frames", "1", "--jitter", "off", "--background", "none", "--size", "96x48", "-o"})
+         {"--env",        "builtin:white", "--f0",   "0.6",      "--nu",   "200",      "--nv",
+          "200",          "--samples",     "4",      "--frames", "1",      "--jitter", "off",
+          "--background", "none",          "--size", "96x48",    "--view", "-y",       "-o"})
     {
       command.push_back(option);
     }

@@ -1,7 +1,8 @@
 // The lights dock and the scene's shading keys: the selectors list exactly the registry's models
 // and sample materials; adding, editing and removing a light changes the scene's lights once per
 // change, to the lights stated here; the lights text reads back to the same lights (and bad
-// texts are refused naming the key); a session brings back the model, sample material and
+// texts are refused naming the key); the list names each light in words (lightText), its stored
+// text the tip; a session brings back the model, sample material and
 // lights written into it.
 #include "core/error.h"
 #include "core/models/models.h"
@@ -121,6 +122,11 @@ private slots:
     aniso::LightsDock dock(&editor);
     QCOMPARE(dock.lightList()->count(), 1);
     QCOMPARE(dock.lightList()->currentRow(), 0);
+    // The list reads in words (azimuth atan2(1, 2) = 26.57, elevation asin(3 / sqrt(14)) = 53.30,
+    // distance sqrt(14) = 3.742); the stored text is its tip.
+    QCOMPARE(dock.lightList()->item(0)->text(),
+             QString("point at azimuth 26.6, elevation 53.3, distance 3.74, intensity 2, 1, 0.5"));
+    QCOMPARE(dock.lightList()->item(0)->toolTip(), QString("point:1,-2,3:2,1,0.5"));
     QCOMPARE(dock.vectorBox(1)->value(), -2.0);
     QCOMPARE(dock.intensityBox(2)->value(), 0.5);
 

@@ -202,7 +202,8 @@ RenderResult renderOffscreen(const RenderSettings& s)
 
   // A given camera is in the mesh's coordinates, like the surface: mapped the same way.
   applyCamera(renderer, s.camera ? drawing.cameraToDrawing(*s.camera)
-                                 : placeCamera(s.view, glm::dvec3(0.0), 1.0));
+                                 : placeCamera(fittedToFrame(s.view, s.width, s.height),
+                                               glm::dvec3(0.0), 1.0));
 
   vtkNew<vtkRenderStepsPass> steps;
   vtkNew<vtkAnisoAccumulationPass> pass;

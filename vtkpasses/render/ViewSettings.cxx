@@ -12,31 +12,69 @@
 
 namespace aniso
 {
-glm::dvec3 viewDirectionFromName(const std::string& name, const std::string& subject)
-{
-  if (name.size() == 2 && (name[0] == '+' || name[0] == '-'))
-  {
-    const double sign = name[0] == '+' ? 1.0 : -1.0;
-    switch (name[1])
-    {
-    case 'x':
-      return {sign, 0.0, 0.0};
-    case 'y':
-      return {0.0, sign, 0.0};
-    case 'z':
-      return {0.0, 0.0, sign};
-    default:
-      break;
-    }
-  }
-  throw errorAbout(subject, "'" + name + "' is not one of +x, -x, +y, -y, +z, -z");
-}
-
 glm::dvec3 viewDirectionFromAngles(double azimuthDegrees, double elevationDegrees)
 {
   const double a = azimuthDegrees * M_PI / 180.0;
   const double e = elevationDegrees * M_PI / 180.0;
   return {std::sin(a) * std::cos(e), -std::cos(a) * std::cos(e), std::sin(e)};
+}
+
+const std::vector<ViewPreset>& viewPresets()
+{
+  static const std::vector<ViewPreset> presets = {
+      {"three-quarter", "Three-quarter",
+       viewDirectionFromAngles(kDefaultViewAzimuth, kDefaultViewElevation)},
+      {"-y", "Front (-y)", {0.0, -1.0, 0.0}},
+      {"+y", "Back (+y)", {0.0, 1.0, 0.0}},
+      {"-x", "Left (-x)", {-1.0, 0.0, 0.0}},
+      {"+x", "Right (+x)", {1.0, 0.0, 0.0}},
+      {"+z", "Top (+z)", {0.0, 0.0, 1.0}},
+      {"-z", "Bottom (-z)", {0.0, 0.0, -1.0}},
+  };
+  return presets;
+}
+
+std::string defaultViewName()
+{
+  return viewPresets().front().name;
+}
+
+std::string viewPresetNames(const std::string& separator)
+{
+  std::string names;
+  for (const ViewPreset& preset : viewPresets())
+  {
+    names += (names.empty() ? "" : separator) + preset.name;
+  }
+  return names;
+}
+
+glm::dvec3 viewDirectionFromName(const std::string& name, const std::string& subject)
+{
+  for (const ViewPreset& preset : viewPresets())
+  {
+    if (preset.name == name)
+    {
+      return preset.direction;
+    }
+  }
+  throw errorAbout(subject, "'" + name + "' is not one of " + viewPresetNames(", "));
+}
+
+ViewSettings defaultViewSettings()
+{
+  ViewSettings view;
+  view.direction = viewPresets().front().direction;
+  return view;
+}
+
+ViewSettings fittedToFrame(ViewSettings view, int width, int height)
+{
+  if (width > 0 && height > 0 && width < height)
+  {
+    view.margin *= static_cast<double>(height) / width;
+  }
+  return view;
 }
 
 void boundingSphere(vtkPolyData* surface, glm::dvec3& centre, double& radius)

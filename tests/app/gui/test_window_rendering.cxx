@@ -231,6 +231,10 @@ private slots:
     aniso::SceneView* view = window.view();
     QTRY_VERIFY_WITH_TIMEOUT(view->converged(), 60000);
     vtkCamera* camera = view->renderer()->GetActiveCamera();
+    // The drag turns the camera about its view-up made orthogonal to the view (what the screen
+    // shows as up; the default view looks down at 35 degrees, so it is not the world's Z): the
+    // turn is measured about that axis.
+    camera->OrthogonalizeViewUp();
     const glm::dvec3 focal(camera->GetFocalPoint()[0], camera->GetFocalPoint()[1],
                            camera->GetFocalPoint()[2]);
     const glm::dvec3 up(camera->GetViewUp()[0], camera->GetViewUp()[1], camera->GetViewUp()[2]);
