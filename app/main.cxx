@@ -3,6 +3,7 @@
 #include "app/cli.h"
 #include "app/gui/run_gui.h"
 #include "app/render_command.h"
+#include "app/thumbnail_command.h"
 #include "bench/bench_command.h"
 
 #include <iostream>
@@ -20,6 +21,7 @@ std::string mainHelp()
          "Commands:\n"
          "  bake KIND   bake lookup tables, maps and environment data to files, KIND one of:\n" +
          aniso::cli::bakeKindsSummary(6) + "  render      " + aniso::cli::renderSummary() + "\n" +
+         "  thumbnail   " + aniso::cli::thumbnailSummary() + "\n" +
          "  bench       " + aniso::cli::benchSummary() + "\n" +
          "\nOptions:\n"
          "  -h, --help  show this help and exit\n"
@@ -58,6 +60,11 @@ int run(const std::vector<std::string>& args)
   {
     return aniso::cli::runRender(std::vector<std::string>(args.begin() + 1, args.end()), std::cout,
                                  std::cerr);
+  }
+  if (command == "thumbnail")
+  {
+    return aniso::cli::runThumbnail(std::vector<std::string>(args.begin() + 1, args.end()),
+                                    std::cout);
   }
   if (command.size() > 1 && command[0] == '-')
   {
