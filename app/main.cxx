@@ -21,8 +21,8 @@ std::string mainHelp()
          "Commands:\n"
          "  bake KIND   bake lookup tables, maps and environment data to files, KIND one of:\n" +
          aniso::cli::bakeKindsSummary(6) + "  render      " + aniso::cli::renderSummary() + "\n" +
-         "  thumbnail   " + aniso::cli::thumbnailSummary() + "\n" +
-         "  bench       " + aniso::cli::benchSummary() + "\n" +
+         "  thumbnail   " + aniso::cli::thumbnailSummary() + "\n" + "  bench       " +
+         aniso::cli::benchSummary() + "\n" +
          "\nOptions:\n"
          "  -h, --help  show this help and exit\n"
          "  --version   print the version and exit\n\n"

@@ -7,6 +7,7 @@
 #include "scene/LutScheduler.h"
 
 #include <QApplication>
+#include <QStringList>
 #include <QSurfaceFormat>
 #include <QTimer>
 #include <QVTKOpenGLNativeWidget.h>
@@ -14,7 +15,6 @@
 #include <cctype>
 #include <cstdlib>
 #include <filesystem>
-#include <QStringList>
 #include <iostream>
 #include <memory>
 
@@ -170,7 +170,7 @@ int runGui(const std::vector<std::string>& args)
     // Nothing of the user's tuning is lost if this run dies; a start that opens a file of its
     // own leaves an earlier run's autosave for a later plain start.
     window.enableAutosave(QString(), a.mesh.empty() && a.session.empty() ? AutosaveRestore::Ask
-                                                                        : AutosaveRestore::Keep);
+                                                                         : AutosaveRestore::Keep);
   }
   QStringList added;
   for (const std::string& path : a.added)

@@ -3,12 +3,12 @@
 // ends in (thumbnailers pass temporary names), within the time docs/BENCHMARKS.md states, and
 // bad input fails with the file's name and nothing left behind. The mesh is a sphere written by
 // VTK's STL writer (an independent writer), read back by the reader program.
-#include "cli_runner.h"
 #include "core/image/image.h"
+#include "tests/app/cli_runner.h"
 
 #include <chrono>
-#include <fstream>
 #include <cmath>
+#include <fstream>
 #include <vtkNew.h>
 #include <vtkSTLWriter.h>
 #include <vtkSphereSource.h>

@@ -87,7 +87,7 @@ fi
 # The MIME types compile, and give the formats shared-mime-info lacks their globs.
 if command -v update-mime-database >/dev/null; then
   cp -r "$root/usr/share/mime" "$tmp/mime"
-  update-mime-database "$tmp/mime" 2>"$tmp/mime.log" || fail "update-mime-database fails"
+  XDG_DATA_DIRS="$tmp" update-mime-database "$tmp/mime" 2>"$tmp/mime.log" || fail "update-mime-database fails"
   if [ -s "$tmp/mime.log" ]; then cat "$tmp/mime.log"; fail "update-mime-database warns"; fi
   for glob in 'model/step:\*.step' 'application/vnd.ply:\*.ply' 'application/vnd.vtp:\*.vtp'; do
     grep -q "$glob" "$tmp/mime/globs2" || fail "the MIME database lacks $glob"
