@@ -18,9 +18,10 @@ namespace
 {
 using aniso_test::CliTest;
 
-// docs/BENCHMARKS.md ("Thumbnails"): a 256-pixel thumbnail of a small mesh, the process
-// included, stays under this on llvmpipe (the measured time is about a quarter of it).
-constexpr double kThumbnailBudgetSeconds = 2.0;
+// docs/BENCHMARKS.md ("Thumbnails"): a 256-pixel thumbnail of a small mesh, the whole process
+// from its start to its exit, stays under this on llvmpipe with the two cores busy (measured
+// 0.8 to 1.2 s there).
+constexpr double kThumbnailBudgetSeconds = 4.0;
 
 class ThumbnailCli : public CliTest
 {
