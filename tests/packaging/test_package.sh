@@ -4,7 +4,8 @@
 # the completion) and its dependencies, runs the validators (desktop-file-validate,
 # appstreamcli, lintian; each skipped with a reason only where it is not installed), and runs the
 # installed tree: its aniso renders a built-in mesh and writes a thumbnail of the requested size,
-# its completion completes, its MIME types compile.
+# its window opens a session file given as its argument, its completion completes, its MIME
+# types compile.
 # Usage: test_package.sh BUILD_DIR (an X display in DISPLAY for the renders).
 set -u
 build=$(cd "$1" && pwd)
@@ -125,6 +126,16 @@ else
   [ "${header:0:16}" == "89504e470d0a1a0a" ] || fail "the thumbnail is not a PNG ($header)"
   [ "$((16#${header:32:8}))x$((16#${header:40:8}))" == "48x48" ] \
     || fail "the thumbnail is $((16#${header:32:8}))x$((16#${header:40:8})), not 48x48"
+  # The window of the installed tree opens a session file given as its argument (the desktop
+  # entry's `aniso %F`): a session naming a missing mesh fails naming that mesh, where a mesh
+  # argument would have failed on the .json file itself.
+  printf '{"format": "aniso-session", "version": 1, "assets": {"mesh": "%s"}}\n' \
+    "$tmp/missing.stl" >"$tmp/session.json"
+  XDG_CONFIG_HOME="$tmp/config" "$root/usr/bin/aniso" "$tmp/session.json" \
+    --screenshot "$tmp/window.png" --quit >"$tmp/window.log" 2>&1
+  code=$?
+  grep -q "aniso: $tmp/session.json: $tmp/missing.stl: no such file" "$tmp/window.log" && [ "$code" -eq 1 ] \
+    || { cat "$tmp/window.log"; fail "the installed window did not open the session (exit $code)"; }
 fi
 
 if [ "$failures" -gt 0 ]; then
