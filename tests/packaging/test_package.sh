@@ -93,6 +93,22 @@ if command -v update-mime-database >/dev/null; then
   for glob in 'model/step:\*.step' 'application/vnd.ply:\*.ply' 'application/vnd.vtp:\*.vtp'; do
     grep -q "$glob" "$tmp/mime/globs2" || fail "the MIME database lacks $glob"
   done
+  # A session is told from other JSON by its content (magic), a STEP file by its name.
+  system_types=/usr/share/mime/packages/freedesktop.org.xml
+  if command -v gio >/dev/null && [ -f "$system_types" ]; then
+    cp "$system_types" "$tmp/mime/packages/"
+    XDG_DATA_DIRS="$tmp" update-mime-database "$tmp/mime"
+    printf '{\n    "assets": {\n    },\n    "format": "aniso-session",\n    "version": 1\n}\n' >"$tmp/s.json"
+    printf '{"format": "other"}\n' >"$tmp/other.json"
+    printf 'ISO-10303-21;\nHEADER;\n' >"$tmp/part.step"
+    for pair in s.json=application/x-aniso-session other.json=application/json part.step=model/step; do
+      type=$(XDG_DATA_DIRS="$tmp" XDG_DATA_HOME="$tmp/none" gio info -a standard::content-type \
+        "$tmp/${pair%%=*}" | sed -n 's/.*content-type: //p')
+      [ "$type" == "${pair#*=}" ] || fail "${pair%%=*} is of type '$type', not ${pair#*=}"
+    done
+  else
+    skip "gio (libglib2.0-bin) or shared-mime-info's types are not installed: no content check"
+  fi
 else
   skip "update-mime-database (shared-mime-info) is not installed"
 fi
