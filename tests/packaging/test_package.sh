@@ -29,7 +29,7 @@ echo "package: $(basename "$deb")"
 dpkg-deb -c "$deb" | awk '{print $NF}' | sed 's|^\./|/|' >"$tmp/contents"
 expected=(
   /usr/bin/aniso
-  /usr/lib/aniso/aniso-mesh-reader
+  /usr/libexec/aniso/aniso-mesh-reader
   /usr/share/applications/org.aniso.Aniso.desktop
   /usr/share/metainfo/org.aniso.Aniso.metainfo.xml
   /usr/share/mime/packages/org.aniso.Aniso.xml
@@ -126,7 +126,7 @@ replies=$(bash -c 'source "$1"; COMP_WORDS=(aniso thu); COMP_CWORD=1; _aniso; ec
 [ "$replies" == $'thumbnail\n--export-gltf' ] || fail "the completion replies '$replies'"
 
 # The installed tree runs: a render and a thumbnail by the installed executable, which finds the
-# installed reader program (../lib/aniso beside bin/).
+# installed reader program (../libexec/aniso from bin/).
 export XDG_CACHE_HOME="$tmp/cache"
 if [ -z "${DISPLAY:-}" ]; then
   fail "no X display for the renders (run under xvfb-run)"
