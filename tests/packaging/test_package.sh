@@ -134,8 +134,9 @@ else
   "$root/usr/bin/aniso" render --builtin torus --size 64x64 --frames 1 --samples 4 \
     -o "$tmp/render.png" >"$tmp/render.log" 2>&1 || { cat "$tmp/render.log"; fail "the installed aniso does not render"; }
   [ -s "$tmp/render.png" ] || fail "the installed aniso wrote no render"
-  printf 'solid t\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 0 1 0\nendloop\nendfacet\nendsolid t\n' >"$tmp/t.stl"
-  "$root/usr/bin/aniso" thumbnail "$tmp/t.stl" "$tmp/thumb" 48 >"$tmp/thumb.log" 2>&1 \
+  # An OBJ file: VTK's reader runs in the reader program (an STL would be read in-process).
+  printf 'v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0.5\nf 1 2 3\nf 2 4 3\n' >"$tmp/t.obj"
+  "$root/usr/bin/aniso" thumbnail "$tmp/t.obj" "$tmp/thumb" 48 >"$tmp/thumb.log" 2>&1 \
     || { cat "$tmp/thumb.log"; fail "the installed aniso writes no thumbnail"; }
   # The PNG's IHDR: width and height as 4-byte big-endian numbers at bytes 16 and 20.
   header=$(od -An -tx1 -j0 -N24 "$tmp/thumb" | tr -d ' \n')
