@@ -13,7 +13,25 @@ endfunction()
 
 aniso_help(main_help)
 aniso_help_section_words(commands "${main_help}" "Commands:")
-set(include "[DESCRIPTION]\n.B aniso\nopens a window on a mesh, a session file (a .json file written by the window) or the\ndefault scene when started without a command, and runs the commands below without a window.\nEach command prints its own options with\n.BR \"aniso COMMAND --help\" .\n\n")
+
+# The synopsis: every usage line of the main help ("Usage: aniso ..." and the lines under it up
+# to the first empty one), each its own line.
+string(REPLACE ";" "," usage_text "${main_help}")
+string(REPLACE "\n" ";" usage_lines "${usage_text}")
+set(synopsis "")
+foreach(line IN LISTS usage_lines)
+  if(line STREQUAL "")
+    break()
+  endif()
+  if(line MATCHES "^(Usage:)? *aniso(.*)$")
+    string(REGEX REPLACE "  +\\(.*\\)$" "" rest "${CMAKE_MATCH_2}")
+    string(STRIP "${rest}" rest)
+    string(REPLACE "\\" "\\e" rest "${rest}")
+    string(APPEND synopsis ".B aniso\n${rest}\n.br\n")
+  endif()
+endforeach()
+
+set(include "[SYNOPSIS]\n${synopsis}\n[DESCRIPTION]\n.B aniso\nopens a window on a mesh, a session file (a .json file written by the window) or the\ndefault scene when started without a command, and runs the commands below without a window.\nEach command prints its own options with\n.BR \"aniso COMMAND --help\" .\n\n")
 foreach(command IN LISTS commands)
   aniso_help(help ${command})
   aniso_roff(roff "${help}")
