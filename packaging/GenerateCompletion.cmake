@@ -4,7 +4,7 @@
 include(${CMAKE_CURRENT_LIST_DIR}/HelpText.cmake)
 
 aniso_help(main_help)
-aniso_help_section_words(commands "${main_help}" "Commands:")
+aniso_help_section_words(commands "${main_help}" "(Sub)?[Cc]ommands:")
 aniso_help_options(main_options "${main_help}")
 if(NOT commands)
   message(FATAL_ERROR "no commands found in '${ANISO} --help'")

@@ -12,7 +12,7 @@ function(aniso_roff out text)
 endfunction()
 
 aniso_help(main_help)
-aniso_help_section_words(commands "${main_help}" "Commands:")
+aniso_help_section_words(commands "${main_help}" "(Sub)?[Cc]ommands:")
 
 # The synopsis: every usage line of the main help ("Usage: aniso ..." and the lines under it up
 # to the first empty one), each its own line.

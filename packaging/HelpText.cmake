@@ -12,7 +12,8 @@ function(aniso_help out)
   set(${out} "${text}" PARENT_SCOPE)
 endfunction()
 
-# OUT: the words listed under the heading HEADING ("Commands:", "Kinds:") of TEXT: the first
+# OUT: the words listed under the heading matching the regular expression HEADING
+# ("(Sub)?[Cc]ommands:", "Kinds:") of TEXT: the first
 # word of each line indented by two spaces (then an optional upper-case argument name, "bake
 # KIND", and two spaces), up to the next heading.
 function(aniso_help_section_words out text heading)
@@ -21,7 +22,7 @@ function(aniso_help_section_words out text heading)
   set(words)
   set(inside FALSE)
   foreach(line IN LISTS lines)
-    if(line STREQUAL "${heading}")
+    if(line MATCHES "^${heading}$")
       set(inside TRUE)
     elseif(inside AND line MATCHES "^[^ ]")
       set(inside FALSE)
