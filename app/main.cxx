@@ -18,7 +18,8 @@ std::string mainHelp()
   const std::size_t width = aniso::cli::terminalWidth();
   const auto row = [&](const std::string& left, const std::string& text)
   { return "  " + left + std::string(12 - left.size(), ' ') + wrapText(text, 14, width) + "\n"; };
-  return "Usage: aniso [--help | --version] COMMAND [ARGS...]\n       " + aniso::gui::guiUsage() +
+  return "Usage: aniso [--help | --version] COMMAND [ARGS...]\n       " +
+         wrapText(aniso::gui::guiUsage(), 7, width) +
          "\n\n" +
          wrapText("aniso renders meshes with anisotropic Ashikhmin-Shirley materials under "
                   "image-based lighting. Without a command it opens the window.",
