@@ -153,6 +153,13 @@ std::shared_ptr<const LoadedMesh> SceneAssets::loadedMesh(const std::string& mes
 std::vector<std::string> SceneAssets::vectorArrays(const std::string& mesh,
                                                    const std::string& block)
 {
+  // Only what is loaded already: a file that failed is not read again for its list.
+  const std::string key = mesh + readOptionsKey(mesh);
+  const bool builtin = mesh.rfind(kBuiltinPrefix, 0) == 0;
+  if (block.empty() ? !builtin && !meshes_.contains(key) : !blocks_.contains(key))
+  {
+    return {};
+  }
   return vectorArrayNames(loadedMesh(mesh, block)->polyData);
 }
 

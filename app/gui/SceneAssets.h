@@ -115,7 +115,8 @@ public:
   // The blocks themselves, with the materials and placements the file gives them.
   std::shared_ptr<const LoadedBlocks> blocks(const std::string& mesh);
   // The vector arrays of a mesh text's block (empty: the whole file) as loaded, before any
-  // tangent model (MeshArrays.h, vectorArrayNames). Throws as surface() does.
+  // tangent model (MeshArrays.h, vectorArrayNames); none when it is not loaded (nothing is read
+  // here). Throws aniso::Error "MESH: no part BLOCK" for a block the file does not have.
   std::vector<std::string> vectorArrays(const std::string& mesh, const std::string& block);
   // Its stand-in while the view moves (LevelOfDetail.h), null when it is drawn as it is. Made
   // with the surface, so a surface prepared on a worker brings it along.

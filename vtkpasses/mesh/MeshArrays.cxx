@@ -1,10 +1,11 @@
 #include "vtkpasses/mesh/MeshArrays.h"
 
-#include "core/parameters/parameters.h"
 #include "vtkpasses/mesh/CadReader.h"
 
 #include <algorithm>
 #include <cmath>
+#include <iomanip>
+#include <sstream>
 #include <limits>
 #include <vtkCellData.h>
 #include <vtkDataArray.h>
@@ -105,7 +106,17 @@ std::vector<std::string> vectorArrayNames(vtkPolyData* surface)
 
 std::string formatArrayInfo(const ArrayInfo& info)
 {
-  const auto number = [](double v) { return std::isnan(v) ? std::string("nan") : formatNumber(v); };
+  // Six significant digits: a listing to read, not to parse back.
+  const auto number = [](double v)
+  {
+    if (std::isnan(v))
+    {
+      return std::string("nan");
+    }
+    std::ostringstream out;
+    out << std::setprecision(6) << v;
+    return out.str();
+  };
   return info.name + "\t" + (info.perCell ? "cell" : "point") + "\t" +
          std::to_string(info.components) +
          (info.components == 1 ? " component\t" : " components\t") + number(info.minimum) + ".." +
