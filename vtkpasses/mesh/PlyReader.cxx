@@ -310,14 +310,33 @@ private:
       {
         continue;
       }
-      auto array = vtkSmartPointer<vtkDoubleArray>::New();
       const std::string stem = n.size() > 2 ? n.substr(0, n.size() - 2) : std::string();
       const auto named = [&](size_t k, const char* suffix) {
         return k < properties.size() && !properties[k].isList &&
                properties[k].name == stem + suffix;
       };
+      const bool vector =
+          !stem.empty() && named(i, "_x") && named(i + 1, "_y") && named(i + 2, "_z");
+      // Float unless a value might not fit one exactly (double, 32-bit integers): a file of
+      // byte-sized properties grows at most fourfold in memory.
+      bool wide = false;
+      for (size_t k = i; k < i + (vector ? 3 : 1); ++k)
+      {
+        const PlyType type = properties[k].type;
+        wide =
+            wide || type == PlyType::Float64 || type == PlyType::Int32 || type == PlyType::UInt32;
+      }
+      vtkSmartPointer<vtkDataArray> array;
+      if (wide)
+      {
+        array = vtkSmartPointer<vtkDoubleArray>::New();
+      }
+      else
+      {
+        array = vtkSmartPointer<vtkFloatArray>::New();
+      }
       const int slot = static_cast<int>(this->Extra.size());
-      if (!stem.empty() && named(i, "_x") && named(i + 1, "_y") && named(i + 2, "_z"))
+      if (vector)
       {
         array->SetName(stem.c_str());
         array->SetNumberOfComponents(3);
@@ -628,7 +647,7 @@ private:
     }
     if (anyVertex)
     {
-      for (vtkDoubleArray* extra : this->Extra)
+      for (vtkDataArray* extra : this->Extra)
       {
         polyData->GetPointData()->AddArray(extra);
       }
@@ -647,7 +666,7 @@ private:
   vtkNew<vtkFloatArray> TCoords;
   bool AllNormals = true;
   bool AllTCoords = true;
-  std::vector<vtkSmartPointer<vtkDoubleArray>> Extra; // the arrays of planExtraArrays
+  std::vector<vtkSmartPointer<vtkDataArray>> Extra; // the arrays of planExtraArrays
   std::vector<std::pair<int, int>> ExtraSlot;  // per vertex property: (array, component) or -1
   std::vector<std::vector<double>> ExtraTuple; // the current vertex's values per array
 };

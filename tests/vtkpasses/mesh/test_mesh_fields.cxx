@@ -271,6 +271,10 @@ TEST_F(MeshFieldsTest, PlyPropertiesBeyondPositionsBecomePointArrays)
   ASSERT_NE(temperature, nullptr);
   ASSERT_NE(red, nullptr);
   EXPECT_EQ(mesh.polyData->GetPointData()->GetArray("flow_x"), nullptr);
+  // Double properties stay double; float and byte ones are float.
+  EXPECT_EQ(mesh.polyData->GetPointData()->GetArray("flow")->GetDataType(), VTK_DOUBLE);
+  EXPECT_EQ(temperature->GetDataType(), VTK_FLOAT);
+  EXPECT_EQ(red->GetDataType(), VTK_FLOAT);
   int nan = 0;
   for (vtkIdType i = 0; i < 4; ++i)
   {
