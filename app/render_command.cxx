@@ -237,10 +237,10 @@ Command renderCommand()
   jitter.choices = {"on", "off"};
   jitter.group = kGroupSampling;
   c.options.push_back(jitter);
-  Option output =
-      textOption("--output", "FILE",
-                 "the image to write: .png or .exr (not with --list-parts; may be left out with "
-                 "--export-gltf)");
+  Option output = textOption("--output", "FILE",
+                             "the image to write: .png or .exr (not with --list-parts or "
+                             "--list-arrays; may be left out with "
+                             "--export-gltf)");
   output.alias = "-o";
   output.required = true;
   output.group = kGroupOutput;
@@ -267,12 +267,14 @@ Command renderCommand()
               "  aniso render --builtin sphere --model ward --light dir:1,-1,1:3 -o ward.png\n"
               "  aniso render body.stl lid.stl --part 'lid*=satin gold' --hide body -o lid.png\n"
               "  aniso render *.ply --materials shop.json --part '*=brushed steel' --list-parts\n"
-              "  aniso render scene.glb --part 'shaft*=brushed steel' --export-gltf out.glb\n";
+              "  aniso render scene.glb --part 'shaft*=brushed steel' --export-gltf out.glb\n"
+              "  aniso render flow.vtp --list-arrays\n"
+              "  aniso render flow.vtp --tangents array:velocity -o flow.png\n";
   return c;
 }
 
 // MESH is optional when --builtin is given: parse with it, then without if it is missing.
-// --output is required unless --list-parts or --export-gltf is given.
+// --output is required unless --list-parts, --list-arrays or --export-gltf is given.
 Arguments parse(Command command, const std::vector<std::string>& args)
 {
   for (Option& option : command.options)
@@ -284,7 +286,8 @@ Arguments parse(Command command, const std::vector<std::string>& args)
   }
   const auto checkOutputGiven = [](const Arguments& a)
   {
-    if (!a.helpRequested && !a.has("--list-parts") && !a.has("--output") && !a.has("--export-gltf"))
+    if (!a.helpRequested && !a.has("--list-parts") && !a.has("--list-arrays") &&
+        !a.has("--output") && !a.has("--export-gltf"))
     {
       throw usageError("-o", "missing FILE (required)");
     }
@@ -526,8 +529,8 @@ int runRender(const std::vector<std::string>& args, std::ostream& out, std::ostr
   }
 
   // Everything the command line can get wrong is checked before any work.
-  // --list-parts prints the parts alone: what a render reports goes nowhere.
-  const bool listing = a.has("--list-parts");
+  // --list-parts and --list-arrays print the parts alone: what a render reports goes nowhere.
+  const bool listing = a.has("--list-parts") || a.has("--list-arrays");
   std::ostringstream unreported;
   std::ostream& report = listing ? unreported : out;
   const std::string output = a.text("--output");
@@ -632,7 +635,14 @@ int runRender(const std::vector<std::string>& args, std::ostream& out, std::ostr
   assignParts(a, library, scene);
   if (listing)
   {
-    listParts(scene, out);
+    if (a.has("--list-parts"))
+    {
+      listParts(scene, out);
+    }
+    if (a.has("--list-arrays"))
+    {
+      listArrays(scene, out);
+    }
     return 0;
   }
   const bool several = scene.size() > 1;

@@ -81,6 +81,12 @@ void addPartOptions(Command& c)
                            "for a hidden one), and exit without rendering");
   list.group = kGroupScene;
   c.options.push_back(list);
+  Option arrays = textOption(
+      "--list-arrays", "",
+      "print each part's data arrays, one line each under the part's name (name, point or cell, "
+      "components, the range of the finite values or of their lengths, the count of NaN or Inf "
+      "values), and exit without rendering");
+  c.options.push_back(arrays);
 }
 
 FileMeshes meshesOfFile(const std::string& path, const MeshReadOptions& options)
@@ -296,7 +302,7 @@ void assignParts(const Arguments& a, const MaterialLibrary& library, std::vector
   {
     anyVisible = anyVisible || part.visible;
   }
-  if (!anyVisible && !a.has("--list-parts"))
+  if (!anyVisible && !a.has("--list-parts") && !a.has("--list-arrays"))
   {
     throw usageError("--hide", "hides every part: nothing is left to render");
   }
@@ -310,6 +316,19 @@ void listParts(const std::vector<ScenePart>& parts, std::ostream& out)
     out << part.name << "\t" << triangles << (triangles == 1 ? " triangle\t" : " triangles\t")
         << (part.material ? part.material->name : std::string("(command line)"))
         << (part.visible ? "" : "\thidden") << "\n";
+  }
+}
+
+void listArrays(const std::vector<ScenePart>& parts, std::ostream& out)
+{
+  for (const ScenePart& part : parts)
+  {
+    const std::vector<ArrayInfo> arrays = describeArrays(part.mesh.polyData);
+    out << part.name << (arrays.empty() ? "\t(no arrays)" : "") << "\n";
+    for (const ArrayInfo& info : arrays)
+    {
+      out << "  " << formatArrayInfo(info) << "\n";
+    }
   }
 }
 

@@ -10,6 +10,7 @@
 #include "core/placement.h"
 #include "vtkpasses/mesh/GltfWriter.h"
 #include "vtkpasses/mesh/MeshLoader.h"
+#include "vtkpasses/mesh/MeshArrays.h"
 #include "vtkpasses/mesh/SurfacePreparation.h"
 #include "vtkpasses/render/MaterialSettings.h"
 
@@ -91,6 +92,11 @@ void assignParts(const Arguments& arguments, const MaterialLibrary& library,
 // One line a part: "NAME<TAB>N triangles<TAB>MATERIAL" ("1 triangle"), with "<TAB>hidden" for a
 // hidden one; the command line's material is "(command line)".
 void listParts(const std::vector<ScenePart>& parts, std::ostream& out);
+
+// The data arrays of each part's loaded (sanitised) mesh: a line with the part's name ("<TAB>(no
+// arrays)" after it when it has none), then one indented line per array (formatArrayInfo,
+// vtkpasses/mesh/MeshArrays.h).
+void listArrays(const std::vector<ScenePart>& parts, std::ostream& out);
 
 // The surface options of MATERIAL's tangents ("auto": the mesh's own, else from the UVs, else
 // axis:1,0,0). Throws aniso::Error "MATERIAL: tangents: reason" for a bad model.

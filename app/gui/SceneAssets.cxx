@@ -9,6 +9,7 @@
 #include "vtkpasses/mesh/BuiltinMeshes.h"
 #include "vtkpasses/mesh/CadReader.h"
 #include "vtkpasses/mesh/LevelOfDetail.h"
+#include "vtkpasses/mesh/MeshArrays.h"
 #include "vtkpasses/mesh/MeshLoader.h"
 
 #include <algorithm>
@@ -122,6 +123,46 @@ std::vector<std::string> SceneAssets::blockNames(const std::string& mesh,
   return names;
 }
 
+std::shared_ptr<const LoadedMesh> SceneAssets::loadedMesh(const std::string& mesh,
+                                                          const std::string& block)
+{
+  if (!block.empty())
+  {
+    const std::shared_ptr<const LoadedBlocks> all = blocks(mesh);
+    for (const MeshBlock& b : all->blocks)
+    {
+      if (b.name == block)
+      {
+        return std::shared_ptr<const LoadedMesh>(all, &b.mesh);
+      }
+    }
+    throw errorAbout(mesh, "no part \"" + block + "\"");
+  }
+  return meshes_.get(mesh + readOptionsKey(mesh),
+                     [&]
+                     {
+                       if (mesh.rfind(kBuiltinPrefix, 0) == 0)
+                       {
+                         return std::make_shared<LoadedMesh>(
+                             makeBuiltinMesh(parseBuiltinMesh(mesh.substr(8), "mesh")));
+                       }
+                       return std::make_shared<LoadedMesh>(loadMesh(mesh, meshReadOptions()));
+                     });
+}
+
+std::vector<std::string> SceneAssets::vectorArrays(const std::string& mesh,
+                                                   const std::string& block)
+{
+  // Only what is loaded already: a file that failed is not read again for its list.
+  const std::string key = mesh + readOptionsKey(mesh);
+  const bool builtin = mesh.rfind(kBuiltinPrefix, 0) == 0;
+  if (block.empty() ? !builtin && !meshes_.contains(key) : !blocks_.contains(key))
+  {
+    return {};
+  }
+  return vectorArrayNames(loadedMesh(mesh, block)->polyData);
+}
+
 std::shared_ptr<const SceneAssets::Surface> SceneAssets::surfaceEntry(const std::string& mesh,
                                                                       const std::string& block,
                                                                       const std::string& tangents)
@@ -130,35 +171,7 @@ std::shared_ptr<const SceneAssets::Surface> SceneAssets::surfaceEntry(const std:
       mesh + "\n" + block + "\n" + tangents + readOptionsKey(mesh),
       [&]
       {
-        std::shared_ptr<const LoadedMesh> loaded;
-        if (!block.empty())
-        {
-          const std::shared_ptr<const LoadedBlocks> all = blocks(mesh);
-          for (const MeshBlock& b : all->blocks)
-          {
-            if (b.name == block)
-            {
-              loaded = std::shared_ptr<const LoadedMesh>(all, &b.mesh);
-            }
-          }
-          if (!loaded)
-          {
-            throw errorAbout(mesh, "no part \"" + block + "\"");
-          }
-        }
-        else
-        {
-          loaded = meshes_.get(mesh + readOptionsKey(mesh),
-                               [&]
-                               {
-                                 if (mesh.rfind(kBuiltinPrefix, 0) == 0)
-                                 {
-                                   return std::make_shared<LoadedMesh>(
-                                       makeBuiltinMesh(parseBuiltinMesh(mesh.substr(8), "mesh")));
-                                 }
-                                 return std::make_shared<LoadedMesh>(loadMesh(mesh, meshReadOptions()));
-                               });
-        }
+        const std::shared_ptr<const LoadedMesh> loaded = loadedMesh(mesh, block);
         auto entry = std::make_shared<Surface>();
         entry->prepared = prepareSurface(loaded->polyData, surfaceOptions(tangents),
                                          block.empty() ? mesh : mesh + ": part " + block);

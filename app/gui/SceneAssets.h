@@ -114,6 +114,10 @@ public:
   std::vector<std::string> blockNames(const std::string& mesh, std::vector<std::string>* warnings);
   // The blocks themselves, with the materials and placements the file gives them.
   std::shared_ptr<const LoadedBlocks> blocks(const std::string& mesh);
+  // The vector arrays of a mesh text's block (empty: the whole file) as loaded, before any
+  // tangent model (MeshArrays.h, vectorArrayNames); none when it is not loaded (nothing is read
+  // here). Throws aniso::Error "MESH: no part BLOCK" for a block the file does not have.
+  std::vector<std::string> vectorArrays(const std::string& mesh, const std::string& block);
   // Its stand-in while the view moves (LevelOfDetail.h), null when it is drawn as it is. Made
   // with the surface, so a surface prepared on a worker brings it along.
   vtkSmartPointer<vtkPolyData> interactiveSurface(const std::string& mesh,
@@ -165,6 +169,8 @@ private:
     vtkSmartPointer<vtkPolyData> interactive;
     std::vector<std::string> notes; // the mesh report's, then the preparation's
   };
+  // The loaded (sanitised) mesh of a block, or of the whole file for an empty BLOCK.
+  std::shared_ptr<const LoadedMesh> loadedMesh(const std::string& mesh, const std::string& block);
   std::shared_ptr<const Surface> surfaceEntry(const std::string& mesh, const std::string& block,
                                               const std::string& tangents);
   // Maps by key as TEXT gives them.

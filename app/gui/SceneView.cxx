@@ -511,6 +511,7 @@ bool SceneView::syncParts()
           part.surface = placedSurface(part.surface, wanted.placement);
         }
         part.loaded = true;
+        model_->setPartArrays(wanted.name, assets_->vectorArrays(wanted.mesh, wanted.block));
         for (const std::string& note : assets_->surfaceNotes(wanted.mesh, wanted.block, tangents))
         {
           emit noteAdded(QString::fromStdString(note));
@@ -520,6 +521,16 @@ bool SceneView::syncParts()
       {
         // Skipped with one warning; the other parts are drawn.
         part.surface = nullptr;
+        try
+        {
+          // The mesh may have loaded and its tangent model failed (array:NAME of an array it
+          // lacks): its arrays are still offered.
+          model_->setPartArrays(wanted.name, assets_->vectorArrays(wanted.mesh, wanted.block));
+        }
+        catch (const Error&)
+        {
+          model_->setPartArrays(wanted.name, {});
+        }
         emit errorOccurred(tr("Part %1 skipped: %2")
                                .arg(QString::fromStdString(wanted.name),
                                     QString::fromStdString(e.what())));

@@ -263,8 +263,8 @@ std::vector<ParameterSpec> declare()
                 text("tangents", "Tangents", "auto",
                      "tangent field: auto (the mesh's, else from UVs, else face-u on a STEP or "
                      "IGES part, else axis:1,0,0), uv, axis:X,Y,Z, around:X,Y,Z, radial:X,Y,Z, "
-                     "or face-u, face-v: along a CAD face's own u or v (a turned face: round "
-                     "or along its axis)"))),
+                     "face-u, face-v: along a CAD face's own u or v (a turned face: round "
+                     "or along its axis), or array:NAME: along the mesh's vector array NAME"))),
       // How STEP and IGES parts are tessellated (vtkpasses/mesh/CadReader.h). 0.001 of a part's
       // diagonal keeps a turned part's outline and highlight smooth at a full-window view; the
       // command line also takes an absolute length ("--cad-deflection 0.05mm").

@@ -33,8 +33,17 @@
 #include <string>
 #include <vector>
 #include <vtkNew.h>
+#include <vtkCellArray.h>
+#include <vtkCellData.h>
+#include <vtkDoubleArray.h>
+#include <vtkFloatArray.h>
+#include <vtkIntArray.h>
 #include <vtkPLYWriter.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
 #include <vtkSphereSource.h>
+#include <vtkXMLPolyDataWriter.h>
 
 namespace
 {
@@ -249,6 +258,70 @@ TEST_F(RenderPartsCli, ListPartsPrintsNamesTrianglesAndMaterials)
   ASSERT_EQ(builtin.exitCode, 0) << builtin.err;
   EXPECT_EQ(builtin.out.rfind("torus\t", 0), 0u) << builtin.out;
   EXPECT_NE(builtin.out.find("\tsatin gold\n"), std::string::npos) << builtin.out;
+}
+
+// --list-arrays: a VTP (vtkXMLPolyDataWriter) of one quad split in two triangles with a point
+// vector "flow" (one NaN component), a point scalar "heat" and a cell scalar "id" prints one
+// line per array under the part's name: point or cell, components, the finite range (of the
+// lengths for a vector), the NaN/Inf count; a part without arrays says so. --tangents
+// array:NAME of an array the part lacks ends with one line naming the vector arrays it has.
+TEST_F(RenderPartsCli, ListArraysPrintsEachPartsFields)
+{
+  vtkNew<vtkPoints> points;
+  const double corners[4][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+  vtkNew<vtkFloatArray> flow;
+  flow->SetName("flow");
+  flow->SetNumberOfComponents(3);
+  vtkNew<vtkDoubleArray> heat;
+  heat->SetName("heat");
+  for (int i = 0; i < 4; ++i)
+  {
+    points->InsertNextPoint(corners[i][0], corners[i][1], 0.0);
+    flow->InsertNextTuple3(3.0 * (i + 1), 4.0 * (i + 1), 0.0); // lengths 5, 10, 15, 20
+    heat->InsertNextValue(-2.5 + i);
+  }
+  flow->SetComponent(3, 1, std::nan(""));
+  vtkNew<vtkCellArray> triangles;
+  const vtkIdType first[3] = {0, 1, 2};
+  const vtkIdType second[3] = {0, 2, 3};
+  triangles->InsertNextCell(3, first);
+  triangles->InsertNextCell(3, second);
+  vtkNew<vtkIntArray> id;
+  id->SetName("id");
+  id->InsertNextValue(7);
+  id->InsertNextValue(9);
+  vtkNew<vtkPolyData> quad;
+  quad->SetPoints(points);
+  quad->SetPolys(triangles);
+  quad->GetPointData()->AddArray(flow);
+  quad->GetPointData()->AddArray(heat);
+  quad->GetCellData()->AddArray(id);
+  const std::string file = path("quad.vtp").string();
+  vtkNew<vtkXMLPolyDataWriter> writer;
+  writer->SetInputData(quad);
+  writer->SetFileName(file.c_str());
+  ASSERT_EQ(writer->Write(), 1);
+
+  const auto before = files();
+  const Outcome r = run({"render", file, right_, "--list-arrays"});
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_EQ(r.err, "");
+  EXPECT_EQ(lines(r.out), (std::vector<std::string>{
+                              "quad",
+                              "  flow\tpoint\t3 components\t5..15 (length)\t1 NaN/Inf",
+                              "  heat\tpoint\t1 component\t-2.5..0.5\t0 NaN/Inf",
+                              "  id\tcell\t1 component\t7..9\t0 NaN/Inf",
+                              "right\t(no arrays)",
+                          }));
+  EXPECT_EQ(files(), before); // nothing written
+
+  const Outcome missing =
+      run({"render", file, "--tangents", "array:velocity", "-o", path("quad.png").string()});
+  EXPECT_NE(missing.exitCode, 0);
+  EXPECT_NE(missing.err.find("tangents 'array:velocity': the mesh has no point or cell array "
+                             "'velocity' (its vector arrays: flow)"),
+            std::string::npos)
+      << missing.err;
 }
 
 TEST_F(RenderPartsCli, AFileOfSeveralBlocksIsSeveralParts)

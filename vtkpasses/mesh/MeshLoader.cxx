@@ -32,7 +32,7 @@ namespace aniso
 {
 namespace
 {
-const char* const kExtensions[] = {".obj",  ".ply", ".stl",  ".off", ".vtk",  ".vtp", ".vtm",
+const char* const kExtensions[] = {".obj",  ".ply", ".stl",  ".off", ".vtk",  ".vtp", ".vtu", ".vtm",
                                    ".gltf", ".glb", ".step", ".stp", ".iges", ".igs"};
 
 std::mutex& loadMutex()

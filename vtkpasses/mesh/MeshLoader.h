@@ -3,7 +3,8 @@
 //
 // Formats, chosen by the file extension (case-insensitive):
 //   .obj (vtkOBJReader), .ply (PlyReader), .stl (StlReader), .off (OffReader), .vtk (legacy, any
-//   dataset: non-polygonal ones are reduced to their outer surface), .vtp (XML polydata), .vtm
+//   dataset: non-polygonal ones are reduced to their outer surface), .vtp (XML polydata), .vtu
+//   (XML unstructured grid, vtkXMLUnstructuredGridReader: its outer surface), .vtm
 //   (XML multiblock, vtkXMLMultiBlockDataReader: every leaf dataset, non-polygonal ones reduced
 //   to their surface like .vtk), .gltf/.glb (tinygltf, GltfReader.h: every mesh of the default
 //   scene with its node transforms applied, and its materials), .step/.stp/.iges/.igs (OpenCASCADE, CadReader.h: the
@@ -18,6 +19,7 @@
 // The result then goes through sanitizeSurface() (MeshValidation.h): triangles only, no NaN, no
 // zero-area faces, exact duplicates merged, and float "Normals"/"TCoords"/"Tangents" arrays when
 // the file had them. Normals and tangents that are missing are made by SurfacePreparation.h.
+// The file's other point and cell arrays (data fields) are kept (docs/FORMATS.md, "Data arrays").
 //
 // Errors are aniso::Error "PATH: reason": missing or unreadable file, empty file, unknown
 // extension, whatever the reader reported (VTK's error and warning output is captured while
