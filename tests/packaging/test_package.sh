@@ -90,7 +90,7 @@ if command -v update-mime-database >/dev/null; then
   cp -r "$root/usr/share/mime" "$tmp/mime"
   XDG_DATA_DIRS="$tmp" update-mime-database "$tmp/mime" 2>"$tmp/mime.log" || fail "update-mime-database fails"
   if [ -s "$tmp/mime.log" ]; then cat "$tmp/mime.log"; fail "update-mime-database warns"; fi
-  for glob in 'model/step:\*.step' 'application/vnd.ply:\*.ply' 'application/vnd.vtp:\*.vtp'; do
+  for glob in 'model/step:\*.step' 'application/vnd.ply:\*.ply' 'application/vnd.vtp:\*.vtp' 'application/vnd.vtu:\*.vtu'; do
     grep -q "$glob" "$tmp/mime/globs2" || fail "the MIME database lacks $glob"
   done
   # A session is told from other JSON by its content (magic), a STEP file by its name.
