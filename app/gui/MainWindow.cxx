@@ -375,12 +375,14 @@ bool MainWindow::attempt(const std::function<void()>& action)
 namespace
 {
 // The block a part of block B of LOADED draws: empty (the file as loadMesh reads it) for a file
-// of one block that sits where its coordinates are, else the block's name.
+// of one surface that sits where its coordinates are, else the block's name (always for a line
+// set, which loadMesh does not read).
 std::string partBlock(const LoadedBlocks& loaded, std::size_t b)
 {
   const MeshBlock& block = loaded.blocks[b];
-  return loaded.blocks.size() > 1 || block.placement != kIdentityPlacement ? block.name
-                                                                            : std::string();
+  return loaded.blocks.size() > 1 || block.placement != kIdentityPlacement || block.lines
+             ? block.name
+             : std::string();
 }
 
 // The tangent model a part of BLOCK starts with: its file material's, else TANGENTS.

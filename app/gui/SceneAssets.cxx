@@ -131,6 +131,7 @@ std::shared_ptr<const SceneAssets::Surface> SceneAssets::surfaceEntry(const std:
       [&]
       {
         std::shared_ptr<const LoadedMesh> loaded;
+        bool lines = false;
         if (!block.empty())
         {
           const std::shared_ptr<const LoadedBlocks> all = blocks(mesh);
@@ -139,6 +140,7 @@ std::shared_ptr<const SceneAssets::Surface> SceneAssets::surfaceEntry(const std:
             if (b.name == block)
             {
               loaded = std::shared_ptr<const LoadedMesh>(all, &b.mesh);
+              lines = b.lines;
             }
           }
           if (!loaded)
@@ -160,6 +162,13 @@ std::shared_ptr<const SceneAssets::Surface> SceneAssets::surfaceEntry(const std:
                                });
         }
         auto entry = std::make_shared<Surface>();
+        if (lines)
+        {
+          // A line set is drawn as it was loaded (its tangents the line's), without a stand-in.
+          entry->prepared.polyData = loaded->polyData;
+          entry->notes = loaded->report.notes();
+          return std::shared_ptr<const Surface>(std::move(entry));
+        }
         entry->prepared = prepareSurface(loaded->polyData, surfaceOptions(tangents),
                                          block.empty() ? mesh : mesh + ": part " + block);
         entry->interactive = interactiveLevelOfDetail(entry->prepared.polyData);

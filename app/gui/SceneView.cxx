@@ -8,6 +8,7 @@
 #include "vtkpasses/mesh/PartPlacement.h"
 #include "vtkpasses/render/AnisoMaterial.h"
 #include "vtkpasses/render/EnvironmentLighting.h"
+#include "vtkpasses/render/LineStyle.h"
 #include "vtkpasses/render/vtkAnisoAccumulationPass.h"
 
 #include <QStringList>
@@ -872,7 +873,17 @@ void SceneView::applyMaterial()
     {
       continue;
     }
-    MaterialSettings wanted = materialFromParameters(model_->partParameters(int(i)), part.full);
+    const ParameterSet partValues = model_->partParameters(int(i));
+    MaterialSettings wanted = materialFromParameters(partValues, part.full);
+    // A line set's width (LineStyle.h); a surface has no lines to widen.
+    LineStyle style;
+    style.width = partValues.real("line-width");
+    style.unit = parseLineWidthUnit(partValues.text("line-width-unit"));
+    if (style.width != lineStyle(part.actor).width || style.unit != lineStyle(part.actor).unit)
+    {
+      setLineStyle(part.actor, style);
+      changedSettings_ = true;
+    }
     assets_->addMaps(model_->partMaterial(int(i)), wanted);
     const bool baked = ready.halfVector && ready.request.lobe.nu == wanted.lobe.nu &&
                        ready.request.lobe.nv == wanted.lobe.nv &&
