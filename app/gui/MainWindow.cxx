@@ -390,6 +390,25 @@ std::string blockTangents(const MeshBlock& block, const std::string& tangents)
 {
   return block.material ? block.material->value("tangents").text : tangents;
 }
+
+// What opening MESH reads first, whose failure is the load's: the file as one surface, or the
+// parts of a file that has line parts (which the one surface leaves out; a file of lines only
+// has no surface at all).
+void readOpened(SceneAssets& staged, const std::string& mesh, const std::string& tangents)
+{
+  const bool builtin = mesh.rfind("builtin:", 0) == 0;
+  const std::shared_ptr<const LoadedBlocks> loaded = builtin ? nullptr : staged.blocks(mesh);
+  if (!loaded || std::none_of(loaded->blocks.begin(), loaded->blocks.end(),
+                              [](const MeshBlock& b) { return b.lines; }))
+  {
+    staged.surface(mesh, tangents);
+    return;
+  }
+  for (std::size_t b = 0; b < loaded->blocks.size(); ++b)
+  {
+    staged.surface(mesh, partBlock(*loaded, b), blockTangents(loaded->blocks[b], tangents));
+  }
+}
 } // namespace
 
 std::vector<ScenePart> MainWindow::partsOfFile(const QString& path, const std::string& material,
@@ -573,7 +592,7 @@ void MainWindow::openMeshesInBackground(const QStringList& paths)
       kMeshLoad, paths.front(),
       [files, tangents](SceneAssets& staged)
       {
-        staged.surface(files.front(), tangents); // the first opens: its failure is the load's
+        readOpened(staged, files.front(), tangents); // the first opens: its failure is the load's
         prefetchMeshes(staged, files, tangents);
       },
       [this, paths]
@@ -627,7 +646,7 @@ void MainWindow::openMeshInBackground(const QString& path)
       kMeshLoad, path,
       [mesh, tangents](SceneAssets& staged)
       {
-        staged.surface(mesh, tangents);
+        readOpened(staged, mesh, tangents);
         // Its blocks too, as they become its parts.
         const std::shared_ptr<const LoadedBlocks> loaded = staged.blocks(mesh);
         for (std::size_t b = 0; b < loaded->blocks.size(); ++b)

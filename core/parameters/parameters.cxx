@@ -269,12 +269,12 @@ std::vector<ParameterSpec> declare()
                      "or along its axis)"))),
       // Illuminated lines (a file's polylines, vtkpasses/mesh/LineSet.h): their width, per
       // material, so that each line part has its own.
-      ofMaterial(affecting(A::Uniforms | A::LitModels,
+      ofMaterial(affecting(A::Uniforms | A::FrameCost | A::LitModels,
                            number("line-width", "Line width", T::Real, 2.0, 1e-4, 1e4, 0.1,
                                   S::Logarithmic, {},
                                   "illuminated lines (a file's polylines): their width, in "
                                   "line-width-unit"))),
-      ofMaterial(affecting(A::Uniforms | A::LitModels,
+      ofMaterial(affecting(A::Uniforms | A::FrameCost | A::LitModels,
                            choice("line-width-unit", "Line width unit",
                                   {LineWidthUnit::Pixels, LineWidthUnit::World},
                                   LineWidthUnit::Pixels,
