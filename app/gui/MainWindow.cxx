@@ -482,7 +482,7 @@ bool MainWindow::openMesh(const QString& path)
         const std::vector<ScenePart> parts = partsOfFile(path, material, library, taken, warnings);
         // What setting the mesh key alone makes of the scene: one part of the edited material.
         const bool plain = parts.size() == 1 && parts[0].material == material &&
-                           parts[0].placement == kIdentityPlacement;
+                           parts[0].placement == kIdentityPlacement && parts[0].block.empty();
         const bool same = mesh == model_.value("mesh") &&
                           (plain ? model_.parts().size() == 1 : parts == model_.parts());
         if (!same)

@@ -37,9 +37,9 @@ SurfaceOptions surfaceOptions(const std::string& tangents)
 SceneAssets::SceneAssets(SceneModel* model) : model_(model)
 {
   model->setValidator("mesh", [this](const std::string& text, const std::string&)
-                      { surface(text, model_->text("tangents")); });
+                      { checkMesh(text, model_->text("tangents")); });
   model->setValidator("tangents", [this](const std::string& text, const std::string&)
-                      { surface(model_->text("mesh"), text); });
+                      { checkMesh(model_->text("mesh"), text); });
   model->setValidator("env",
                       [this](const std::string& text, const std::string&) { environment(text); });
   for (const char* key : kMapKeys)
@@ -104,6 +104,29 @@ std::shared_ptr<const LoadedBlocks> SceneAssets::blocks(const std::string& mesh)
                        }
                        return std::shared_ptr<const LoadedBlocks>(std::move(loaded));
                      });
+}
+
+void SceneAssets::checkMesh(const std::string& mesh, const std::string& tangents)
+{
+  try
+  {
+    surface(mesh, tangents);
+  }
+  catch (const Error&)
+  {
+    // A file of lines only has no surface, yet parts (its line parts) to draw.
+    const bool builtin = mesh.rfind(kBuiltinPrefix, 0) == 0;
+    std::shared_ptr<const LoadedBlocks> loaded;
+    if (!builtin)
+    {
+      loaded = blocks(mesh);
+    }
+    if (!loaded || std::none_of(loaded->blocks.begin(), loaded->blocks.end(),
+                                [](const MeshBlock& b) { return b.lines; }))
+    {
+      throw;
+    }
+  }
 }
 
 std::vector<std::string> SceneAssets::blockNames(const std::string& mesh,
