@@ -14,16 +14,13 @@
 //     draws through the geometry shader.
 // The materials' line variants read the style through ShaderHook::setTransforms (the uniform
 // PREFIX + "LineWorldWidthClip") and pass their varyings on with lineGeometryCode (ShaderHook.h).
+#include "core/parameters/choices.h"
+
 class vtkActor;
 class vtkRenderer;
 
 namespace aniso
 {
-enum class LineWidthUnit
-{
-  Pixels,
-  World,
-};
 
 struct LineStyle
 {
