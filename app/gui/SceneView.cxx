@@ -876,9 +876,7 @@ void SceneView::applyMaterial()
     const ParameterSet partValues = model_->partParameters(int(i));
     MaterialSettings wanted = materialFromParameters(partValues, part.full);
     // A line set's width (LineStyle.h); a surface has no lines to widen.
-    LineStyle style;
-    style.width = partValues.real("line-width");
-    style.unit = parseLineWidthUnit(partValues.text("line-width-unit"));
+    const LineStyle style = lineStyleFromParameters(partValues);
     if (style.width != lineStyle(part.actor).width || style.unit != lineStyle(part.actor).unit)
     {
       setLineStyle(part.actor, style);

@@ -26,6 +26,14 @@ vtkInformationDoubleVectorKey* styleKey()
 }
 } // namespace
 
+LineStyle lineStyleFromParameters(const ParameterSet& parameters)
+{
+  LineStyle style;
+  style.width = parameters.real("line-width");
+  style.unit = parseLineWidthUnit(parameters.text("line-width-unit"));
+  return style;
+}
+
 void validateLineStyle(const LineStyle& style)
 {
   if (!std::isfinite(style.width) || style.width <= 0.0)

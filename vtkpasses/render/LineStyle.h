@@ -15,6 +15,7 @@
 // The materials' line variants read the style through ShaderHook::setTransforms (the uniform
 // PREFIX + "LineWorldWidthClip") and pass their varyings on with lineGeometryCode (ShaderHook.h).
 #include "core/parameters/choices.h"
+#include "core/parameters/parameters.h"
 
 class vtkActor;
 class vtkRenderer;
@@ -30,6 +31,9 @@ struct LineStyle
 
 // A line width VTK takes as wider than any hardware draws, so that its geometry shader runs.
 constexpr double kGeometryShaderLineWidth = 4096.0;
+
+// The declared line-width and line-width-unit of PARAMETERS (a part's: its material's values).
+LineStyle lineStyleFromParameters(const ParameterSet& parameters);
 
 // Throws aniso::Error "line-width: reason" for a width that is not positive and finite.
 void validateLineStyle(const LineStyle& style);
