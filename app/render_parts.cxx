@@ -314,8 +314,7 @@ void listParts(const std::vector<ScenePart>& parts, std::ostream& out)
       const vtkIdType triangles = part.mesh.polyData->GetNumberOfCells();
       out << part.name << "\t" << triangles << (triangles == 1 ? " triangle\t" : " triangles\t");
     }
-    out
-        << (part.material ? part.material->name : std::string("(command line)"))
+    out << (part.material ? part.material->name : std::string("(command line)"))
         << (part.visible ? "" : "\thidden") << "\n";
   }
 }

@@ -14,10 +14,10 @@
 #include <vector>
 #include <vtkActor.h>
 #include <vtkActorCollection.h>
+#include <vtkNew.h>
 #include <vtkOpenGLPolyDataMapper.h>
 #include <vtkOpenGLRenderer.h>
 #include <vtkPolyData.h>
-#include <vtkNew.h>
 #include <vtkPropCollection.h>
 
 namespace aniso

@@ -536,8 +536,8 @@ LoadedBlocks loadMeshBlocks(const std::string& path, const MeshReadOptions& opti
     if (hasLineCells(raw[b].polyData))
     {
       std::vector<std::string> lineWarnings;
-      lines = linePart(raw[b].polyData, linePartName(block.name, taken), path,
-                       block.mesh.report, lineWarnings);
+      lines = linePart(raw[b].polyData, linePartName(block.name, taken), path, block.mesh.report,
+                       lineWarnings);
       for (const std::string& warning : lineWarnings)
       {
         loaded.warnings.push_back(warning);

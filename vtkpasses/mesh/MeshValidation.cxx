@@ -391,15 +391,15 @@ std::vector<std::string> MeshReport::notes() const
   {
     out.push_back(plural(nonFiniteVertices, "vertex has", "vertices have") +
                   " NaN/Inf coordinates; " +
-                  (lineSegments > 0 ? std::string("the lines through them split there")
-                                    : plural(nonFiniteFacesDropped, "face", "faces") +
-                                          " using them dropped"));
+                  (lineSegments > 0
+                       ? std::string("the lines through them split there")
+                       : plural(nonFiniteFacesDropped, "face", "faces") + " using them dropped"));
   }
   if (zeroLengthSegmentsDropped > 0)
   {
-    out.push_back(plural(zeroLengthSegmentsDropped, "zero-length line segment",
-                         "zero-length line segments") +
-                  " dropped");
+    out.push_back(
+        plural(zeroLengthSegmentsDropped, "zero-length line segment", "zero-length line segments") +
+        " dropped");
   }
   if (zeroAreaTrianglesDropped > 0)
   {

@@ -49,11 +49,11 @@ struct MeshReport
   int64_t boundaryEdges = 0;    // edges used by one triangle (kept)
   int64_t invalidNormals = 0;   // entries that made the file's normals be discarded
   int64_t invalidTCoords = 0;   // entries that made the file's texture coordinates be discarded
-  int64_t malformedArraysDropped = 0; // point attributes without one tuple per vertex
+  int64_t malformedArraysDropped = 0;    // point attributes without one tuple per vertex
   int64_t zeroLengthSegmentsDropped = 0; // of a line set (LineSet.h)
 
-  int64_t points = 0;    // in the result
-  int64_t triangles = 0; // in the result
+  int64_t points = 0;       // in the result
+  int64_t triangles = 0;    // in the result
   int64_t lineSegments = 0; // in the result, for a line set (LineSet.h)
   bool hasNormals = false;
   bool hasTCoords = false;

@@ -1,8 +1,8 @@
 #include "vtkpasses/render/ShaderHook.h"
 
 #include "core/error.h"
-#include "vtkpasses/render/MaterialShaderSource.h"
 #include "vtkpasses/render/LineStyle.h"
+#include "vtkpasses/render/MaterialShaderSource.h"
 #include "vtkpasses/render/RendererMatrices.h"
 
 #include <algorithm>
@@ -51,9 +51,9 @@ MeshArrays meshArraysOf(vtkPolyData* poly)
 std::vector<std::pair<std::string, std::string>> lineGeometryCode(const std::string& p)
 {
   const std::string declarations =
-      "in vec3 " + p + "TangentWCVSOut[];\n" + "out vec3 " + p + "TangentWCGSOut;\n" +
-      "in vec4 " + p + "ClipPositionVSOut[];\n" + "out vec4 " + p + "ClipPositionGSOut;\n" +
-      "uniform vec2 " + p + "LineWorldWidthClip; // LineStyle.h; (0, 0): VTK's width in pixels\n";
+      "in vec3 " + p + "TangentWCVSOut[];\n" + "out vec3 " + p + "TangentWCGSOut;\n" + "in vec4 " +
+      p + "ClipPositionVSOut[];\n" + "out vec4 " + p + "ClipPositionGSOut;\n" + "uniform vec2 " +
+      p + "LineWorldWidthClip; // LineStyle.h; (0, 0): VTK's width in pixels\n";
   // Before VTK's loop: the width of each end in normalised device coordinates, VTK's own
   // (pixels) or the world width's projection there; VTK's code below reads it by its name.
   const std::string start = "vec2 " + p + "LineWidthNVC[2];\n" + "for (int k = 0; k < 2; ++k)\n" +
