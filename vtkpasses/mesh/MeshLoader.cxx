@@ -548,10 +548,13 @@ LoadedBlocks loadMeshBlocks(const std::string& path, const MeshReadOptions& opti
         lines->placement = raw[b].placement;
       }
     }
-    if (lines && !hasFaceCells(raw[b].polyData))
+    if (hasLineCells(raw[b].polyData) && !hasFaceCells(raw[b].polyData))
     {
-      loaded.blocks.push_back(std::move(*lines));
-      continue;
+      if (lines)
+      {
+        loaded.blocks.push_back(std::move(*lines));
+      }
+      continue; // its lines' warning says why nothing of it is drawn
     }
     try
     {
@@ -588,7 +591,8 @@ LoadedBlocks loadMeshBlocks(const std::string& path, const MeshReadOptions& opti
     {
       // One part: the file's own reason, as loadMesh gives it.
       const std::string prefix = "part " + names.front() + ": ";
-      throw errorAbout(path, reasons.front().substr(prefix.size()));
+      const std::string& reason = reasons.front();
+      throw errorAbout(path, reason.rfind(prefix, 0) == 0 ? reason.substr(prefix.size()) : reason);
     }
     constexpr size_t kReasonsTold = 3;
     std::string told;

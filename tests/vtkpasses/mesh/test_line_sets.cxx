@@ -187,6 +187,24 @@ TEST_F(LineSetsTest, ObjLineStatementsFollowTheirGroup)
   }
 }
 
+// An OBJ whose one group's lines are all unusable (a segment of one point twice) has no part:
+// the error names the file and the line part's reason, once.
+TEST_F(LineSetsTest, AnObjOfUnusableLinesOnlyFailsWithTheLinesReason)
+{
+  const std::string file = write("broken.obj", "v 1 1 1\nv 1 1 1\ng hair\nl 1 2\n");
+  try
+  {
+    loadMeshBlocks(file);
+    FAIL() << "no error";
+  }
+  catch (const Error& e)
+  {
+    EXPECT_EQ(std::string(e.what()),
+              file + ": part hair lines: no line segments left (every line has fewer than two "
+                     "distinct valid points)");
+  }
+}
+
 // The sanitising steps of LineSet.h on a line of 8 points: a NaN point splits it, a repeated
 // point is a zero-length segment, an out-of-range id drops its cell, a piece of one point goes.
 TEST(SanitizeLines, SplitsAtNanDropsZeroLengthSegmentsAndBrokenCells)
