@@ -46,7 +46,7 @@ const char* const kDeclared[] = {"env",          "env-rotation", "nu",       "nv
                                  "f0",           "albedo",       "method",   "filtered",
                                  "half-vectors", "samples",      "lut-size", "lut-samples",
                                  "cube-size",    "height-scale", "exposure", "tone-mapping",
-                                 "env-sampling"};
+                                 "env-sampling", "line-width",   "line-width-unit"};
 
 // "a|b|c" as "a | b | c", so that help texts can wrap between the alternatives.
 std::string spacedChoices(const std::string& syntax)
@@ -401,6 +401,10 @@ vtkSmartPointer<vtkPolyData> preparedSurface(const ScenePart& part, const Surfac
       out << prefix << line << "\n";
     }
   }
+  if (part.lines)
+  {
+    return part.mesh.polyData; // a line set: its tangents are the line's (LineSet.h)
+  }
   PreparedSurface prepared = prepareSurface(part.mesh.polyData, options, part.source);
   for (const std::string& note : prepared.report.notes())
   {
@@ -709,6 +713,7 @@ int runRender(const std::vector<std::string>& args, std::ostream& out, std::ostr
   const std::optional<double> quality =
       a.has("--quality") ? std::optional<double>(a.real("--quality")) : std::nullopt;
   std::vector<RenderPart> parts;
+  bool anyLines = false;
   for (std::size_t i = 0; i < scene.size(); ++i)
   {
     const ScenePart& part = scene[i];
@@ -717,6 +722,11 @@ int runRender(const std::vector<std::string>& args, std::ostream& out, std::ostr
     drawn.visible = part.visible;
     drawn.surface = surfaces[i];
     drawn.material = settings.material;
+    anyLines = anyLines || (part.visible && part.lines);
+    if (part.lines)
+    {
+      drawn.lineStyle = lineStyleOf(part.material, parameters);
+    }
     if (part.visible && part.material)
     {
       auto found = librarySettings.find(part.material->name);
@@ -729,15 +739,16 @@ int runRender(const std::vector<std::string>& args, std::ostream& out, std::ostr
       }
       drawn.material = found->second;
     }
-    if (part.visible && drawn.material.usesMaps() &&
+    if (part.visible && !part.lines && drawn.material.usesMaps() &&
         !drawn.surface->GetPointData()->GetArray("TCoords"))
     {
       throw errorAbout(part.source, "has no texture coordinates, which the maps need");
     }
     parts.push_back(std::move(drawn));
   }
-  // One part is drawn as the renderer's one-part scene; several as its parts.
-  if (parts.size() == 1)
+  // One part is drawn as the renderer's one-part scene; several as its parts (and a line part,
+  // whose style the one-part scene has no place for, as a scene of one part).
+  if (parts.size() == 1 && !anyLines)
   {
     settings.surface = parts[0].surface;
     settings.material = parts[0].material;

@@ -105,6 +105,9 @@ public:
   // ("auto" or BrushingModel.h's syntax). Throws aniso::Error "SUBJECT: reason".
   std::shared_ptr<const PreparedSurface> surface(const std::string& mesh,
                                                  const std::string& tangents);
+  // Throws as surface(MESH, TANGENTS) does, unless MESH is a file whose parts include line
+  // parts (loadMeshBlocks): a file of lines only has no surface but parts to draw.
+  void checkMesh(const std::string& mesh, const std::string& tangents);
   // The same for one block of the mesh file (loadMeshBlocks' name; empty: the whole file). A
   // block the file does not have throws aniso::Error "MESH: no part BLOCK".
   std::shared_ptr<const PreparedSurface> surface(const std::string& mesh, const std::string& block,
@@ -170,7 +173,8 @@ private:
     std::vector<std::string> notes; // the mesh report's, then the preparation's
   };
   // The loaded (sanitised) mesh of a block, or of the whole file for an empty BLOCK.
-  std::shared_ptr<const LoadedMesh> loadedMesh(const std::string& mesh, const std::string& block);
+  std::shared_ptr<const LoadedMesh> loadedMesh(const std::string& mesh, const std::string& block,
+                                               bool* lines = nullptr);
   std::shared_ptr<const Surface> surfaceEntry(const std::string& mesh, const std::string& block,
                                               const std::string& tangents);
   // Maps by key as TEXT gives them.

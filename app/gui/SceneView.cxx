@@ -8,6 +8,7 @@
 #include "vtkpasses/mesh/PartPlacement.h"
 #include "vtkpasses/render/AnisoMaterial.h"
 #include "vtkpasses/render/EnvironmentLighting.h"
+#include "vtkpasses/render/LineStyle.h"
 #include "vtkpasses/render/vtkAnisoAccumulationPass.h"
 
 #include <QStringList>
@@ -883,7 +884,15 @@ void SceneView::applyMaterial()
     {
       continue;
     }
-    MaterialSettings wanted = materialFromParameters(model_->partParameters(int(i)), part.full);
+    const ParameterSet partValues = model_->partParameters(int(i));
+    MaterialSettings wanted = materialFromParameters(partValues, part.full);
+    // A line set's width (LineStyle.h); a surface has no lines to widen.
+    const LineStyle style = lineStyleFromParameters(partValues);
+    if (style.width != lineStyle(part.actor).width || style.unit != lineStyle(part.actor).unit)
+    {
+      setLineStyle(part.actor, style);
+      changedSettings_ = true;
+    }
     assets_->addMaps(model_->partMaterial(int(i)), wanted);
     const bool baked = ready.halfVector && ready.request.lobe.nu == wanted.lobe.nu &&
                        ready.request.lobe.nv == wanted.lobe.nv &&

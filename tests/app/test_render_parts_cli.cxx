@@ -16,6 +16,9 @@
 //    A --materials file's "satin gold" (blue here) wins over the built-in one.
 //  - --hide right renders the image of left.ply given alone (identity): the right sphere's
 //    pixels are gone and the camera fits the left one (nothing on the image's border).
+//  - A VTP file of a sphere and a polyline (vtkXMLPolyDataWriter) is two parts, the sphere
+//    named by the stem and its polyline "STEM lines" (N line segments); the lines alone
+//    (--hide of the sphere) cover pixels, more than 2.5 times as many at --line-width 4 as at 1.
 //  - Bad input ends with one line naming it: an unknown material, a pattern that matches no
 //    part, a library file that is not JSON, a library material's missing map, every file
 //    missing; a missing second file is one warning naming it, and the first still renders (the
@@ -32,6 +35,7 @@
 #include <gtest/gtest.h>
 #include <string>
 #include <vector>
+#include <vtkCellArray.h>
 #include <vtkNew.h>
 #include <vtkCellArray.h>
 #include <vtkCellData.h>
@@ -440,5 +444,44 @@ TEST_F(RenderPartsCli, AMissingSecondFileIsSkippedWithAWarning)
   ASSERT_FALSE(alone.empty());
   EXPECT_LE(largestDifference(rendered, alone, 0, kWidth), 1e-6);
   EXPECT_GT(coveredPixels(rendered), 100);
+}
+// A file's polylines: a part of their own, listed with their segments, drawn at their width.
+TEST_F(RenderPartsCli, PolylinesOfAVtpFileAreALinePartDrawnAtTheirWidth)
+{
+  vtkNew<vtkSphereSource> sphere;
+  sphere->SetCenter(-1.5, 0.0, 0.0);
+  sphere->SetThetaResolution(32);
+  sphere->SetPhiResolution(16);
+  sphere->Update();
+  vtkNew<vtkPolyData> poly;
+  poly->DeepCopy(sphere->GetOutput());
+  poly->GetPointData()->RemoveArray("Normals"); // one a point: the circle's points have none
+  // A circle of 64 segments (65 points, the last the first again) around x = +1.5.
+  vtkNew<vtkCellArray> lines;
+  lines->InsertNextCell(65);
+  for (int i = 0; i <= 64; ++i)
+  {
+    const double a = 2.0 * M_PI * (i % 64) / 64.0;
+    lines->InsertCellPoint(poly->GetPoints()->InsertNextPoint(1.5 + std::cos(a), 0.0, std::sin(a)));
+  }
+  poly->SetLines(lines);
+  const std::string file = path("strands.vtp").string();
+  vtkNew<vtkXMLPolyDataWriter> writer;
+  writer->SetInputData(poly);
+  writer->SetFileName(file.c_str());
+  ASSERT_EQ(writer->Write(), 1);
+
+  const Outcome listed = run({"render", file, "--list-parts"});
+  EXPECT_EQ(listed.exitCode, 0) << listed.err;
+  EXPECT_EQ(listed.out, "strands\t896 triangles\t(command line)\n"
+                        "strands lines\t64 line segments\t(command line)\n");
+
+  const aniso::Image thin = render({file, "--hide", "strands", "--line-width", "1"}, "thin");
+  const aniso::Image wide = render({file, "--hide", "strands", "--line-width", "4"}, "wide");
+  const Region thinLines = region(thin, 0, kWidth);
+  const Region wideLines = region(wide, 0, kWidth);
+  EXPECT_GT(thinLines.pixels, 20);
+  EXPECT_GT(wideLines.pixels, 2.5 * thinLines.pixels);
+  expectGrey(wideLines, "lines under the white environment");
 }
 } // namespace

@@ -401,8 +401,16 @@ std::vector<std::string> MeshReport::notes() const
   if (nonFiniteVertices > 0)
   {
     out.push_back(plural(nonFiniteVertices, "vertex has", "vertices have") +
-                  " NaN/Inf coordinates; " + plural(nonFiniteFacesDropped, "face", "faces") +
-                  " using them dropped");
+                  " NaN/Inf coordinates; " +
+                  (lineSegments > 0
+                       ? std::string("the lines through them split there")
+                       : plural(nonFiniteFacesDropped, "face", "faces") + " using them dropped"));
+  }
+  if (zeroLengthSegmentsDropped > 0)
+  {
+    out.push_back(
+        plural(zeroLengthSegmentsDropped, "zero-length line segment", "zero-length line segments") +
+        " dropped");
   }
   if (zeroAreaTrianglesDropped > 0)
   {

@@ -55,13 +55,15 @@ struct MeshReport
   int64_t invalidNormals = 0;   // entries that made the file's normals be discarded
   int64_t invalidTCoords = 0;   // entries that made the file's texture coordinates be discarded
   int64_t malformedArraysDropped = 0; // point (cell) attributes without one tuple per vertex (cell)
+  int64_t zeroLengthSegmentsDropped = 0; // of a line set (LineSet.h)
   // Data arrays (not the surface's own normals, texture coordinates and tangents) with NaN or
   // Inf values: "point array 'NAME'" or "cell array 'NAME'", and how many tuples. Kept as they
   // are: the tangent model array:NAME gives such vertices the fallback tangent.
   std::vector<std::pair<std::string, int64_t>> nonFiniteArrayValues;
 
-  int64_t points = 0;    // in the result
-  int64_t triangles = 0; // in the result
+  int64_t points = 0;       // in the result
+  int64_t triangles = 0;    // in the result
+  int64_t lineSegments = 0; // in the result, for a line set (LineSet.h)
   bool hasNormals = false;
   bool hasTCoords = false;
   bool hasTangents = false;
