@@ -96,6 +96,15 @@ void checkCameraState(const CameraState& camera);
 // (the material of the first edited part kept), as opening a file does.
 class SceneModel;
 
+// The start-up scene (the window's first, and File > New's; ./run renders the same offscreen):
+// the built-in sphere (the mesh key's default) of the library's kStartMaterialName, aluminium
+// brushed along the parallels and far sharper across the brushing than along it, under the
+// default studio at one stop under the declared exposure, so that each of the studio's windows
+// is a thin streak from pole to pole: the brushing shows at a glance. Every other value is its
+// key's default.
+inline constexpr std::string_view kStartMesh = "builtin:sphere";
+inline constexpr double kStartExposure = -1.0;
+
 // The one part of a scene of MESH (a mesh text) with MATERIAL: named by the file's stem or the
 // built-in's name, in no group.
 ScenePart partOfMesh(const std::string& mesh, const std::string& material);
@@ -132,7 +141,9 @@ public:
   void setValues(const Values& values);
   // Every key with its value.
   Values values() const;
-  // Every key back to its default (validators are not consulted: defaults are always valid).
+  // Back to the start-up scene (above): every key to its default but the exposure, one part of
+  // the default mesh with the start-up material, the built-in library (validators are not
+  // consulted: these values are always valid).
   void reset();
 
   void setValidator(std::string_view key, Validator validator);

@@ -408,6 +408,8 @@ const MaterialLibrary& builtinMaterials()
   {
     MaterialLibrary l;
     l.put(defaultMaterial(std::string(kDefaultMaterialName)));
+    l.put(metal(std::string(kStartMaterialName), 10000.0, 20.0,
+                defaultMaterial({}).value("f0")));
     l.put(metal("brushed steel", 800.0, 40.0, colorValue(0.562, 0.565, 0.578)));
     l.put(metal("brushed titanium", 600.0, 60.0, colorValue(0.542, 0.497, 0.449)));
     l.put(metal("turned brass", 2000.0, 80.0, colorValue(0.910, 0.778, 0.423), "around:0,0,1"));
