@@ -579,9 +579,10 @@ void SceneModel::reset()
   const auto& keys = sceneKeys();
   for (std::size_t i = 0; i < keys.size(); ++i)
   {
-    const ParameterValue v = isMaterialKey(keys[i].spec.name)
-                                 ? builtinMaterials().at(kStartMaterialName).value(keys[i].spec.name)
-                                 : startValue(keys[i]);
+    const ParameterValue v =
+        isMaterialKey(keys[i].spec.name)
+            ? builtinMaterials().at(kStartMaterialName).value(keys[i].spec.name)
+            : startValue(keys[i]);
     if (!(values_[i] == v))
     {
       values_[i] = v;

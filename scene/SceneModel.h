@@ -4,8 +4,8 @@
 // scene only through this model (usually through a SceneEditor, which makes edits undoable);
 // the renderer listens to it. Qt-only: no VTK, no GL.
 #include "core/parameters/material_library.h"
-#include "core/placement.h"
 #include "core/parameters/parameters.h"
+#include "core/placement.h"
 
 #include <QObject>
 #include <QString>
@@ -38,7 +38,6 @@ bool isSceneKey(std::string_view key);
 // Whether a change of KEY affects any of WHAT (ParameterSpec::affects); false for a key that is
 // no scene key.
 bool sceneKeyAffects(std::string_view key, Affects what);
-
 
 // Where the camera is; unset until a view was recorded (then the renderer frames the mesh).
 struct CameraState
@@ -148,7 +147,6 @@ public:
 
   void setValidator(std::string_view key, Validator validator);
 
-
   // The parts, in order, and the library their materials come from.
   const std::vector<ScenePart>& parts() const { return parts_; }
   const MaterialLibrary& materials() const { return library_; }
@@ -204,6 +202,6 @@ private:
 // held them) make: the mesh key's part with a material of the values' material keys, which is
 // LIBRARY's material of those values when there is one, else a new one named "material" (made
 // unique) added to LIBRARY.
-std::pair<std::vector<ScenePart>, MaterialLibrary>
-onePartScene(const SceneModel::Values& values, MaterialLibrary library);
+std::pair<std::vector<ScenePart>, MaterialLibrary> onePartScene(const SceneModel::Values& values,
+                                                                MaterialLibrary library);
 } // namespace aniso
