@@ -187,21 +187,21 @@ private slots:
     QVERIFY(model->selection().empty());
     view->clickedAt(rightAt[0], rightAt[1], false);
 
-    // A material of the left part's lobe (copper: F0 only differs) for the right part leaves
-    // the left part's pixels exactly as they were.
+    // Another material (copper) for the right part leaves the left part's pixels exactly as they
+    // were.
     dock->assignToSelection("brushed copper");
     QTRY_VERIFY_WITH_TIMEOUT(settled(window), 60000);
     const auto leftBesideCopper = meanAround(view, leftAt);
     for (int c = 0; c < 3; ++c)
     {
       QVERIFY2(std::abs(leftBesideCopper[std::size_t(c)] - leftBefore[std::size_t(c)]) < 0.5,
-               "the left part changed with the right part's material of the same lobe");
+               "the left part changed with the right part's material");
     }
 
     // Gold for the selected part only.
     dock->assignToSelection("satin gold");
     QCOMPARE(model->parts()[1].material, std::string("satin gold"));
-    QCOMPARE(model->parts()[0].material, std::string(aniso::kDefaultMaterialName));
+    QCOMPARE(model->parts()[0].material, std::string(aniso::kStartMaterialName));
     QTRY_VERIFY_WITH_TIMEOUT(settled(window), 60000);
     // The selection's outline (drawn over the parts) out of the measured squares.
     model->setSelection({});
@@ -299,7 +299,7 @@ private slots:
     QCOMPARE(counters(1).shaderInstalls, right0.shaderInstalls); // n_u and F0 are uniforms
     QVERIFY(counters(1).textureUploads > right0.textureUploads);  // the new half-vector table
     QCOMPARE(model->materials().at(model->parts()[0].material).value("f0").number[0],
-             aniso::builtinMaterials().at(aniso::kDefaultMaterialName).value("f0").number[0]);
+             aniso::builtinMaterials().at(aniso::kStartMaterialName).value("f0").number[0]);
 
     // An edit of the selection reaches only the right part's material.
     const double leftNu = model->materials().at(model->parts()[0].material).value("nu").number[0];
