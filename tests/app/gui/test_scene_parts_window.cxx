@@ -2,10 +2,11 @@
 // side, written by VTK's PLY writer (an independent writer), are opened and added as two parts:
 // the scene dock lists them with the triangle counts of the written spheres; a click on the right
 // sphere (the view's pick, a ray cast against the drawn parts) selects that part in the model
-// and the dock; a library material assigned to the selection reaches only that part (its pixels turn gold, the left part's pixels
-// stay as they were, pixel checks against the image before the edit); hiding a part takes its
-// pixels away (the background shows there) and frames the visible part alone; undo brings the
-// part back; a session of the scene reopens with the same parts and materials.
+// and the dock; a library material assigned to the selection reaches only that part (its pixels
+// turn gold, the left part's pixels stay as they were, pixel checks against the image before the
+// edit); hiding a part takes its pixels away (the background shows there) and frames the visible
+// part alone; undo brings the part back; a session of the scene reopens with the same parts and
+// materials.
 #include "app/gui/MainWindow.h"
 #include "app/gui/SceneView.h"
 #include "core/lut/lut_cache.h"
@@ -297,7 +298,7 @@ private slots:
     QCOMPARE(counters(0).shaderInstalls, left0.shaderInstalls);
     QCOMPARE(counters(0).textureUploads, left0.textureUploads);
     QCOMPARE(counters(1).shaderInstalls, right0.shaderInstalls); // n_u and F0 are uniforms
-    QVERIFY(counters(1).textureUploads > right0.textureUploads);  // the new half-vector table
+    QVERIFY(counters(1).textureUploads > right0.textureUploads); // the new half-vector table
     QCOMPARE(model->materials().at(model->parts()[0].material).value("f0").number[0],
              aniso::builtinMaterials().at(aniso::kStartMaterialName).value("f0").number[0]);
 
