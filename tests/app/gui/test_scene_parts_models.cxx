@@ -156,10 +156,9 @@ private slots:
     // colours, not the studio's soft boxes, decide the pixels.
     window.model()->setValues({{"samples", numberValue(1.0)},
                                {"target-samples", numberValue(1.0)},
-                               // The declared exposure, not the start-up scene's -1 EV: at
-                               // -1 EV the Ward frame after the compare window reads the left
-                               // part brighter than before it (51 against 88), a difference of
-                               // the display, not of the parts' materials this test is about.
+                               // The declared exposure, not the start-up scene's -1 EV: the
+                               // LEADR step below sets it back to 0, and the lit view's pixels
+                               // before and after are compared at one exposure.
                                {"exposure", numberValue(0.0)},
                                {"background", textValue("color")},
                                {"background-color", aniso::colorValue(0.0, 0.0, 0.0)},
