@@ -3,6 +3,7 @@
 #include "app/cli.h"
 #include "app/gui/run_gui.h"
 #include "app/render_command.h"
+#include "app/thumbnail_command.h"
 #include "bench/bench_command.h"
 
 #include <iostream>
@@ -17,7 +18,8 @@ std::string mainHelp()
   const std::size_t width = aniso::cli::terminalWidth();
   const auto row = [&](const std::string& left, const std::string& text)
   { return "  " + left + std::string(12 - left.size(), ' ') + wrapText(text, 14, width) + "\n"; };
-  return "Usage: aniso [--help | --version] COMMAND [ARGS...]\n       " + aniso::gui::guiUsage() +
+  return "Usage: aniso [--help | --version] COMMAND [ARGS...]\n       " +
+         wrapText(aniso::gui::guiUsage(), 7, width) +
          "\n\n" +
          wrapText("aniso renders meshes with anisotropic Ashikhmin-Shirley materials under "
                   "image-based lighting. Without a command it opens the window.",
@@ -25,6 +27,7 @@ std::string mainHelp()
          "\n\nCommands:\n" +
          row("bake KIND", "bake lookup tables, maps and environment data; KIND one of:") +
          aniso::cli::bakeKindsSummary(6) + row("render", aniso::cli::renderSummary()) +
+         row("thumbnail", aniso::cli::thumbnailSummary()) +
          row("bench", aniso::cli::benchSummary()) +
          "\nOptions:\n"
          "  -h, --help  show this help and exit\n"
@@ -64,6 +67,11 @@ int run(const std::vector<std::string>& args)
   {
     return aniso::cli::runRender(std::vector<std::string>(args.begin() + 1, args.end()), std::cout,
                                  std::cerr);
+  }
+  if (command == "thumbnail")
+  {
+    return aniso::cli::runThumbnail(std::vector<std::string>(args.begin() + 1, args.end()),
+                                    std::cout);
   }
   if (command.size() > 1 && command[0] == '-')
   {

@@ -46,7 +46,7 @@ const char* const kDeclared[] = {"env",          "env-rotation", "nu",       "nv
                                  "f0",           "albedo",       "method",   "filtered",
                                  "half-vectors", "samples",      "lut-size", "lut-samples",
                                  "cube-size",    "height-scale", "exposure", "tone-mapping",
-                                 "env-sampling"};
+                                 "env-sampling", "line-width",   "line-width-unit"};
 
 // "a|b|c" as "a | b | c", so that help texts can wrap between the alternatives.
 std::string spacedChoices(const std::string& syntax)
@@ -237,10 +237,10 @@ Command renderCommand()
   jitter.choices = {"on", "off"};
   jitter.group = kGroupSampling;
   c.options.push_back(jitter);
-  Option output =
-      textOption("--output", "FILE",
-                 "the image to write: .png or .exr (not with --list-parts; may be left out with "
-                 "--export-gltf)");
+  Option output = textOption("--output", "FILE",
+                             "the image to write: .png or .exr (not with --list-parts or "
+                             "--list-arrays; may be left out with "
+                             "--export-gltf)");
   output.alias = "-o";
   output.required = true;
   output.group = kGroupOutput;
@@ -267,12 +267,14 @@ Command renderCommand()
               "  aniso render --builtin sphere --model ward --light dir:1,-1,1:3 -o ward.png\n"
               "  aniso render body.stl lid.stl --part 'lid*=satin gold' --hide body -o lid.png\n"
               "  aniso render *.ply --materials shop.json --part '*=brushed steel' --list-parts\n"
-              "  aniso render scene.glb --part 'shaft*=brushed steel' --export-gltf out.glb\n";
+              "  aniso render scene.glb --part 'shaft*=brushed steel' --export-gltf out.glb\n"
+              "  aniso render flow.vtp --list-arrays\n"
+              "  aniso render flow.vtp --tangents array:velocity -o flow.png\n";
   return c;
 }
 
 // MESH is optional when --builtin is given: parse with it, then without if it is missing.
-// --output is required unless --list-parts or --export-gltf is given.
+// --output is required unless --list-parts, --list-arrays or --export-gltf is given.
 Arguments parse(Command command, const std::vector<std::string>& args)
 {
   for (Option& option : command.options)
@@ -284,7 +286,8 @@ Arguments parse(Command command, const std::vector<std::string>& args)
   }
   const auto checkOutputGiven = [](const Arguments& a)
   {
-    if (!a.helpRequested && !a.has("--list-parts") && !a.has("--output") && !a.has("--export-gltf"))
+    if (!a.helpRequested && !a.has("--list-parts") && !a.has("--list-arrays") &&
+        !a.has("--output") && !a.has("--export-gltf"))
     {
       throw usageError("-o", "missing FILE (required)");
     }
@@ -397,6 +400,10 @@ vtkSmartPointer<vtkPolyData> preparedSurface(const ScenePart& part, const Surfac
     {
       out << prefix << line << "\n";
     }
+  }
+  if (part.lines)
+  {
+    return part.mesh.polyData; // a line set: its tangents are the line's (LineSet.h)
   }
   PreparedSurface prepared = prepareSurface(part.mesh.polyData, options, part.source);
   for (const std::string& note : prepared.report.notes())
@@ -526,8 +533,8 @@ int runRender(const std::vector<std::string>& args, std::ostream& out, std::ostr
   }
 
   // Everything the command line can get wrong is checked before any work.
-  // --list-parts prints the parts alone: what a render reports goes nowhere.
-  const bool listing = a.has("--list-parts");
+  // --list-parts and --list-arrays print the parts alone: what a render reports goes nowhere.
+  const bool listing = a.has("--list-parts") || a.has("--list-arrays");
   std::ostringstream unreported;
   std::ostream& report = listing ? unreported : out;
   const std::string output = a.text("--output");
@@ -632,7 +639,14 @@ int runRender(const std::vector<std::string>& args, std::ostream& out, std::ostr
   assignParts(a, library, scene);
   if (listing)
   {
-    listParts(scene, out);
+    if (a.has("--list-parts"))
+    {
+      listParts(scene, out);
+    }
+    if (a.has("--list-arrays"))
+    {
+      listArrays(scene, out);
+    }
     return 0;
   }
   const bool several = scene.size() > 1;
@@ -699,6 +713,7 @@ int runRender(const std::vector<std::string>& args, std::ostream& out, std::ostr
   const std::optional<double> quality =
       a.has("--quality") ? std::optional<double>(a.real("--quality")) : std::nullopt;
   std::vector<RenderPart> parts;
+  bool anyLines = false;
   for (std::size_t i = 0; i < scene.size(); ++i)
   {
     const ScenePart& part = scene[i];
@@ -707,6 +722,11 @@ int runRender(const std::vector<std::string>& args, std::ostream& out, std::ostr
     drawn.visible = part.visible;
     drawn.surface = surfaces[i];
     drawn.material = settings.material;
+    anyLines = anyLines || (part.visible && part.lines);
+    if (part.lines)
+    {
+      drawn.lineStyle = lineStyleOf(part.material, parameters);
+    }
     if (part.visible && part.material)
     {
       auto found = librarySettings.find(part.material->name);
@@ -719,15 +739,16 @@ int runRender(const std::vector<std::string>& args, std::ostream& out, std::ostr
       }
       drawn.material = found->second;
     }
-    if (part.visible && drawn.material.usesMaps() &&
+    if (part.visible && !part.lines && drawn.material.usesMaps() &&
         !drawn.surface->GetPointData()->GetArray("TCoords"))
     {
       throw errorAbout(part.source, "has no texture coordinates, which the maps need");
     }
     parts.push_back(std::move(drawn));
   }
-  // One part is drawn as the renderer's one-part scene; several as its parts.
-  if (parts.size() == 1)
+  // One part is drawn as the renderer's one-part scene; several as its parts (and a line part,
+  // whose style the one-part scene has no place for, as a scene of one part).
+  if (parts.size() == 1 && !anyLines)
   {
     settings.surface = parts[0].surface;
     settings.material = parts[0].material;

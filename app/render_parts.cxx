@@ -81,6 +81,12 @@ void addPartOptions(Command& c)
                            "for a hidden one), and exit without rendering");
   list.group = kGroupScene;
   c.options.push_back(list);
+  Option arrays = textOption(
+      "--list-arrays", "",
+      "print each part's data arrays, one line each under the part's name (name, point or cell, "
+      "components, the range of the finite values or of their lengths, the count of NaN or Inf "
+      "values), and exit without rendering");
+  c.options.push_back(arrays);
 }
 
 FileMeshes meshesOfFile(const std::string& path, const MeshReadOptions& options)
@@ -99,6 +105,7 @@ FileMeshes meshesOfFile(const std::string& path, const MeshReadOptions& options)
     NamedMesh named;
     named.name = std::move(block.name);
     named.mesh = std::move(block.mesh);
+    named.lines = block.lines;
     named.material = std::move(block.material);
     named.placement = block.placement;
     file.meshes.push_back(std::move(named));
@@ -142,6 +149,7 @@ std::vector<ScenePart> loadParts(const std::vector<std::string>& paths, std::ost
         part.name = std::move(named.name);
         part.source = path;
         part.mesh = std::move(named.mesh);
+        part.lines = named.lines;
         part.fileMaterial = std::move(named.material);
         part.placement = named.placement;
         parts.push_back(std::move(part));
@@ -296,7 +304,7 @@ void assignParts(const Arguments& a, const MaterialLibrary& library, std::vector
   {
     anyVisible = anyVisible || part.visible;
   }
-  if (!anyVisible && !a.has("--list-parts"))
+  if (!anyVisible && !a.has("--list-parts") && !a.has("--list-arrays"))
   {
     throw usageError("--hide", "hides every part: nothing is left to render");
   }
@@ -306,10 +314,32 @@ void listParts(const std::vector<ScenePart>& parts, std::ostream& out)
 {
   for (const ScenePart& part : parts)
   {
-    const vtkIdType triangles = part.mesh.polyData->GetNumberOfCells();
-    out << part.name << "\t" << triangles << (triangles == 1 ? " triangle\t" : " triangles\t")
-        << (part.material ? part.material->name : std::string("(command line)"))
+    if (part.lines)
+    {
+      const int64_t segments = part.mesh.report.lineSegments;
+      out << part.name << "\t" << segments
+          << (segments == 1 ? " line segment\t" : " line segments\t");
+    }
+    else
+    {
+      const vtkIdType triangles = part.mesh.polyData->GetNumberOfCells();
+      out << part.name << "\t" << triangles << (triangles == 1 ? " triangle\t" : " triangles\t");
+    }
+    out << (part.material ? part.material->name : std::string("(command line)"))
         << (part.visible ? "" : "\thidden") << "\n";
+  }
+}
+
+void listArrays(const std::vector<ScenePart>& parts, std::ostream& out)
+{
+  for (const ScenePart& part : parts)
+  {
+    const std::vector<ArrayInfo> arrays = describeArrays(part.mesh.polyData);
+    out << part.name << (arrays.empty() ? "\t(no arrays)" : "") << "\n";
+    for (const ArrayInfo& info : arrays)
+    {
+      out << "  " << formatArrayInfo(info) << "\n";
+    }
   }
 }
 
@@ -344,9 +374,9 @@ std::vector<GltfPart> gltfPartsOf(const std::vector<ScenePart>& parts,
   std::vector<GltfPart> out;
   for (std::size_t i = 0; i < parts.size(); ++i)
   {
-    if (!parts[i].visible)
+    if (!parts[i].visible || parts[i].lines)
     {
-      continue;
+      continue; // glTF's triangles only: a line set is not written
     }
     GltfPart part;
     part.name = parts[i].name;
@@ -356,6 +386,15 @@ std::vector<GltfPart> gltfPartsOf(const std::vector<ScenePart>& parts,
     out.push_back(std::move(part));
   }
   return out;
+}
+
+LineStyle lineStyleOf(const Material* material, const ParameterSet& parameters)
+{
+  LineStyle style;
+  style.width = material ? material->value("line-width").number[0] : parameters.real("line-width");
+  style.unit = parseLineWidthUnit(material ? material->value("line-width-unit").text
+                                           : parameters.text("line-width-unit"));
+  return style;
 }
 
 MaterialSettings librarySettingsOf(const Material& material, const ParameterSet& commandLine,

@@ -10,7 +10,9 @@
 #include "core/placement.h"
 #include "vtkpasses/mesh/GltfWriter.h"
 #include "vtkpasses/mesh/MeshLoader.h"
+#include "vtkpasses/mesh/MeshArrays.h"
 #include "vtkpasses/mesh/SurfacePreparation.h"
+#include "vtkpasses/render/LineStyle.h"
 #include "vtkpasses/render/MaterialSettings.h"
 
 #include <optional>
@@ -31,6 +33,7 @@ struct NamedMesh
 {
   std::string name;
   LoadedMesh mesh;
+  bool lines = false; // a line set (MeshBlock::lines): drawn as illuminated lines
   std::optional<Material> material;
   PartMatrix placement = kIdentityPlacement;
 };
@@ -55,6 +58,7 @@ struct ScenePart
   std::string name;
   std::string source; // the file (or builtin:NAME) it came from, for messages
   LoadedMesh mesh;
+  bool lines = false; // a line set (MeshBlock::lines): not prepared as a surface, not exported
   const Material* material = nullptr; // of the library; null: the command line's material
   bool visible = true;
   std::optional<Material> fileMaterial; // what the file gives, until adoptFileMaterials
@@ -88,9 +92,19 @@ void checkPartOptions(const Arguments& arguments, const MaterialLibrary& library
 void assignParts(const Arguments& arguments, const MaterialLibrary& library,
                  std::vector<ScenePart>& parts);
 
-// One line a part: "NAME<TAB>N triangles<TAB>MATERIAL" ("1 triangle"), with "<TAB>hidden" for a
-// hidden one; the command line's material is "(command line)".
+// One line a part: "NAME<TAB>N triangles<TAB>MATERIAL" ("1 triangle"; "N line segments" for a
+// line set), with "<TAB>hidden" for a hidden one; the command line's material is
+// "(command line)".
 void listParts(const std::vector<ScenePart>& parts, std::ostream& out);
+
+// The data arrays of each part's loaded (sanitised) mesh: a line with the part's name ("<TAB>(no
+// arrays)" after it when it has none), then one indented line per array (formatArrayInfo,
+// vtkpasses/mesh/MeshArrays.h).
+void listArrays(const std::vector<ScenePart>& parts, std::ostream& out);
+
+// How a line part is drawn: line-width and line-width-unit of its library material (MATERIAL),
+// else of the command line's PARAMETERS.
+LineStyle lineStyleOf(const Material* material, const ParameterSet& parameters);
 
 // The surface options of MATERIAL's tangents ("auto": the mesh's own, else from the UVs, else
 // axis:1,0,0). Throws aniso::Error "MATERIAL: tangents: reason" for a bad model.

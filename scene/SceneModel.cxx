@@ -494,6 +494,40 @@ ParameterSet SceneModel::partParameters(int part) const
   return set;
 }
 
+void SceneModel::setPartArrays(const std::string& part, std::vector<std::string> names)
+{
+  const auto it = partArrays_.find(part);
+  if (it != partArrays_.end() ? it->second == names : names.empty())
+  {
+    return;
+  }
+  partArrays_[part] = std::move(names);
+  emit partArraysChanged();
+}
+
+const std::vector<std::string>& SceneModel::partArrays(const std::string& part) const
+{
+  static const std::vector<std::string> none;
+  const auto it = partArrays_.find(part);
+  return it == partArrays_.end() ? none : it->second;
+}
+
+std::vector<std::string> SceneModel::editedPartArrays() const
+{
+  std::vector<std::string> names;
+  for (int i : editedParts())
+  {
+    for (const std::string& name : partArrays(parts_[size_t(i)].name))
+    {
+      if (std::find(names.begin(), names.end(), name) == names.end())
+      {
+        names.push_back(name);
+      }
+    }
+  }
+  return names;
+}
+
 void SceneModel::setSelection(std::vector<int> parts)
 {
   std::vector<int> kept;

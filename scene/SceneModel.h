@@ -173,6 +173,14 @@ public:
   // Whether the edited materials differ in material key KEY (a dock shows such a value as mixed).
   bool mixed(std::string_view key) const;
 
+  // The names of the vector arrays (fields of 2 or 3 components) a part's mesh carries, for the
+  // tangent model array:NAME, by part name: told by whoever loads the meshes (the application),
+  // not part of the scene (not saved, not undone). Emits partArraysChanged when they change.
+  void setPartArrays(const std::string& part, std::vector<std::string> names);
+  const std::vector<std::string>& partArrays(const std::string& part) const;
+  // Those of the edited parts, each name once, in part order.
+  std::vector<std::string> editedPartArrays() const;
+
   const CameraState& camera() const { return camera_; }
   // Throws aniso::Error "view: reason" (checkCameraState) and keeps the previous camera.
   void setCamera(const CameraState& camera);
@@ -184,6 +192,7 @@ signals:
   // Materials of the library whose values changed (or that were added or removed).
   void materialsChanged(const QStringList& names);
   void selectionChanged();
+  void partArraysChanged();
 
 private:
   // The material keys' values from the first edited part's material; emits valueChanged for
@@ -194,6 +203,7 @@ private:
   std::vector<ScenePart> parts_;
   MaterialLibrary library_;
   std::vector<int> selection_;
+  std::map<std::string, std::vector<std::string>> partArrays_;
   std::vector<Validator> validators_;
   CameraState camera_;
 };

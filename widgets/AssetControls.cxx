@@ -252,14 +252,18 @@ void TprEditor::emitEdited()
 }
 
 TangentEditor::TangentEditor(QWidget* parent)
-    : QWidget(parent), kind_(new QComboBox(this)), vectorLabel_(new QLabel(this))
+    : QWidget(parent), kind_(new QComboBox(this)), array_(new QComboBox(this)),
+      vectorLabel_(new QLabel(this))
 {
   const std::pair<const char*, const char*> kinds[] = {
       {"auto", "Automatic (mesh, UVs, else along X)"},
       {"uv", "From UVs"},
       {"axis", "Along an axis (linear brushing)"},
       {"around", "Around an axis (turned)"},
-      {"radial", "Radial from a point"}};
+      {"radial", "Radial from a point"},
+      {"face-u", "Along the CAD faces' u"},
+      {"face-v", "Along the CAD faces' v"},
+      {"array", "Along a vector array of the data"}};
   for (const auto& [value, label] : kinds)
   {
     kind_->addItem(tr(label), QString(value));
@@ -278,12 +282,38 @@ TangentEditor::TangentEditor(QWidget* parent)
   layout->setContentsMargins(0, 0, 0, 0);
   layout->addWidget(kind_);
   layout->addWidget(vectorRow_);
+  array_->setObjectName("tangent-array");
+  array_->setEditable(true);
+  array_->setInsertPolicy(QComboBox::NoInsert);
+  array_->setToolTip(tr("The part's point or cell array of 2 or 3 components the brushing "
+                        "follows, projected into the surface"));
+  layout->addWidget(array_);
+  connect(array_, qOverload<int>(&QComboBox::activated), this,
+          [this](int) { emit edited(text()); });
+  connect(array_->lineEdit(), &QLineEdit::editingFinished, this,
+          [this]
+          {
+            if (!array_->currentText().trimmed().isEmpty())
+            {
+              emit edited(text());
+            }
+          });
   connect(kind_, qOverload<int>(&QComboBox::activated), this,
           [this](int index)
           {
             kind_->setCurrentIndex(index);
             centre_.clear();
             updateVisibility();
+            if (kind_->currentData().toString() == "array" &&
+                array_->currentText().trimmed().isEmpty())
+            {
+              // The first of the part's arrays; with none, nothing to say until a name is typed.
+              if (array_->count() == 0)
+              {
+                return;
+              }
+              array_->setCurrentIndex(0);
+            }
             emit edited(text());
           });
   for (QDoubleSpinBox* spin : vector_)
@@ -294,13 +324,29 @@ TangentEditor::TangentEditor(QWidget* parent)
   updateVisibility();
 }
 
+void TangentEditor::setArrayNames(const QStringList& names)
+{
+  const QSignalBlocker block(array_);
+  const QString current = array_->currentText();
+  array_->clear();
+  array_->addItems(names);
+  array_->setCurrentText(current);
+}
+
 void TangentEditor::setText(const QString& text)
 {
   const QSignalBlocker blocks[] = {QSignalBlocker(kind_), QSignalBlocker(vector_[0]),
-                                   QSignalBlocker(vector_[1]), QSignalBlocker(vector_[2])};
+                                   QSignalBlocker(vector_[1]), QSignalBlocker(vector_[2]),
+                                   QSignalBlocker(array_)};
   const int colon = text.indexOf(':');
   const QString kind = colon < 0 ? text : text.left(colon);
   QString rest = colon < 0 ? QString() : text.mid(colon + 1);
+  if (kind == "array")
+  {
+    // The name is everything after the colon, '@' and ',' included.
+    array_->setCurrentText(rest.trimmed());
+    rest.clear();
+  }
   centre_.clear();
   const int at = rest.indexOf('@');
   if (at >= 0)
@@ -324,9 +370,13 @@ void TangentEditor::setText(const QString& text)
 QString TangentEditor::text() const
 {
   const QString kind = kind_->currentData().toString();
-  if (kind == "auto" || kind == "uv")
+  if (kind == "auto" || kind == "uv" || kind == "face-u" || kind == "face-v")
   {
     return kind;
+  }
+  if (kind == "array")
+  {
+    return "array:" + array_->currentText().trimmed();
   }
   return kind + ":" + number(vector_[0]->value()) + "," + number(vector_[1]->value()) + "," +
          number(vector_[2]->value()) + (kind == "around" ? centre_ : QString());
@@ -336,6 +386,7 @@ void TangentEditor::updateVisibility()
 {
   const QString kind = kind_->currentData().toString();
   vectorRow_->setVisible(kind == "axis" || kind == "around" || kind == "radial");
+  array_->setVisible(kind == "array");
   vectorLabel_->setText(kind == "radial" ? tr("Point") : tr("Axis"));
 }
 } // namespace aniso

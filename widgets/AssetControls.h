@@ -73,7 +73,9 @@ private:
   QWidget* pitchRow_;
 };
 
-// "auto", "uv", "axis:X,Y,Z", "around:X,Y,Z[@CX,CY,CZ]", "radial:X,Y,Z" (BrushingModel.h).
+// "auto", "uv", "axis:X,Y,Z", "around:X,Y,Z[@CX,CY,CZ]", "radial:X,Y,Z", "face-u", "face-v",
+// "array:NAME" (BrushingModel.h). For array:NAME, an editable list of the part's vector arrays
+// (setArrayNames); a name not in the list is kept as typed.
 class TangentEditor : public QWidget
 {
   Q_OBJECT
@@ -82,7 +84,10 @@ public:
   explicit TangentEditor(QWidget* parent = nullptr);
   void setText(const QString& text);
   QString text() const;
+  // The vector arrays offered for array:NAME (the current name stays selected).
+  void setArrayNames(const QStringList& names);
   QComboBox* kindBox() const { return kind_; }
+  QComboBox* arrayBox() const { return array_; }
   QDoubleSpinBox* component(int i) const { return vector_[i]; }
 
 signals:
@@ -92,6 +97,7 @@ private:
   void updateVisibility();
 
   QComboBox* kind_;
+  QComboBox* array_;
   QDoubleSpinBox* vector_[3];
   QLabel* vectorLabel_;
   QWidget* vectorRow_;

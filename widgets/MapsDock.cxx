@@ -4,6 +4,7 @@
 #include "widgets/ParameterPanel.h"
 
 #include <QGroupBox>
+#include <QStringList>
 #include <QVBoxLayout>
 
 namespace aniso
@@ -53,6 +54,20 @@ MapsDock::MapsDock(SceneEditor* editor, QWidget* parent)
 
   connect(panel_, &ParameterPanel::errorOccurred, this, &MapsDock::errorOccurred);
   connect(editor->model(), &SceneModel::valueChanged, this, &MapsDock::sync);
+  // The vector arrays of the edited parts, for the tangent model array:NAME.
+  const auto offerArrays = [this]
+  {
+    QStringList names;
+    for (const std::string& name : panel_->model()->editedPartArrays())
+    {
+      names.push_back(QString::fromStdString(name));
+    }
+    tangents_->setArrayNames(names);
+  };
+  connect(editor->model(), &SceneModel::partArraysChanged, this, offerArrays);
+  connect(editor->model(), &SceneModel::selectionChanged, this, offerArrays);
+  connect(editor->model(), &SceneModel::partsChanged, this, offerArrays);
+  offerArrays();
   for (const auto& [key, row] : files_)
   {
     sync(QString::fromStdString(key));

@@ -1,7 +1,7 @@
 #pragma once
 // The maps dock: bump mode, normal and quaternion maps, the TPR map (pattern and parameters, or
 // a file), height map with its scale, albedo, AO and metallic maps, and the tangent source with
-// its axis. Files are checked by the model's validators (the application loads them), so a map
+// its axis (or, for array:NAME, the edited parts' vector arrays, SceneModel::editedPartArrays). Files are checked by the model's validators (the application loads them), so a map
 // that does not load is reported and the scene keeps the previous one.
 #include "scene/SceneEditor.h"
 

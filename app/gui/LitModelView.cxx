@@ -6,6 +6,7 @@
 #include "scene/SceneShading.h"
 #include "vtkpasses/render/DrawingFrame.h"
 #include "vtkpasses/render/EnvironmentLighting.h"
+#include "vtkpasses/render/LineStyle.h"
 #include "vtkpasses/render/LitModelMaterial.h"
 
 #include <algorithm>
@@ -13,10 +14,10 @@
 #include <vector>
 #include <vtkActor.h>
 #include <vtkActorCollection.h>
+#include <vtkNew.h>
 #include <vtkOpenGLPolyDataMapper.h>
 #include <vtkOpenGLRenderer.h>
 #include <vtkPolyData.h>
-#include <vtkNew.h>
 #include <vtkPropCollection.h>
 
 namespace aniso
@@ -271,6 +272,7 @@ void LitModelView::update()
         part.mapper->SetInputData(mesh);
       }
       setDrawingFrame(part.actor, view_->drawingFrame()); // the scene's parts, its point lights
+      setLineStyle(part.actor, lineStyleFromParameters(view_->partParameters(i))); // line parts
       try
       {
         if (!part.material)

@@ -409,18 +409,39 @@ bool MainWindow::attempt(const std::function<void()>& action)
 namespace
 {
 // The block a part of block B of LOADED draws: empty (the file as loadMesh reads it) for a file
-// of one block that sits where its coordinates are, else the block's name.
+// of one surface that sits where its coordinates are, else the block's name (always for a line
+// set, which loadMesh does not read).
 std::string partBlock(const LoadedBlocks& loaded, std::size_t b)
 {
   const MeshBlock& block = loaded.blocks[b];
-  return loaded.blocks.size() > 1 || block.placement != kIdentityPlacement ? block.name
-                                                                            : std::string();
+  return loaded.blocks.size() > 1 || block.placement != kIdentityPlacement || block.lines
+             ? block.name
+             : std::string();
 }
 
 // The tangent model a part of BLOCK starts with: its file material's, else TANGENTS.
 std::string blockTangents(const MeshBlock& block, const std::string& tangents)
 {
   return block.material ? block.material->value("tangents").text : tangents;
+}
+
+// What opening MESH reads first, whose failure is the load's: the file as one surface, or the
+// parts of a file that has line parts (which the one surface leaves out; a file of lines only
+// has no surface at all).
+void readOpened(SceneAssets& staged, const std::string& mesh, const std::string& tangents)
+{
+  const bool builtin = mesh.rfind("builtin:", 0) == 0;
+  const std::shared_ptr<const LoadedBlocks> loaded = builtin ? nullptr : staged.blocks(mesh);
+  if (!loaded || std::none_of(loaded->blocks.begin(), loaded->blocks.end(),
+                              [](const MeshBlock& b) { return b.lines; }))
+  {
+    staged.surface(mesh, tangents);
+    return;
+  }
+  for (std::size_t b = 0; b < loaded->blocks.size(); ++b)
+  {
+    staged.surface(mesh, partBlock(*loaded, b), blockTangents(loaded->blocks[b], tangents));
+  }
 }
 } // namespace
 
@@ -495,7 +516,7 @@ bool MainWindow::openMesh(const QString& path)
         const std::vector<ScenePart> parts = partsOfFile(path, material, library, taken, warnings);
         // What setting the mesh key alone makes of the scene: one part of the edited material.
         const bool plain = parts.size() == 1 && parts[0].material == material &&
-                           parts[0].placement == kIdentityPlacement;
+                           parts[0].placement == kIdentityPlacement && parts[0].block.empty();
         const bool same = mesh == model_.value("mesh") &&
                           (plain ? model_.parts().size() == 1 : parts == model_.parts());
         if (!same)
@@ -605,7 +626,7 @@ void MainWindow::openMeshesInBackground(const QStringList& paths)
       kMeshLoad, paths.front(),
       [files, tangents](SceneAssets& staged)
       {
-        staged.surface(files.front(), tangents); // the first opens: its failure is the load's
+        readOpened(staged, files.front(), tangents); // the first opens: its failure is the load's
         prefetchMeshes(staged, files, tangents);
       },
       [this, paths]
@@ -659,7 +680,7 @@ void MainWindow::openMeshInBackground(const QString& path)
       kMeshLoad, path,
       [mesh, tangents](SceneAssets& staged)
       {
-        staged.surface(mesh, tangents);
+        readOpened(staged, mesh, tangents);
         // Its blocks too, as they become its parts.
         const std::shared_ptr<const LoadedBlocks> loaded = staged.blocks(mesh);
         for (std::size_t b = 0; b < loaded->blocks.size(); ++b)

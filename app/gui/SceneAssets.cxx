@@ -9,6 +9,7 @@
 #include "vtkpasses/mesh/BuiltinMeshes.h"
 #include "vtkpasses/mesh/CadReader.h"
 #include "vtkpasses/mesh/LevelOfDetail.h"
+#include "vtkpasses/mesh/MeshArrays.h"
 #include "vtkpasses/mesh/MeshLoader.h"
 
 #include <algorithm>
@@ -37,9 +38,9 @@ SurfaceOptions surfaceOptions(const std::string& tangents)
 SceneAssets::SceneAssets(SceneModel* model) : model_(model)
 {
   model->setValidator("mesh", [this](const std::string& text, const std::string&)
-                      { surface(text, model_->text("tangents")); });
+                      { checkMesh(text, model_->text("tangents")); });
   model->setValidator("tangents", [this](const std::string& text, const std::string&)
-                      { surface(model_->text("mesh"), text); });
+                      { checkMesh(model_->text("mesh"), text); });
   model->setValidator("env",
                       [this](const std::string& text, const std::string&) { environment(text); });
   for (const char* key : kMapKeys)
@@ -106,6 +107,29 @@ std::shared_ptr<const LoadedBlocks> SceneAssets::blocks(const std::string& mesh)
                      });
 }
 
+void SceneAssets::checkMesh(const std::string& mesh, const std::string& tangents)
+{
+  try
+  {
+    surface(mesh, tangents);
+  }
+  catch (const Error&)
+  {
+    // A file of lines only has no surface, yet parts (its line parts) to draw.
+    const bool builtin = mesh.rfind(kBuiltinPrefix, 0) == 0;
+    std::shared_ptr<const LoadedBlocks> loaded;
+    if (!builtin)
+    {
+      loaded = blocks(mesh);
+    }
+    if (!loaded || std::none_of(loaded->blocks.begin(), loaded->blocks.end(),
+                                [](const MeshBlock& b) { return b.lines; }))
+    {
+      throw;
+    }
+  }
+}
+
 std::vector<std::string> SceneAssets::blockNames(const std::string& mesh,
                                                  std::vector<std::string>* warnings)
 {
@@ -122,6 +146,50 @@ std::vector<std::string> SceneAssets::blockNames(const std::string& mesh,
   return names;
 }
 
+std::shared_ptr<const LoadedMesh> SceneAssets::loadedMesh(const std::string& mesh,
+                                                          const std::string& block, bool* lines)
+{
+  if (!block.empty())
+  {
+    const std::shared_ptr<const LoadedBlocks> all = blocks(mesh);
+    for (const MeshBlock& b : all->blocks)
+    {
+      if (b.name == block)
+      {
+        if (lines)
+        {
+          *lines = b.lines;
+        }
+        return std::shared_ptr<const LoadedMesh>(all, &b.mesh);
+      }
+    }
+    throw errorAbout(mesh, "no part \"" + block + "\"");
+  }
+  return meshes_.get(mesh + readOptionsKey(mesh),
+                     [&]
+                     {
+                       if (mesh.rfind(kBuiltinPrefix, 0) == 0)
+                       {
+                         return std::make_shared<LoadedMesh>(
+                             makeBuiltinMesh(parseBuiltinMesh(mesh.substr(8), "mesh")));
+                       }
+                       return std::make_shared<LoadedMesh>(loadMesh(mesh, meshReadOptions()));
+                     });
+}
+
+std::vector<std::string> SceneAssets::vectorArrays(const std::string& mesh,
+                                                   const std::string& block)
+{
+  // Only what is loaded already: a file that failed is not read again for its list.
+  const std::string key = mesh + readOptionsKey(mesh);
+  const bool builtin = mesh.rfind(kBuiltinPrefix, 0) == 0;
+  if (block.empty() ? !builtin && !meshes_.contains(key) : !blocks_.contains(key))
+  {
+    return {};
+  }
+  return vectorArrayNames(loadedMesh(mesh, block)->polyData);
+}
+
 std::shared_ptr<const SceneAssets::Surface> SceneAssets::surfaceEntry(const std::string& mesh,
                                                                       const std::string& block,
                                                                       const std::string& tangents)
@@ -130,36 +198,16 @@ std::shared_ptr<const SceneAssets::Surface> SceneAssets::surfaceEntry(const std:
       mesh + "\n" + block + "\n" + tangents + readOptionsKey(mesh),
       [&]
       {
-        std::shared_ptr<const LoadedMesh> loaded;
-        if (!block.empty())
-        {
-          const std::shared_ptr<const LoadedBlocks> all = blocks(mesh);
-          for (const MeshBlock& b : all->blocks)
-          {
-            if (b.name == block)
-            {
-              loaded = std::shared_ptr<const LoadedMesh>(all, &b.mesh);
-            }
-          }
-          if (!loaded)
-          {
-            throw errorAbout(mesh, "no part \"" + block + "\"");
-          }
-        }
-        else
-        {
-          loaded = meshes_.get(mesh + readOptionsKey(mesh),
-                               [&]
-                               {
-                                 if (mesh.rfind(kBuiltinPrefix, 0) == 0)
-                                 {
-                                   return std::make_shared<LoadedMesh>(
-                                       makeBuiltinMesh(parseBuiltinMesh(mesh.substr(8), "mesh")));
-                                 }
-                                 return std::make_shared<LoadedMesh>(loadMesh(mesh, meshReadOptions()));
-                               });
-        }
+        bool lines = false;
+        const std::shared_ptr<const LoadedMesh> loaded = loadedMesh(mesh, block, &lines);
         auto entry = std::make_shared<Surface>();
+        if (lines)
+        {
+          // A line set is drawn as it was loaded (its tangents the line's), without a stand-in.
+          entry->prepared.polyData = loaded->polyData;
+          entry->notes = loaded->report.notes();
+          return std::shared_ptr<const Surface>(std::move(entry));
+        }
         entry->prepared = prepareSurface(loaded->polyData, surfaceOptions(tangents),
                                          block.empty() ? mesh : mesh + ": part " + block);
         entry->interactive = interactiveLevelOfDetail(entry->prepared.polyData);

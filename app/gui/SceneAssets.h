@@ -105,6 +105,9 @@ public:
   // ("auto" or BrushingModel.h's syntax). Throws aniso::Error "SUBJECT: reason".
   std::shared_ptr<const PreparedSurface> surface(const std::string& mesh,
                                                  const std::string& tangents);
+  // Throws as surface(MESH, TANGENTS) does, unless MESH is a file whose parts include line
+  // parts (loadMeshBlocks): a file of lines only has no surface but parts to draw.
+  void checkMesh(const std::string& mesh, const std::string& tangents);
   // The same for one block of the mesh file (loadMeshBlocks' name; empty: the whole file). A
   // block the file does not have throws aniso::Error "MESH: no part BLOCK".
   std::shared_ptr<const PreparedSurface> surface(const std::string& mesh, const std::string& block,
@@ -114,6 +117,10 @@ public:
   std::vector<std::string> blockNames(const std::string& mesh, std::vector<std::string>* warnings);
   // The blocks themselves, with the materials and placements the file gives them.
   std::shared_ptr<const LoadedBlocks> blocks(const std::string& mesh);
+  // The vector arrays of a mesh text's block (empty: the whole file) as loaded, before any
+  // tangent model (MeshArrays.h, vectorArrayNames); none when it is not loaded (nothing is read
+  // here). Throws aniso::Error "MESH: no part BLOCK" for a block the file does not have.
+  std::vector<std::string> vectorArrays(const std::string& mesh, const std::string& block);
   // Its stand-in while the view moves (LevelOfDetail.h), null when it is drawn as it is. Made
   // with the surface, so a surface prepared on a worker brings it along.
   vtkSmartPointer<vtkPolyData> interactiveSurface(const std::string& mesh,
@@ -165,6 +172,9 @@ private:
     vtkSmartPointer<vtkPolyData> interactive;
     std::vector<std::string> notes; // the mesh report's, then the preparation's
   };
+  // The loaded (sanitised) mesh of a block, or of the whole file for an empty BLOCK.
+  std::shared_ptr<const LoadedMesh> loadedMesh(const std::string& mesh, const std::string& block,
+                                               bool* lines = nullptr);
   std::shared_ptr<const Surface> surfaceEntry(const std::string& mesh, const std::string& block,
                                               const std::string& tangents);
   // Maps by key as TEXT gives them.

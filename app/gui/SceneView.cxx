@@ -8,6 +8,7 @@
 #include "vtkpasses/mesh/PartPlacement.h"
 #include "vtkpasses/render/AnisoMaterial.h"
 #include "vtkpasses/render/EnvironmentLighting.h"
+#include "vtkpasses/render/LineStyle.h"
 #include "vtkpasses/render/vtkAnisoAccumulationPass.h"
 
 #include <QStringList>
@@ -511,6 +512,7 @@ bool SceneView::syncParts()
           part.surface = placedSurface(part.surface, wanted.placement);
         }
         part.loaded = true;
+        model_->setPartArrays(wanted.name, assets_->vectorArrays(wanted.mesh, wanted.block));
         for (const std::string& note : assets_->surfaceNotes(wanted.mesh, wanted.block, tangents))
         {
           emit noteAdded(QString::fromStdString(note));
@@ -520,6 +522,16 @@ bool SceneView::syncParts()
       {
         // Skipped with one warning; the other parts are drawn.
         part.surface = nullptr;
+        try
+        {
+          // The mesh may have loaded and its tangent model failed (array:NAME of an array it
+          // lacks): its arrays are still offered.
+          model_->setPartArrays(wanted.name, assets_->vectorArrays(wanted.mesh, wanted.block));
+        }
+        catch (const Error&)
+        {
+          model_->setPartArrays(wanted.name, {});
+        }
         emit errorOccurred(tr("Part %1 skipped: %2")
                                .arg(QString::fromStdString(wanted.name),
                                     QString::fromStdString(e.what())));
@@ -872,7 +884,15 @@ void SceneView::applyMaterial()
     {
       continue;
     }
-    MaterialSettings wanted = materialFromParameters(model_->partParameters(int(i)), part.full);
+    const ParameterSet partValues = model_->partParameters(int(i));
+    MaterialSettings wanted = materialFromParameters(partValues, part.full);
+    // A line set's width (LineStyle.h); a surface has no lines to widen.
+    const LineStyle style = lineStyleFromParameters(partValues);
+    if (style.width != lineStyle(part.actor).width || style.unit != lineStyle(part.actor).unit)
+    {
+      setLineStyle(part.actor, style);
+      changedSettings_ = true;
+    }
     assets_->addMaps(model_->partMaterial(int(i)), wanted);
     const bool baked = ready.halfVector && ready.request.lobe.nu == wanted.lobe.nu &&
                        ready.request.lobe.nv == wanted.lobe.nv &&

@@ -7,12 +7,14 @@
 #include "scene/LutScheduler.h"
 
 #include <QApplication>
+#include <QStringList>
 #include <QSurfaceFormat>
 #include <QTimer>
 #include <QVTKOpenGLNativeWidget.h>
+#include <algorithm>
+#include <cctype>
 #include <cstdlib>
 #include <filesystem>
-#include <QStringList>
 #include <iostream>
 #include <memory>
 
@@ -34,6 +36,15 @@ bool isWindowOption(const std::string& arg)
 {
   return arg == "--session" || arg == "--screenshot" || arg == "--window-screenshot" ||
          arg == "--quit";
+}
+
+// Session files are JSON (scene/Session.h); no mesh format the window reads is.
+bool isSessionPath(const std::string& arg)
+{
+  std::string ext = std::filesystem::path(arg).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char ch) { return static_cast<char>(std::tolower(ch)); });
+  return ext == ".json";
 }
 
 GuiArguments parse(const std::vector<std::string>& args)
@@ -69,6 +80,11 @@ GuiArguments parse(const std::vector<std::string>& args)
     else if (!arg.empty() && arg[0] == '-')
     {
       throw cli::usageError(arg, "unknown option (see aniso --help)");
+    }
+    else if (a.session.empty() && isSessionPath(arg))
+    {
+      // A session file opened from a file manager (the desktop entry's `aniso %F`).
+      a.session = arg;
     }
     else if (a.mesh.empty())
     {
@@ -120,7 +136,7 @@ bool isGuiCommandLine(const std::vector<std::string>& args)
 
 std::string guiUsage()
 {
-  return "aniso [MESH...] [--session FILE] [--screenshot FILE [--quit]]";
+  return "aniso [MESH...] [SESSION.json | --session FILE] [--screenshot FILE [--quit]]";
 }
 
 int runGui(const std::vector<std::string>& args)
@@ -154,7 +170,7 @@ int runGui(const std::vector<std::string>& args)
     // Nothing of the user's tuning is lost if this run dies; a start that opens a file of its
     // own leaves an earlier run's autosave for a later plain start.
     window.enableAutosave(QString(), a.mesh.empty() && a.session.empty() ? AutosaveRestore::Ask
-                                                                        : AutosaveRestore::Keep);
+                                                                         : AutosaveRestore::Keep);
   }
   QStringList added;
   for (const std::string& path : a.added)

@@ -72,6 +72,15 @@ enum class BackgroundMode
 BackgroundMode parseBackgroundMode(std::string_view text);
 std::string_view spelling(BackgroundMode value);
 
+// "line-width-unit": what an illuminated line's width (line-width) is measured in.
+enum class LineWidthUnit
+{
+  Pixels, // on screen, the same at every depth
+  World,  // the mesh's own length units: a ribbon of that width, thinner farther away
+};
+LineWidthUnit parseLineWidthUnit(std::string_view text);
+std::string_view spelling(LineWidthUnit value);
+
 // "tone-mapping"
 enum class ToneMapping
 {

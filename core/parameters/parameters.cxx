@@ -114,6 +114,8 @@ constexpr Spelling<BumpMapping> kBumpMappings[] = {{BumpMapping::None, "none"},
 constexpr Spelling<BackgroundMode> kBackgroundModes[] = {{BackgroundMode::Environment, "env"},
                                                          {BackgroundMode::Color, "color"},
                                                          {BackgroundMode::Transparent, "none"}};
+constexpr Spelling<LineWidthUnit> kLineWidthUnits[] = {{LineWidthUnit::Pixels, "pixels"},
+                                                       {LineWidthUnit::World, "world"}};
 constexpr Spelling<ToneMapping> kToneMappings[] = {{ToneMapping::Aces, "aces"},
                                                    {ToneMapping::Reinhard, "reinhard"},
                                                    {ToneMapping::Clamp, "clamp"}};
@@ -263,8 +265,21 @@ std::vector<ParameterSpec> declare()
                 text("tangents", "Tangents", "auto",
                      "tangent field: auto (the mesh's, else from UVs, else face-u on a STEP or "
                      "IGES part, else axis:1,0,0), uv, axis:X,Y,Z, around:X,Y,Z, radial:X,Y,Z, "
-                     "or face-u, face-v: along a CAD face's own u or v (a turned face: round "
-                     "or along its axis)"))),
+                     "face-u, face-v: along a CAD face's own u or v (a turned face: round "
+                     "or along its axis), or array:NAME: along the mesh's vector array NAME"))),
+      // Illuminated lines (a file's polylines, vtkpasses/mesh/LineSet.h): their width, per
+      // material, so that each line part has its own.
+      ofMaterial(affecting(A::Uniforms | A::FrameCost | A::LitModels,
+                           number("line-width", "Line width", T::Real, 2.0, 1e-4, 1e4, 0.1,
+                                  S::Logarithmic, {},
+                                  "illuminated lines (a file's polylines): their width, in "
+                                  "line-width-unit"))),
+      ofMaterial(affecting(A::Uniforms | A::FrameCost | A::LitModels,
+                           choice("line-width-unit", "Line width unit",
+                                  {LineWidthUnit::Pixels, LineWidthUnit::World},
+                                  LineWidthUnit::Pixels,
+                                  "what line-width is in: pixels on screen, or world (the "
+                                  "mesh's length units: thinner farther away)"))),
       // How STEP and IGES parts are tessellated (vtkpasses/mesh/CadReader.h). 0.001 of a part's
       // diagonal keeps a turned part's outline and highlight smooth at a full-window view; the
       // command line also takes an absolute length ("--cad-deflection 0.05mm").
@@ -686,6 +701,16 @@ BumpMapping parseBumpMapping(std::string_view text)
 std::string_view spelling(BumpMapping value)
 {
   return spellingIn(kBumpMappings, value);
+}
+
+LineWidthUnit parseLineWidthUnit(std::string_view text)
+{
+  return parseIn(kLineWidthUnits, "line-width-unit", text);
+}
+
+std::string_view spelling(LineWidthUnit value)
+{
+  return spellingIn(kLineWidthUnits, value);
 }
 
 BackgroundMode parseBackgroundMode(std::string_view text)

@@ -109,7 +109,8 @@ TEST_F(CliHelp, EverySubcommandFitsEightyColumns)
                                                           {"bake", "cubemap", "--help"},
                                                           {"bake", "irradiance", "--help"},
                                                           {"render", "--help"},
-                                                          {"bench", "--help"}};
+                                                          {"bench", "--help"},
+                                                          {"thumbnail", "--help"}};
   for (const auto& args : commands)
   {
     std::string what = "aniso";

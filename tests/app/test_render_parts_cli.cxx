@@ -16,6 +16,9 @@
 //    A --materials file's "satin gold" (blue here) wins over the built-in one.
 //  - --hide right renders the image of left.ply given alone (identity): the right sphere's
 //    pixels are gone and the camera fits the left one (nothing on the image's border).
+//  - A VTP file of a sphere and a polyline (vtkXMLPolyDataWriter) is two parts, the sphere
+//    named by the stem and its polyline "STEM lines" (N line segments); the lines alone
+//    (--hide of the sphere) cover pixels, more than 2.5 times as many at --line-width 4 as at 1.
 //  - Bad input ends with one line naming it: an unknown material, a pattern that matches no
 //    part, a library file that is not JSON, a library material's missing map, every file
 //    missing; a missing second file is one warning naming it, and the first still renders (the
@@ -32,9 +35,19 @@
 #include <gtest/gtest.h>
 #include <string>
 #include <vector>
+#include <vtkCellArray.h>
 #include <vtkNew.h>
+#include <vtkCellArray.h>
+#include <vtkCellData.h>
+#include <vtkDoubleArray.h>
+#include <vtkFloatArray.h>
+#include <vtkIntArray.h>
 #include <vtkPLYWriter.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
 #include <vtkSphereSource.h>
+#include <vtkXMLPolyDataWriter.h>
 
 namespace
 {
@@ -251,6 +264,70 @@ TEST_F(RenderPartsCli, ListPartsPrintsNamesTrianglesAndMaterials)
   EXPECT_NE(builtin.out.find("\tsatin gold\n"), std::string::npos) << builtin.out;
 }
 
+// --list-arrays: a VTP (vtkXMLPolyDataWriter) of one quad split in two triangles with a point
+// vector "flow" (one NaN component), a point scalar "heat" and a cell scalar "id" prints one
+// line per array under the part's name: point or cell, components, the finite range (of the
+// lengths for a vector), the NaN/Inf count; a part without arrays says so. --tangents
+// array:NAME of an array the part lacks ends with one line naming the vector arrays it has.
+TEST_F(RenderPartsCli, ListArraysPrintsEachPartsFields)
+{
+  vtkNew<vtkPoints> points;
+  const double corners[4][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+  vtkNew<vtkFloatArray> flow;
+  flow->SetName("flow");
+  flow->SetNumberOfComponents(3);
+  vtkNew<vtkDoubleArray> heat;
+  heat->SetName("heat");
+  for (int i = 0; i < 4; ++i)
+  {
+    points->InsertNextPoint(corners[i][0], corners[i][1], 0.0);
+    flow->InsertNextTuple3(3.0 * (i + 1), 4.0 * (i + 1), 0.0); // lengths 5, 10, 15, 20
+    heat->InsertNextValue(-2.5 + i);
+  }
+  flow->SetComponent(3, 1, std::nan(""));
+  vtkNew<vtkCellArray> triangles;
+  const vtkIdType first[3] = {0, 1, 2};
+  const vtkIdType second[3] = {0, 2, 3};
+  triangles->InsertNextCell(3, first);
+  triangles->InsertNextCell(3, second);
+  vtkNew<vtkIntArray> id;
+  id->SetName("id");
+  id->InsertNextValue(7);
+  id->InsertNextValue(9);
+  vtkNew<vtkPolyData> quad;
+  quad->SetPoints(points);
+  quad->SetPolys(triangles);
+  quad->GetPointData()->AddArray(flow);
+  quad->GetPointData()->AddArray(heat);
+  quad->GetCellData()->AddArray(id);
+  const std::string file = path("quad.vtp").string();
+  vtkNew<vtkXMLPolyDataWriter> writer;
+  writer->SetInputData(quad);
+  writer->SetFileName(file.c_str());
+  ASSERT_EQ(writer->Write(), 1);
+
+  const auto before = files();
+  const Outcome r = run({"render", file, right_, "--list-arrays"});
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_EQ(r.err, "");
+  EXPECT_EQ(lines(r.out), (std::vector<std::string>{
+                              "quad",
+                              "  flow\tpoint\t3 components\t5..15 (length)\t1 NaN/Inf",
+                              "  heat\tpoint\t1 component\t-2.5..0.5\t0 NaN/Inf",
+                              "  id\tcell\t1 component\t7..9\t0 NaN/Inf",
+                              "right\t(no arrays)",
+                          }));
+  EXPECT_EQ(files(), before); // nothing written
+
+  const Outcome missing =
+      run({"render", file, "--tangents", "array:velocity", "-o", path("quad.png").string()});
+  EXPECT_NE(missing.exitCode, 0);
+  EXPECT_NE(missing.err.find("tangents 'array:velocity': the mesh has no point or cell array "
+                             "'velocity' (its vector arrays: flow)"),
+            std::string::npos)
+      << missing.err;
+}
+
 TEST_F(RenderPartsCli, AFileOfSeveralBlocksIsSeveralParts)
 {
   // An OBJ of two groups (loadMeshBlocks: a part per g statement, named by it), one of a single
@@ -367,5 +444,44 @@ TEST_F(RenderPartsCli, AMissingSecondFileIsSkippedWithAWarning)
   ASSERT_FALSE(alone.empty());
   EXPECT_LE(largestDifference(rendered, alone, 0, kWidth), 1e-6);
   EXPECT_GT(coveredPixels(rendered), 100);
+}
+// A file's polylines: a part of their own, listed with their segments, drawn at their width.
+TEST_F(RenderPartsCli, PolylinesOfAVtpFileAreALinePartDrawnAtTheirWidth)
+{
+  vtkNew<vtkSphereSource> sphere;
+  sphere->SetCenter(-1.5, 0.0, 0.0);
+  sphere->SetThetaResolution(32);
+  sphere->SetPhiResolution(16);
+  sphere->Update();
+  vtkNew<vtkPolyData> poly;
+  poly->DeepCopy(sphere->GetOutput());
+  poly->GetPointData()->RemoveArray("Normals"); // one a point: the circle's points have none
+  // A circle of 64 segments (65 points, the last the first again) around x = +1.5.
+  vtkNew<vtkCellArray> lines;
+  lines->InsertNextCell(65);
+  for (int i = 0; i <= 64; ++i)
+  {
+    const double a = 2.0 * M_PI * (i % 64) / 64.0;
+    lines->InsertCellPoint(poly->GetPoints()->InsertNextPoint(1.5 + std::cos(a), 0.0, std::sin(a)));
+  }
+  poly->SetLines(lines);
+  const std::string file = path("strands.vtp").string();
+  vtkNew<vtkXMLPolyDataWriter> writer;
+  writer->SetInputData(poly);
+  writer->SetFileName(file.c_str());
+  ASSERT_EQ(writer->Write(), 1);
+
+  const Outcome listed = run({"render", file, "--list-parts"});
+  EXPECT_EQ(listed.exitCode, 0) << listed.err;
+  EXPECT_EQ(listed.out, "strands\t896 triangles\t(command line)\n"
+                        "strands lines\t64 line segments\t(command line)\n");
+
+  const aniso::Image thin = render({file, "--hide", "strands", "--line-width", "1"}, "thin");
+  const aniso::Image wide = render({file, "--hide", "strands", "--line-width", "4"}, "wide");
+  const Region thinLines = region(thin, 0, kWidth);
+  const Region wideLines = region(wide, 0, kWidth);
+  EXPECT_GT(thinLines.pixels, 20);
+  EXPECT_GT(wideLines.pixels, 2.5 * thinLines.pixels);
+  expectGrey(wideLines, "lines under the white environment");
 }
 } // namespace

@@ -249,14 +249,18 @@ TEST(Parameters, SetRejectsAndKeepsPreviousValue)
 TEST(Parameters, RolesAreTheListedOnes)
 {
   using Names = std::set<std::string>;
-  const Names uniforms = {"nu", "nv", "f0", "albedo", "samples", "height-scale"};
+  // line-width and its unit: the line parts' actors (vtkpasses/render/LineStyle.h).
+  const Names uniforms = {"nu",           "nv",         "f0",
+                          "albedo",       "samples",    "height-scale",
+                          "line-width",   "line-width-unit"};
   // env-sampling is a variant too; the view applied the material for it beside its list.
   const Names variant = {"method", "filtered", "env-sampling", "half-vectors", "bump"};
   const Names luts = {"nu", "nv", "lut-size", "lut-samples"};
   // The view's material keys: uniforms, variant and the LUT inputs.
   const Names material = {"nu",       "nv",           "f0",          "albedo",   "samples",
                           "lut-size", "lut-samples",  "method",      "filtered", "half-vectors",
-                          "bump",     "height-scale", "env-sampling"};
+                          "bump",     "height-scale", "env-sampling", "line-width",
+                          "line-width-unit"};
   const Names display = {"exposure", "tone-mapping", "background", "background-color"};
   const Names keepsFrameCost = {"nu",           "nv",           "f0",           "albedo",
                                 "samples",      "lut-size",     "lut-samples",  "target-samples",
@@ -265,7 +269,7 @@ TEST(Parameters, RolesAreTheListedOnes)
   // env-rotation turns the environment's sources, env-lights adds them (core/lights/env_lights.h).
   const Names litModels = {"nu",        "nv",         "f0",           "albedo",
                            "tangents",  "cad-deflection", "cad-angle", "env-rotation",
-                           "env-lights"};
+                           "env-lights", "line-width", "line-width-unit"};
   const Names surfaceModels = {"f0",        "albedo",    "tangents",
                                "cad-deflection", "cad-angle", "env-lights"};
   // The tessellation of CAD files: their parts are read again.
@@ -348,6 +352,8 @@ TEST(Parameters, ChoicesParseToDistinctEnumsAndBack)
                                  {"none", "normal", "quaternion"}, "none");
   expectEnumChoices<BackgroundMode>(covered, "background", parseBackgroundMode,
                                     {"env", "color", "none"}, "env");
+  expectEnumChoices<LineWidthUnit>(covered, "line-width-unit", parseLineWidthUnit,
+                                   {"pixels", "world"}, "pixels");
   expectEnumChoices<ToneMapping>(covered, "tone-mapping", parseToneMapping,
                                  {"aces", "reinhard", "clamp"}, "aces");
   expectEnumChoices<LeadrFilter>(covered, "leadr-filter", parseLeadrFilter,

@@ -98,6 +98,39 @@ private slots:
     QCOMPARE(model.text("tangents"), std::string("around:0,0,2@1,2,3"));
   }
 
+  // array:NAME: the edited parts' vector arrays (SceneModel::setPartArrays, as the window tells
+  // them) are offered; choosing the kind takes the first, picking another writes it, a model
+  // text shows its name; face-u and face-v show as themselves (the texts are BrushingModel.h's
+  // spellings).
+  void tangentEditorOffersThePartsVectorArrays()
+  {
+    aniso::SceneModel model;
+    aniso::SceneEditor editor(&model);
+    aniso::MapsDock dock(&editor);
+    aniso::TangentEditor* t = dock.tangentEditor();
+    QComboBox* arrays = t->arrayBox();
+    QCOMPARE(arrays->count(), 0);
+    const std::string part = model.parts().front().name;
+    QSignalSpy told(&model, &aniso::SceneModel::partArraysChanged);
+    model.setPartArrays(part, {"velocity", "fibre direction"});
+    model.setPartArrays(part, {"velocity", "fibre direction"}); // the same: no signal
+    QCOMPARE(told.count(), 1);
+    QCOMPARE(arrays->count(), 2);
+    QCOMPARE(arrays->itemText(1), QString("fibre direction"));
+    emit t->kindBox()->activated(t->kindBox()->findData("array"));
+    QCOMPARE(model.text("tangents"), std::string("array:velocity"));
+    QVERIFY(arrays->isVisibleTo(t));
+    arrays->setCurrentIndex(1);
+    emit arrays->activated(1);
+    QCOMPARE(model.text("tangents"), std::string("array:fibre direction"));
+    model.setValue("tangents", textValue("array:velocity"));
+    QCOMPARE(arrays->currentText(), QString("velocity"));
+    model.setValue("tangents", textValue("face-v"));
+    QCOMPARE(t->kindBox()->currentData().toString(), QString("face-v"));
+    QCOMPARE(t->text(), QString("face-v"));
+    QVERIFY(!arrays->isVisibleTo(t));
+  }
+
   // A corrupt or missing map is reported once, naming the file; the model and the row keep
   // the previous map. A good map is taken.
   void badMapIsReportedAndChangesNothing()

@@ -5,15 +5,17 @@
 #include "core/parameters/parameters.h"
 #include "vtkpasses/mesh/CadReader.h"
 #include "vtkpasses/mesh/GeometryAccess.h"
+#include "vtkpasses/mesh/MeshArrays.h"
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 #include <cstdlib>
 #include <glm/geometric.hpp>
+#include <limits>
 #include <sstream>
 #include <vector>
 #include <vtkCellArray.h>
+#include <vtkCellData.h>
 #include <vtkDataArray.h>
 #include <vtkFloatArray.h>
 #include <vtkNew.h>
@@ -156,11 +158,82 @@ std::vector<glm::dvec3> accumulateUvTangents(vtkPolyData* surface, vtkDataArray*
       });
   return sum;
 }
+bool isFinite(const glm::dvec3& v)
+{
+  return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+}
+
+// A cell vector field at the points: each triangle's vector, weighted by the angle of its corner
+// there; triangles with a non-finite vector are left out. FINITE tells the points that had at
+// least one finite face.
+std::vector<glm::dvec3> averageCellVectors(vtkPolyData* surface, vtkDataArray* cellVectors,
+                                           std::vector<char>& finite)
+{
+  const size_t count = static_cast<size_t>(surface->GetNumberOfPoints());
+  std::vector<glm::dvec3> sum(count, glm::dvec3(0.0));
+  finite.assign(count, 0);
+  // Polygons follow vertices and lines in VTK's cell order.
+  vtkIdType cell = surface->GetNumberOfVerts() + surface->GetNumberOfLines();
+  geometry::forEachCell(
+      surface->GetPolys(),
+      [&](vtkIdType n, const vtkIdType* ids)
+      {
+        const glm::dvec3 v = tupleAt(cellVectors, cell++);
+        if (n != 3 || !isFinite(v))
+        {
+          return;
+        }
+        const glm::dvec3 p[3] = {pointAt(surface, ids[0]), pointAt(surface, ids[1]),
+                                 pointAt(surface, ids[2])};
+        for (int k = 0; k < 3; ++k)
+        {
+          sum[static_cast<size_t>(ids[k])] += v * cornerAngle(p[k], p[(k + 1) % 3], p[(k + 2) % 3]);
+          finite[static_cast<size_t>(ids[k])] = 1;
+        }
+      });
+  return sum;
+}
+
+// The point or cell array NAME of 2 or 3 components; else an error listing the vector arrays.
+vtkDataArray* vectorArray(vtkPolyData* surface, const std::string& name, bool& perCell,
+                          const std::string& subject)
+{
+  vtkDataArray* array = surface->GetPointData()->GetArray(name.c_str());
+  perCell = false;
+  if (!array)
+  {
+    array = surface->GetCellData()->GetArray(name.c_str());
+    perCell = array != nullptr;
+  }
+  const vtkIdType expected = perCell ? surface->GetNumberOfCells() : surface->GetNumberOfPoints();
+  if (array && (array->GetNumberOfComponents() == 2 || array->GetNumberOfComponents() == 3) &&
+      array->GetNumberOfTuples() == expected)
+  {
+    return array;
+  }
+  std::string vectors;
+  for (const std::string& candidate : vectorArrayNames(surface))
+  {
+    vectors += (vectors.empty() ? "" : ", ") + candidate;
+  }
+  const std::string has =
+      vectors.empty() ? "it has no vector arrays" : "its vector arrays: " + vectors;
+  if (array)
+  {
+    const int components = array->GetNumberOfComponents();
+    throw errorAbout(subject, "tangents 'array:" + name + "': the array has " +
+                                  std::to_string(components) +
+                                  (components == 1 ? " component" : " components") +
+                                  ", a direction needs 2 or 3 (" + has + ")");
+  }
+  throw errorAbout(subject, "tangents 'array:" + name + "': the mesh has no point or cell array '" +
+                                name + "' (" + has + ")");
+}
 } // namespace
 
 std::string brushingModelSyntax()
 {
-  return "uv|axis:X,Y,Z|around:X,Y,Z[@CX,CY,CZ]|radial:X,Y,Z|face-u|face-v";
+  return "uv|axis:X,Y,Z|around:X,Y,Z[@CX,CY,CZ]|radial:X,Y,Z|face-u|face-v|array:NAME";
 }
 
 BrushingModel parseBrushingModel(const std::string& text, const std::string& subject)
@@ -184,6 +257,18 @@ BrushingModel parseBrushingModel(const std::string& text, const std::string& sub
     model.kind = name == "uv"       ? BrushingKind::Uv
                  : name == "face-u" ? BrushingKind::FaceU
                                     : BrushingKind::FaceV;
+    return model;
+  }
+  if (name == "array")
+  {
+    model.kind = BrushingKind::Array;
+    model.array = trim(args);
+    if (model.array.empty())
+    {
+      throw errorAbout(subject, "'" + whole +
+                                    "' needs the name of a vector array, as in "
+                                    "array:velocity");
+    }
     return model;
   }
   if (name != "axis" && name != "around" && name != "radial")
@@ -235,6 +320,8 @@ std::string toString(const BrushingModel& model)
     return "face-u";
   case BrushingKind::FaceV:
     return "face-v";
+  case BrushingKind::Array:
+    return "array:" + model.array;
   }
   return "uv";
 }
@@ -267,6 +354,19 @@ TangentStats computeBrushingTangents(vtkPolyData* surface, const BrushingModel& 
       throw errorAbout(subject, "tangents '" + toString(model) +
                                     "' need the faces of a CAD part (a STEP or IGES file), and "
                                     "this mesh has none");
+    }
+  }
+
+  vtkDataArray* field = nullptr;
+  std::vector<glm::dvec3> cellAverages;
+  std::vector<char> cellFinite;
+  if (model.kind == BrushingKind::Array)
+  {
+    bool perCell = false;
+    field = vectorArray(surface, model.array, perCell, subject);
+    if (perCell)
+    {
+      cellAverages = averageCellVectors(surface, field, cellFinite);
     }
   }
 
@@ -325,6 +425,30 @@ TangentStats computeBrushingTangents(vtkPolyData* surface, const BrushingModel& 
     case BrushingKind::FaceV:
       direction = tupleAt(faceTangents, i);
       defined = std::isfinite(glm::length(direction));
+      break;
+    case BrushingKind::Array:
+      if (cellAverages.empty())
+      {
+        direction = tupleAt(field, i);
+        defined = isFinite(direction);
+      }
+      else
+      {
+        direction = cellAverages[static_cast<size_t>(i)];
+        defined = cellFinite[static_cast<size_t>(i)] != 0;
+      }
+      if (!defined)
+      {
+        ++stats.nonFinitePoints;
+        direction = glm::dvec3(0.0);
+      }
+      // Huge components: scaled down first so that the length below stays finite.
+      else if (const double largest =
+                   std::max({std::abs(direction.x), std::abs(direction.y), std::abs(direction.z)});
+               largest > 0.0)
+      {
+        direction /= largest;
+      }
       break;
     }
     const double length = glm::length(direction);

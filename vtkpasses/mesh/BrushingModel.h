@@ -15,6 +15,13 @@
 //                        cones, spheres, tori and surfaces of revolution have u around their
 //                        axis, so face-u brushes a turned part round, face-v along its axis (a
 //                        cone's along its generatrix); a plane's u is its X direction.
+//   array:NAME           a vector field of the mesh: t = the point array NAME (2 or 3
+//                        components, a 2-component one read as (x, y, 0)) projected into the
+//                        tangent plane. A cell array NAME (no point array of that name) is
+//                        averaged to the points first: each face's vector weighted by the angle
+//                        of its corner at the point, faces with a NaN or Inf component left out.
+//                        Vertices whose value is NaN or Inf (a point array) or that touch only
+//                        such faces take the fallback and are counted in nonFinitePoints too.
 // Where the projection vanishes (the direction is along the normal, or p lies on the axis or at
 // the point), t falls back to the deterministic tangent of Frame::fromNormalTangent (core/frame.h,
 // the X axis projected, or Y when n is near X) and the point is counted (face-u and face-v where the
@@ -37,7 +44,8 @@ enum class BrushingKind
   Around,
   Radial,
   FaceU,
-  FaceV
+  FaceV,
+  Array
 };
 
 struct BrushingModel
@@ -45,10 +53,12 @@ struct BrushingModel
   BrushingKind kind = BrushingKind::Uv;
   glm::dvec3 vector{0.0, 0.0, 1.0}; // unit axis (Axis, Around) or the centre point (Radial)
   std::optional<glm::dvec3> centre; // Around: a point on the axis; unset = bounding-box centre
+  std::string array;                // Array: the name of the point or cell array
 };
 
-// The CLI spelling "uv|axis:X,Y,Z|around:X,Y,Z[@CX,CY,CZ]|radial:X,Y,Z|face-u|face-v". Errors are aniso::Error
-// "SUBJECT: reason" (unknown model, missing or non-numeric components, zero-length axis).
+// The CLI spelling "uv|axis:X,Y,Z|around:X,Y,Z[@CX,CY,CZ]|radial:X,Y,Z|face-u|face-v|array:NAME".
+// Errors are aniso::Error "SUBJECT: reason" (unknown model, missing or non-numeric components,
+// zero-length axis, no array name).
 BrushingModel parseBrushingModel(const std::string& text,
                                  const std::string& subject = "--tangents");
 std::string toString(const BrushingModel& model); // parses back to the same model
@@ -58,11 +68,14 @@ struct TangentStats
 {
   int64_t points = 0;
   int64_t fallbackPoints = 0; // where the model gave no direction in the tangent plane
+  int64_t nonFinitePoints = 0; // of those, where the array's value was NaN or Inf (array:NAME)
 };
 
 // Writes the float point array "Tangents" (unit, orthogonal to "Normals", set active) of a
 // triangle surface that has unit point normals. Uv needs "TCoords": without them it throws
-// aniso::Error "SUBJECT: reason"; so do face-u and face-v without their array.
+// aniso::Error "SUBJECT: reason"; so do face-u and face-v without their array, and array:NAME
+// when the mesh has no point or cell array NAME of 2 or 3 components (the message lists the
+// vector arrays it has).
 TangentStats computeBrushingTangents(vtkPolyData* surface, const BrushingModel& model,
                                      const std::string& subject);
 } // namespace aniso

@@ -747,6 +747,16 @@ vtkSmartPointer<vtkPolyData> Reader::primitives(const tinygltf::Mesh& mesh,
   bool allNormals = true;
   bool allTangents = true;
   bool allTcoords = true;
+  // Custom attributes ("_NAME", glTF 2.0 section 3.7.2.1): kept as point arrays when every
+  // triangle primitive merged here has one of the same width.
+  struct Custom
+  {
+    int components = 0;
+    std::vector<float> values;
+    size_t primitives = 0;
+  };
+  std::map<std::string, Custom> custom;
+  size_t trianglePrimitives = 0;
   const glm::dmat3 linear(geometry);
   const glm::dmat3 normalMatrix = glm::transpose(glm::inverse(linear));
   for (int p : which)
@@ -802,6 +812,27 @@ vtkSmartPointer<vtkPolyData> Reader::primitives(const tinygltf::Mesh& mesh,
     const std::optional<std::vector<double>> n = optional("NORMAL", 3);
     const std::optional<std::vector<double>> t = optional("TANGENT", 4);
     const std::optional<std::vector<double>> uv = optional("TEXCOORD_0", 2);
+    // Read before the indices, whose failure leaves the primitive out after they are counted.
+    std::map<std::string, std::vector<double>> customValues;
+    for (const auto& [name, accessor] : primitive.attributes)
+    {
+      if (name.empty() || name[0] != '_' || accessor < 0 ||
+          size_t(accessor) >= model_.accessors.size())
+      {
+        continue;
+      }
+      const int components =
+          tinygltf::GetNumComponentsInType(uint32_t(model_.accessors[size_t(accessor)].type));
+      if (components < 1 || components > 4)
+      {
+        warn(what + ": " + name + ": not a scalar or vector: dropped");
+        continue;
+      }
+      if (const std::optional<std::vector<double>> values = optional(name.c_str(), components))
+      {
+        customValues[name] = *values;
+      }
+    }
     std::vector<uint32_t> indices;
     if (primitive.indices >= 0)
     {
@@ -835,6 +866,37 @@ vtkSmartPointer<vtkPolyData> Reader::primitives(const tinygltf::Mesh& mesh,
                                            (*positions)[i * 3 + 2], 1.0));
       points->InsertNextPoint(q.x, q.y, q.z);
     }
+    for (auto& [name, values] : customValues)
+    {
+      const int components = int(values.size() / std::max<size_t>(count, 1));
+      Custom& kept = custom[name];
+      if (kept.primitives != trianglePrimitives ||
+          (kept.components != 0 && kept.components != components))
+      {
+        kept.primitives = size_t(-1); // missing from an earlier primitive, or another width
+        continue;
+      }
+      kept.components = components;
+      ++kept.primitives;
+      for (size_t i = 0; i < count; ++i)
+      {
+        if (components == 3)
+        {
+          // A direction, turned with the geometry like TANGENT.
+          const glm::dvec3 v =
+              linear * glm::dvec3(values[i * 3], values[i * 3 + 1], values[i * 3 + 2]);
+          kept.values.insert(kept.values.end(), {float(v.x), float(v.y), float(v.z)});
+        }
+        else
+        {
+          for (int c = 0; c < components; ++c)
+          {
+            kept.values.push_back(float(values[i * size_t(components) + size_t(c)]));
+          }
+        }
+      }
+    }
+    ++trianglePrimitives;
     allNormals = allNormals && n.has_value();
     allTangents = allTangents && t.has_value();
     allTcoords = allTcoords && uv.has_value();
@@ -925,6 +987,19 @@ vtkSmartPointer<vtkPolyData> Reader::primitives(const tinygltf::Mesh& mesh,
   if (total > 0 && allTcoords)
   {
     polyData->GetPointData()->SetTCoords(array("TCoords", 2, tcoords));
+  }
+  for (const auto& [name, kept] : custom)
+  {
+    if (total > 0 && kept.primitives == trianglePrimitives)
+    {
+      polyData->GetPointData()->AddArray(array(name.c_str(), kept.components, kept.values));
+    }
+    else
+    {
+      warn(subject + ": " + name +
+           ": not on every primitive of the part (or of varying width): "
+           "dropped");
+    }
   }
   return polyData;
 }

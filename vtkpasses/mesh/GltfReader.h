@@ -15,7 +15,10 @@
 // the bottom left (v -> 1 - v), as Blender's importer does; the texture transform
 // (KHR_texture_transform) of the material's textures applied to TEXCOORD_0 before that. The
 // surface stays in the mesh's frame and the node's world transform (parents' composed, TRS or
-// matrix) is ReaderBlock::placement, turned Z-up too (C W C^-1).
+// matrix) is ReaderBlock::placement, turned Z-up too (C W C^-1). Custom attributes, whose names
+// begin with "_" (a scalar or a vector of 2 to 4 floats or normalised integers), become point
+// arrays of that name when every primitive of the part has them; 3-component ones are
+// directions, turned Z-up with the geometry like TANGENT.
 // Materials: ReaderBlock::material, one library material per glTF material, named by it, else
 // "material I". A constant anisotropyRotation left after gltfToAs' swap turns the tangent
 // through a 1x1 TPR map; on a part without TEXCOORD_0 (no map can be sampled there) the part's

@@ -3,6 +3,7 @@
 #include "core/error.h"
 #include "core/parameters/parameters.h"
 #include "vtkpasses/mesh/CadReader.h"
+#include "vtkpasses/mesh/LineSet.h"
 #include "vtkpasses/mesh/MeshReaderProcess.h"
 #include "vtkpasses/mesh/OffReader.h"
 #include "vtkpasses/mesh/PlyReader.h"
@@ -20,6 +21,7 @@
 #include <iterator>
 #include <mutex>
 #include <new>
+#include <optional>
 #include <set>
 #include <system_error>
 #include <vector>
@@ -32,7 +34,7 @@ namespace aniso
 {
 namespace
 {
-const char* const kExtensions[] = {".obj",  ".ply", ".stl",  ".off", ".vtk",  ".vtp", ".vtm",
+const char* const kExtensions[] = {".obj",  ".ply", ".stl",  ".off", ".vtk",  ".vtp", ".vtu", ".vtm",
                                    ".gltf", ".glb", ".step", ".stp", ".iges", ".igs"};
 
 std::mutex& loadMutex()
@@ -375,6 +377,61 @@ std::string toString(const CadDeflection& deflection)
   return formatNumber(deflection.value) + (deflection.absolute ? "mm" : "");
 }
 
+namespace
+{
+// The file read by its reader, unsanitised, with what the reader said in REPORT (loadMesh's
+// reading; the caller holds the load lock and a message capture).
+vtkSmartPointer<vtkPolyData> readWhole(const std::string& path, const std::string& ext,
+                                       uintmax_t fileSize, const MeshReadOptions& options,
+                                       MeshReport& report, ObjNonFiniteEntries& objNonFinite)
+{
+  report.source = path;
+  vtkSmartPointer<vtkPolyData> raw = readingErrorsNamed(
+      path, [&] { return readByExtension(path, ext, fileSize, report.readerWarnings, options); });
+  if (ext == ".obj")
+  {
+    objNonFinite = countObjNonFiniteEntries(path);
+    dropObjNonFiniteArrays(raw, objNonFinite);
+  }
+  return raw;
+}
+
+// "NAME lines", made unique against TAKEN (which receives it).
+std::string linePartName(const std::string& name, std::set<std::string>& taken)
+{
+  std::string candidate = name + " lines";
+  for (int i = 2; taken.count(candidate); ++i)
+  {
+    candidate = name + " lines " + std::to_string(i);
+  }
+  taken.insert(candidate);
+  return candidate;
+}
+
+// The line part of RAW's polylines, named NAME, or nothing (and a warning "SUBJECT: reason" in
+// WARNINGS) when none of its lines is usable.
+std::optional<MeshBlock> linePart(vtkPolyData* raw, const std::string& name,
+                                  const std::string& path, const MeshReport& surfaceReport,
+                                  std::vector<std::string>& warnings)
+{
+  MeshBlock block;
+  block.name = name;
+  block.lines = true;
+  block.mesh.report.source = path;
+  block.mesh.report.readerWarnings = surfaceReport.readerWarnings;
+  try
+  {
+    block.mesh.polyData = sanitizeLines(raw, path + ": part " + name, block.mesh.report);
+  }
+  catch (const Error& e)
+  {
+    warnings.push_back(e.what());
+    return std::nullopt;
+  }
+  return block;
+}
+} // namespace
+
 LoadedMesh loadMesh(const std::string& path, const MeshReadOptions& options)
 {
   const std::filesystem::path file(path);
@@ -383,18 +440,11 @@ LoadedMesh loadMesh(const std::string& path, const MeshReadOptions& options)
 
   std::lock_guard<std::mutex> lock(loadMutex());
   LoadedMesh mesh;
-  mesh.report.source = path;
   // The validation's own VTK calls (polygon triangulation) stay quiet too.
   VtkMessageCapture capture;
-  vtkSmartPointer<vtkPolyData> raw = readingErrorsNamed(
-      path,
-      [&] { return readByExtension(path, ext, fileSize, mesh.report.readerWarnings, options); });
   ObjNonFiniteEntries objNonFinite;
-  if (ext == ".obj")
-  {
-    objNonFinite = countObjNonFiniteEntries(path);
-    dropObjNonFiniteArrays(raw, objNonFinite);
-  }
+  vtkSmartPointer<vtkPolyData> raw =
+      readWhole(path, ext, fileSize, options, mesh.report, objNonFinite);
   mesh.polyData = sanitizeSurface(raw, path, mesh.report);
   mesh.report.invalidTCoords += objNonFinite.tcoords;
   mesh.report.invalidNormals += objNonFinite.normals;
@@ -407,15 +457,53 @@ LoadedBlocks loadMeshBlocks(const std::string& path, const MeshReadOptions& opti
   const std::string ext = knownExtension(file, path);
   const std::string stem = file.stem().string();
   LoadedBlocks loaded;
+  const uintmax_t fileSize = readingSize(file, ext, checkFile(file, path));
   if (!hasBlocks(ext))
   {
+    std::lock_guard<std::mutex> lock(loadMutex());
+    VtkMessageCapture capture;
     MeshBlock block;
     block.name = stem;
-    block.mesh = loadMesh(path, options);
-    loaded.blocks.push_back(std::move(block));
+    ObjNonFiniteEntries objNonFinite;
+    vtkSmartPointer<vtkPolyData> raw =
+        readWhole(path, ext, fileSize, options, block.mesh.report, objNonFinite);
+    if (!hasLineCells(raw))
+    {
+      block.mesh.polyData = sanitizeSurface(raw, path, block.mesh.report);
+      loaded.blocks.push_back(std::move(block));
+      return loaded;
+    }
+    // Its polylines are a part of their own; the faces, when it has any, another.
+    std::set<std::string> taken = {stem};
+    const std::vector<std::string> readerWarnings = block.mesh.report.readerWarnings;
+    if (hasFaceCells(raw))
+    {
+      block.mesh.polyData = sanitizeSurface(raw, path, block.mesh.report);
+      block.mesh.report.nonSurfaceCellsDropped -= raw->GetNumberOfLines();
+      loaded.blocks.push_back(std::move(block));
+    }
+    MeshBlock lines;
+    lines.name = linePartName(stem, taken);
+    lines.lines = true;
+    lines.mesh.report.source = path;
+    lines.mesh.report.readerWarnings = readerWarnings;
+    try
+    {
+      // A file of lines only: its reason is the file's, as loadMesh gives a surface's.
+      lines.mesh.polyData = sanitizeLines(
+          raw, loaded.blocks.empty() ? path : path + ": part " + lines.name, lines.mesh.report);
+      loaded.blocks.push_back(std::move(lines));
+    }
+    catch (const Error& e)
+    {
+      if (loaded.blocks.empty())
+      {
+        throw;
+      }
+      loaded.warnings.push_back(e.what());
+    }
     return loaded;
   }
-  const uintmax_t fileSize = readingSize(file, ext, checkFile(file, path));
 
   std::lock_guard<std::mutex> lock(loadMutex());
   VtkMessageCapture capture;
@@ -433,6 +521,7 @@ LoadedBlocks loadMeshBlocks(const std::string& path, const MeshReadOptions& opti
     objNonFinite = countObjNonFiniteEntries(path);
   }
   const std::vector<std::string> names = uniqueNames(raw, stem);
+  std::set<std::string> taken(names.begin(), names.end());
   std::vector<std::string> reasons; // "part NAME: reason" of each part skipped
   for (size_t b = 0; b < raw.size(); ++b)
   {
@@ -441,15 +530,49 @@ LoadedBlocks loadMeshBlocks(const std::string& path, const MeshReadOptions& opti
     block.mesh.report.source = path;
     block.mesh.report.readerWarnings = readerWarnings;
     const std::string subject = path + ": part " + block.name;
+    // A block's polylines are a part of their own, after its faces' part; a block of lines
+    // only makes no surface part.
+    std::optional<MeshBlock> lines;
+    if (hasLineCells(raw[b].polyData))
+    {
+      std::vector<std::string> lineWarnings;
+      lines = linePart(raw[b].polyData, linePartName(block.name, taken), path, block.mesh.report,
+                       lineWarnings);
+      for (const std::string& warning : lineWarnings)
+      {
+        loaded.warnings.push_back(warning);
+        reasons.push_back(warning.substr(path.size() + 2));
+      }
+      if (lines)
+      {
+        lines->placement = raw[b].placement;
+      }
+    }
+    if (hasLineCells(raw[b].polyData) && !hasFaceCells(raw[b].polyData))
+    {
+      if (lines)
+      {
+        loaded.blocks.push_back(std::move(*lines));
+      }
+      continue; // its lines' warning says why nothing of it is drawn
+    }
     try
     {
       dropObjNonFiniteArrays(raw[b].polyData, objNonFinite);
       block.mesh.polyData = sanitizeSurface(raw[b].polyData, subject, block.mesh.report);
+      if (lines)
+      {
+        block.mesh.report.nonSurfaceCellsDropped -= raw[b].polyData->GetNumberOfLines();
+      }
     }
     catch (const Error& e)
     {
       loaded.warnings.push_back(e.what());
       reasons.push_back(std::string(e.what()).substr(path.size() + 2));
+      if (lines)
+      {
+        loaded.blocks.push_back(std::move(*lines));
+      }
       continue;
     }
     raw[b].polyData = nullptr;
@@ -457,6 +580,10 @@ LoadedBlocks loadMeshBlocks(const std::string& path, const MeshReadOptions& opti
     block.mesh.report.invalidTCoords += objNonFinite.tcoords;
     block.mesh.report.invalidNormals += objNonFinite.normals;
     loaded.blocks.push_back(std::move(block));
+    if (lines)
+    {
+      loaded.blocks.push_back(std::move(*lines));
+    }
   }
   if (loaded.blocks.empty())
   {
@@ -464,7 +591,8 @@ LoadedBlocks loadMeshBlocks(const std::string& path, const MeshReadOptions& opti
     {
       // One part: the file's own reason, as loadMesh gives it.
       const std::string prefix = "part " + names.front() + ": ";
-      throw errorAbout(path, reasons.front().substr(prefix.size()));
+      const std::string& reason = reasons.front();
+      throw errorAbout(path, reason.rfind(prefix, 0) == 0 ? reason.substr(prefix.size()) : reason);
     }
     constexpr size_t kReasonsTold = 3;
     std::string told;

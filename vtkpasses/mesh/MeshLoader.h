@@ -3,7 +3,8 @@
 //
 // Formats, chosen by the file extension (case-insensitive):
 //   .obj (vtkOBJReader), .ply (PlyReader), .stl (StlReader), .off (OffReader), .vtk (legacy, any
-//   dataset: non-polygonal ones are reduced to their outer surface), .vtp (XML polydata), .vtm
+//   dataset: non-polygonal ones are reduced to their outer surface), .vtp (XML polydata), .vtu
+//   (XML unstructured grid, vtkXMLUnstructuredGridReader: its outer surface), .vtm
 //   (XML multiblock, vtkXMLMultiBlockDataReader: every leaf dataset, non-polygonal ones reduced
 //   to their surface like .vtk), .gltf/.glb (tinygltf, GltfReader.h: every mesh of the default
 //   scene with its node transforms applied, and its materials), .step/.stp/.iges/.igs (OpenCASCADE, CadReader.h: the
@@ -18,6 +19,7 @@
 // The result then goes through sanitizeSurface() (MeshValidation.h): triangles only, no NaN, no
 // zero-area faces, exact duplicates merged, and float "Normals"/"TCoords"/"Tangents" arrays when
 // the file had them. Normals and tangents that are missing are made by SurfacePreparation.h.
+// The file's other point and cell arrays (data fields) are kept (docs/FORMATS.md, "Data arrays").
 //
 // Errors are aniso::Error "PATH: reason": missing or unreadable file, empty file, unknown
 // extension, whatever the reader reported (VTK's error and warning output is captured while
@@ -113,10 +115,20 @@ LoadedMesh loadMesh(const std::string& path, const MeshReadOptions& options = {}
 // the file share its name. PLACEMENT goes from the part's own frame (the surface's coordinates)
 // to the file's scene (an instance's placement in an assembly). A material or placement the
 // reader sent malformed is dropped with a warning "PATH: part NAME: reason".
+// Polylines (line cells) are parts of their own in every format that carries them (OBJ's l
+// statements, VTK legacy and VTP files' LINES, VTM leaves): a block's lines follow its faces'
+// part as the part "NAME lines" (" 2", ... when that name is taken), sanitised by sanitizeLines
+// (LineSet.h: tangents along the lines); a block of lines only is that part alone, and a block
+// whose lines are all unusable loses them with a warning "PATH: part NAME lines: reason". A
+// file of lines only that has none usable throws as loadMesh does ("PATH: reason"). loadMesh
+// (one surface) drops lines as before.
 struct MeshBlock
 {
   std::string name; // unique within the file (suffix " 2", " 3" on repeats)
   LoadedMesh mesh;  // sanitised like loadMesh's result (MeshValidation), with its report
+  // True for a line set (LineSet.h): MESH holds polylines with "Tangents" and no faces, drawn
+  // as illuminated lines, not prepared as a surface.
+  bool lines = false;
   std::optional<Material> material;
   PartMatrix placement = kIdentityPlacement;
 };

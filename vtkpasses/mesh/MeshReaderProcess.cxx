@@ -207,7 +207,7 @@ std::string meshReaderProgram()
     if (!ec)
     {
       candidates.push_back((self.parent_path() / kProgramName).string());
-      candidates.push_back((self.parent_path() / ".." / "lib" / "aniso" / kProgramName).string());
+      candidates.push_back((self.parent_path() / ".." / "libexec" / "aniso" / kProgramName).string());
     }
 #ifdef ANISO_MESH_READER_BUILD_PATH
     candidates.emplace_back(ANISO_MESH_READER_BUILD_PATH);

@@ -66,7 +66,7 @@ readBlocksInReaderProcess(const std::string& path, const std::string& ext, uintm
                           const std::vector<std::string>& readArguments = {});
 
 // Where the reader program is: $ANISO_MESH_READER when set, else beside the running executable,
-// else in ../lib/aniso/ from it (the installed layout), else where this build made it. Throws
+// else in ../libexec/aniso/ from it (the installed layout), else where this build made it. Throws
 // aniso::Error naming the places looked at when it is in none of them.
 std::string meshReaderProgram();
 

@@ -2,6 +2,7 @@
 
 #include "core/error.h"
 #include "vtkpasses/mesh/GeometryAccess.h"
+#include "vtkpasses/mesh/MeshArrays.h"
 
 #include <algorithm>
 #include <array>
@@ -11,6 +12,7 @@
 #include <unordered_map>
 #include <utility>
 #include <vtkCellArray.h>
+#include <vtkCellData.h>
 #include <vtkDataArray.h>
 #include <vtkFloatArray.h>
 #include <vtkIdList.h>
@@ -143,45 +145,54 @@ bool touchesNonFinite(vtkIdType count, const vtkIdType* ids, const std::vector<c
 }
 
 // Faces (polygons and strips) to triangles, after the id, vertex and NaN checks.
+// SOURCE_CELLS receives, for each triangle, the id of the input cell it came from (VTK's cell
+// order: vertices, lines, polygons, strips), for the cell data to follow it.
 std::vector<Triangle> collectTriangles(vtkPolyData* input, const std::vector<char>& nonFinite,
-                                       MeshReport& report)
+                                       MeshReport& report, std::vector<vtkIdType>& sourceCells)
 {
   vtkPoints* points = input->GetPoints();
   const vtkIdType pointCount = points ? points->GetNumberOfPoints() : 0;
   std::vector<Triangle> triangles;
   triangles.reserve(static_cast<size_t>(input->GetNumberOfPolys()));
 
+  vtkIdType cellId = input->GetNumberOfVerts() + input->GetNumberOfLines();
   auto visit = [&](vtkCellArray* cells, bool strip)
   {
+    const auto add = [&](vtkIdType count, const vtkIdType* ids)
+    {
+      if (count < 3 || !idsValid(count, ids, pointCount))
+      {
+        ++report.invalidCellsDropped;
+        return;
+      }
+      if (touchesNonFinite(count, ids, nonFinite))
+      {
+        ++report.nonFiniteFacesDropped;
+        return;
+      }
+      if (strip)
+      {
+        appendStrip(count, ids, triangles);
+      }
+      else if (count == 3)
+      {
+        triangles.push_back({ids[0], ids[1], ids[2]});
+      }
+      else if (count == 4)
+      {
+        triangulateQuad(points, ids, triangles);
+      }
+      else
+      {
+        triangulatePolygon(points, count, ids, triangles);
+      }
+    };
     geometry::forEachCell(cells,
                           [&](vtkIdType count, const vtkIdType* ids)
                           {
-                            if (count < 3 || !idsValid(count, ids, pointCount))
-                            {
-                              ++report.invalidCellsDropped;
-                              return;
-                            }
-                            if (touchesNonFinite(count, ids, nonFinite))
-                            {
-                              ++report.nonFiniteFacesDropped;
-                              return;
-                            }
-                            if (strip)
-                            {
-                              appendStrip(count, ids, triangles);
-                            }
-                            else if (count == 3)
-                            {
-                              triangles.push_back({ids[0], ids[1], ids[2]});
-                            }
-                            else if (count == 4)
-                            {
-                              triangulateQuad(points, ids, triangles);
-                            }
-                            else
-                            {
-                              triangulatePolygon(points, count, ids, triangles);
-                            }
+                            add(count, ids);
+                            // Every triangle this cell made carries its id.
+                            sourceCells.resize(triangles.size(), cellId++);
                           });
   };
   visit(input->GetPolys(), false);
@@ -390,8 +401,16 @@ std::vector<std::string> MeshReport::notes() const
   if (nonFiniteVertices > 0)
   {
     out.push_back(plural(nonFiniteVertices, "vertex has", "vertices have") +
-                  " NaN/Inf coordinates; " + plural(nonFiniteFacesDropped, "face", "faces") +
-                  " using them dropped");
+                  " NaN/Inf coordinates; " +
+                  (lineSegments > 0
+                       ? std::string("the lines through them split there")
+                       : plural(nonFiniteFacesDropped, "face", "faces") + " using them dropped"));
+  }
+  if (zeroLengthSegmentsDropped > 0)
+  {
+    out.push_back(
+        plural(zeroLengthSegmentsDropped, "zero-length line segment", "zero-length line segments") +
+        " dropped");
   }
   if (zeroAreaTrianglesDropped > 0)
   {
@@ -419,13 +438,18 @@ std::vector<std::string> MeshReport::notes() const
   }
   if (malformedArraysDropped > 0)
   {
-    out.push_back(plural(malformedArraysDropped, "point attribute", "point attributes") +
-                  " without one value per vertex dropped");
+    out.push_back(
+        plural(malformedArraysDropped, "point or cell attribute", "point or cell attributes") +
+        " without one value per vertex or face dropped");
   }
   if (invalidTCoords > 0)
   {
     out.push_back("texture coordinates discarded (" +
                   plural(invalidTCoords, "entry is", "entries are") + " NaN or Inf)");
+  }
+  for (const auto& [array, count] : nonFiniteArrayValues)
+  {
+    out.push_back(array + ": " + plural(count, "value is", "values are") + " NaN or Inf (kept)");
   }
   for (const std::string& warning : readerWarnings)
   {
@@ -500,14 +524,22 @@ vtkSmartPointer<vtkPolyData> sanitizeSurface(vtkPolyData* input, const std::stri
     }
   }
 
-  std::vector<Triangle> triangles = collectTriangles(input, nonFinite, report);
+  std::vector<vtkIdType> sourceCells;
+  std::vector<Triangle> triangles = collectTriangles(input, nonFinite, report, sourceCells);
   const size_t facesBeforeAreaCheck = triangles.size();
-  triangles.erase(std::remove_if(triangles.begin(), triangles.end(),
-                                 [points](const Triangle& t) {
-                                   return isZeroArea(pointAt(points, t[0]), pointAt(points, t[1]),
-                                                     pointAt(points, t[2]));
-                                 }),
-                  triangles.end());
+  size_t kept = 0;
+  for (size_t i = 0; i < triangles.size(); ++i)
+  {
+    const Triangle& t = triangles[i];
+    if (!isZeroArea(pointAt(points, t[0]), pointAt(points, t[1]), pointAt(points, t[2])))
+    {
+      triangles[kept] = t;
+      sourceCells[kept] = sourceCells[i];
+      ++kept;
+    }
+  }
+  triangles.resize(kept);
+  sourceCells.resize(kept);
   report.zeroAreaTrianglesDropped = static_cast<int64_t>(facesBeforeAreaCheck - triangles.size());
 
   if (triangles.empty())
@@ -618,7 +650,45 @@ vtkSmartPointer<vtkPolyData> sanitizeSurface(vtkPolyData* input, const std::stri
   }
   output->SetPolys(polys);
 
+  // Cell arrays with one value per input cell follow their cells: each triangle takes the
+  // value of the face it came from.
+  vtkCellData* inCd = input->GetCellData();
+  vtkCellData* outCd = output->GetCellData();
+  for (int a = 0; a < inCd->GetNumberOfArrays(); ++a)
+  {
+    vtkDataArray* array = inCd->GetArray(a);
+    if (!array)
+    {
+      continue;
+    }
+    if (array->GetNumberOfTuples() != input->GetNumberOfCells() ||
+        array->GetNumberOfComponents() < 1)
+    {
+      ++report.malformedArraysDropped;
+      continue;
+    }
+    vtkSmartPointer<vtkDataArray> copy = vtk::TakeSmartPointer(array->NewInstance());
+    copy->SetName(array->GetName());
+    copy->SetNumberOfComponents(array->GetNumberOfComponents());
+    copy->SetNumberOfTuples(static_cast<vtkIdType>(sourceCells.size()));
+    for (size_t i = 0; i < sourceCells.size(); ++i)
+    {
+      copy->SetTuple(static_cast<vtkIdType>(i), sourceCells[i], array);
+    }
+    outCd->AddArray(copy);
+  }
+
   normaliseAttributes(outPd, report);
+  report.nonFiniteArrayValues.clear();
+  for (const ArrayInfo& info : describeArrays(output))
+  {
+    if (info.nonFinite > 0 && !isGeometryArray(info.name))
+    {
+      report.nonFiniteArrayValues.emplace_back(
+          std::string(info.perCell ? "cell" : "point") + " array '" + info.name + "'",
+          info.nonFinite);
+    }
+  }
 
   const EdgeCounts edges = countEdges(output);
   report.nonManifoldEdges = edges.nonManifold;

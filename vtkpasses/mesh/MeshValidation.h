@@ -18,12 +18,17 @@
 //      "Normals" (3), "TCoords" (2) and "Tangents" (3, the xyz of a 4-component glTF tangent)
 //      and set active. A normals or texture-coordinate array with any non-finite or zero-length
 //      entry is discarded as a whole (normals are then recomputed by SurfacePreparation);
-//      tangents are validated later against the normals. Point attributes without one value
-//      per vertex (corrupt files) and cell data are dropped.
+//      tangents are validated later against the normals. Every other numeric point array is
+//      kept as it is (scalar and vector fields: BrushingModel's array:NAME). Point attributes
+//      without one value per vertex (corrupt files) are dropped;
+//   9. numeric cell arrays with one value per cell are kept as cell data of the triangles, each
+//      triangle with the value of the face it came from (a quad's two triangles share it);
+//      others are dropped.
 // Non-manifold and boundary edges are counted, not changed.
 // If no triangle survives, an aniso::Error "SUBJECT: reason" names what removed them.
 #include <cstdint>
 #include <string>
+#include <utility>
 #include <vector>
 #include <vtkSmartPointer.h>
 
@@ -49,10 +54,16 @@ struct MeshReport
   int64_t boundaryEdges = 0;    // edges used by one triangle (kept)
   int64_t invalidNormals = 0;   // entries that made the file's normals be discarded
   int64_t invalidTCoords = 0;   // entries that made the file's texture coordinates be discarded
-  int64_t malformedArraysDropped = 0; // point attributes without one tuple per vertex
+  int64_t malformedArraysDropped = 0; // point (cell) attributes without one tuple per vertex (cell)
+  int64_t zeroLengthSegmentsDropped = 0; // of a line set (LineSet.h)
+  // Data arrays (not the surface's own normals, texture coordinates and tangents) with NaN or
+  // Inf values: "point array 'NAME'" or "cell array 'NAME'", and how many tuples. Kept as they
+  // are: the tangent model array:NAME gives such vertices the fallback tangent.
+  std::vector<std::pair<std::string, int64_t>> nonFiniteArrayValues;
 
-  int64_t points = 0;    // in the result
-  int64_t triangles = 0; // in the result
+  int64_t points = 0;       // in the result
+  int64_t triangles = 0;    // in the result
+  int64_t lineSegments = 0; // in the result, for a line set (LineSet.h)
   bool hasNormals = false;
   bool hasTCoords = false;
   bool hasTangents = false;

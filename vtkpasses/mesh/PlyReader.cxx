@@ -10,8 +10,10 @@
 #include <cstdlib>
 #include <cstring>
 #include <sstream>
+#include <utility>
 #include <vector>
 #include <vtkCellArray.h>
+#include <vtkDoubleArray.h>
 #include <vtkFloatArray.h>
 #include <vtkNew.h>
 #include <vtkPointData.h>
@@ -259,6 +261,7 @@ public:
         this->Points->SetDataTypeToDouble(); // keep double-precision coordinates exact
       }
     }
+    this->planExtraArrays();
     ValueSource source(this->Text, dataStart, this->Format);
     for (const Element& element : this->Elements)
     {
@@ -280,6 +283,84 @@ public:
   }
 
 private:
+  static bool isKnownVertexProperty(const std::string& n)
+  {
+    for (const char* known : {"x", "y", "z", "nx", "ny", "nz", "u", "v", "s", "t", "texture_u",
+                              "texture_v", "texture_s", "texture_t"})
+    {
+      if (n == known)
+      {
+        return true;
+      }
+    }
+    return false;
+  }
+
+  // The vertex properties beyond positions, normals and texture coordinates become point
+  // arrays named as the property; three in a row named NAME_x, NAME_y, NAME_z make one
+  // 3-component array NAME (a vector field).
+  void planExtraArrays()
+  {
+    const std::vector<Property>& properties = this->find("vertex")->properties;
+    this->ExtraSlot.assign(properties.size(), {-1, 0});
+    for (size_t i = 0; i < properties.size(); ++i)
+    {
+      const std::string& n = properties[i].name;
+      if (properties[i].isList || isKnownVertexProperty(n))
+      {
+        continue;
+      }
+      const std::string stem = n.size() > 2 ? n.substr(0, n.size() - 2) : std::string();
+      const auto named = [&](size_t k, const char* suffix) {
+        return k < properties.size() && !properties[k].isList &&
+               properties[k].name == stem + suffix;
+      };
+      const bool vector =
+          !stem.empty() && named(i, "_x") && named(i + 1, "_y") && named(i + 2, "_z");
+      // Float unless a value might not fit one exactly (double, 32-bit integers): a file of
+      // byte-sized properties grows at most fourfold in memory.
+      bool wide = false;
+      for (size_t k = i; k < i + (vector ? 3 : 1); ++k)
+      {
+        const PlyType type = properties[k].type;
+        wide =
+            wide || type == PlyType::Float64 || type == PlyType::Int32 || type == PlyType::UInt32;
+      }
+      vtkSmartPointer<vtkDataArray> array;
+      if (wide)
+      {
+        array = vtkSmartPointer<vtkDoubleArray>::New();
+      }
+      else
+      {
+        array = vtkSmartPointer<vtkFloatArray>::New();
+      }
+      const int slot = static_cast<int>(this->Extra.size());
+      if (vector)
+      {
+        array->SetName(stem.c_str());
+        array->SetNumberOfComponents(3);
+        for (int c = 0; c < 3; ++c)
+        {
+          this->ExtraSlot[i + size_t(c)] = {slot, c};
+        }
+        i += 2;
+      }
+      else
+      {
+        array->SetName(n.c_str());
+        array->SetNumberOfComponents(1);
+        this->ExtraSlot[i] = {slot, 0};
+      }
+      this->Extra.push_back(array);
+    }
+    this->ExtraTuple.resize(this->Extra.size());
+    for (size_t a = 0; a < this->Extra.size(); ++a)
+    {
+      this->ExtraTuple[a].assign(size_t(this->Extra[a]->GetNumberOfComponents()), 0.0);
+    }
+  }
+
   [[noreturn]] void fail(const std::string& reason) const { throw errorAbout(this->Path, reason); }
 
   // Returns the offset of the first data byte.
@@ -466,8 +547,9 @@ private:
     int normalParts = 0;
     int uvParts = 0;
     bool faceRead = false;
-    for (const Property& property : element.properties)
+    for (size_t p = 0; p < element.properties.size(); ++p)
     {
+      const Property& property = element.properties[p];
       if (property.isList)
       {
         const double count = source.read(property.countType);
@@ -508,7 +590,12 @@ private:
         continue;
       }
       const std::string& n = property.name;
-      if (n == "x" || n == "y" || n == "z")
+      if (&element == this->find("vertex") && this->ExtraSlot[p].first >= 0)
+      {
+        this->ExtraTuple[size_t(this->ExtraSlot[p].first)][size_t(this->ExtraSlot[p].second)] =
+            value;
+      }
+      else if (n == "x" || n == "y" || n == "z")
       {
         xyz[n[0] - 'x'] = value;
       }
@@ -533,6 +620,10 @@ private:
       this->Points->InsertNextPoint(xyz);
       this->Normals->InsertNextTuple(normal);
       this->TCoords->InsertNextTuple(uv);
+      for (size_t a = 0; a < this->Extra.size() && &element == this->find("vertex"); ++a)
+      {
+        this->Extra[a]->InsertNextTuple(this->ExtraTuple[a].data());
+      }
       this->AllNormals = this->AllNormals && normalParts == 3;
       this->AllTCoords = this->AllTCoords && uvParts == 2;
     }
@@ -554,6 +645,13 @@ private:
       this->TCoords->SetName("TCoords");
       polyData->GetPointData()->SetTCoords(this->TCoords);
     }
+    if (anyVertex)
+    {
+      for (vtkDataArray* extra : this->Extra)
+      {
+        polyData->GetPointData()->AddArray(extra);
+      }
+    }
     return polyData;
   }
 
@@ -568,6 +666,9 @@ private:
   vtkNew<vtkFloatArray> TCoords;
   bool AllNormals = true;
   bool AllTCoords = true;
+  std::vector<vtkSmartPointer<vtkDataArray>> Extra; // the arrays of planExtraArrays
+  std::vector<std::pair<int, int>> ExtraSlot;  // per vertex property: (array, component) or -1
+  std::vector<std::vector<double>> ExtraTuple; // the current vertex's values per array
 };
 } // namespace
 

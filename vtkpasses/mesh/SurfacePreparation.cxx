@@ -156,12 +156,17 @@ std::vector<std::string> SurfaceReport::notes() const
                   " mesh tangents were NaN, zero or along the normal; all tangents regenerated");
   }
   out.push_back("tangents: " + tangentSource);
-  if (fallbackTangents > 0)
+  if (nonFiniteFieldTangents > 0)
+  {
+    out.push_back(std::to_string(nonFiniteFieldTangents) +
+                  " vertices where the tangent field is NaN or Inf got a fixed fallback tangent");
+  }
+  if (fallbackTangents - nonFiniteFieldTangents > 0)
   {
     out.push_back(
-        std::to_string(fallbackTangents) +
-        " vertices where the brushing direction is along the normal (or on the axis) got a fixed "
-        "fallback tangent");
+        std::to_string(fallbackTangents - nonFiniteFieldTangents) +
+        " vertices where the brushing direction is along the normal, zero (or on the axis) got a "
+        "fixed fallback tangent");
   }
   return out;
 }
@@ -266,6 +271,7 @@ PreparedSurface prepareSurface(vtkPolyData* mesh, const SurfaceOptions& options,
     pd->SetTangents(nullptr);
     const TangentStats stats = computeBrushingTangents(surface, model, subject);
     report.fallbackTangents = stats.fallbackPoints;
+    report.nonFiniteFieldTangents = stats.nonFinitePoints;
     report.tangentSource = toString(model);
   }
   prepared.polyData = surface;

@@ -25,7 +25,9 @@
 //           (linear brushing along X), the common brushed-metal look.
 //   uv      the mesh's own tangents when all are valid, else computed from the UVs; with
 //           neither, an aniso::Error (the user asked for something the mesh cannot give).
-//   axis, around, radial, face-u, face-v   always generated from the model.
+//   axis, around, radial, face-u, face-v, array:NAME   always generated from the model.
+// Every other point array of the mesh (scalar and vector fields) is kept, and carried to the
+// vertices that splitting adds; cell arrays are kept per triangle.
 // A mesh tangent is invalid when it is not finite or its part orthogonal to the normal is
 // shorter than 1e-3 of it (within 0.06 degrees of the normal); one invalid tangent makes the
 // whole field be regenerated, since a half-kept field would have visible discontinuities.
@@ -58,6 +60,7 @@ struct SurfaceReport
   std::string tangentSource;       // "mesh" or a brushing model spelled as on the CLI
   int64_t invalidMeshTangents = 0; // mesh tangents that forced a regeneration
   int64_t fallbackTangents = 0;    // points with the deterministic fallback tangent
+  int64_t nonFiniteFieldTangents = 0; // of those, where array:NAME's field was NaN or Inf
 
   std::vector<std::string> notes() const; // one sentence per thing worth telling the user
 };

@@ -44,8 +44,10 @@
 #include <vtkPointData.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
+#include <vtkUnstructuredGrid.h>
 #include <vtkXMLMultiBlockDataReader.h>
 #include <vtkXMLPolyDataReader.h>
+#include <vtkXMLUnstructuredGridReader.h>
 
 namespace aniso
 {
@@ -303,9 +305,11 @@ ObjStatements scanObjStatements(const std::string& path)
 // coordinates when the file has fewer vt than v lines and every face gives the vertex's own
 // index) are dropped, each with a warning (WHAT names the part, or is empty): they cannot be cut
 // into parts, and VTK's XML reader, which reads the parts back in the application, empties a
-// piece that holds one. Cell data go too (sanitizeSurface drops them anyway).
+// piece that holds one. Cell arrays without one value per cell go the same way; with
+// KEEP_CELL_DATA false (an OBJ about to be cut into parts, whose cells the cut regroups) all
+// cell data go.
 void dropMalformedArrays(vtkPolyData* polyData, const std::string& what,
-                         std::vector<std::string>& warnings)
+                         std::vector<std::string>& warnings, bool keepCellData = true)
 {
   const vtkIdType pointCount = polyData->GetNumberOfPoints();
   vtkPointData* pd = polyData->GetPointData();
@@ -321,7 +325,25 @@ void dropMalformedArrays(vtkPolyData* polyData, const std::string& what,
       pd->RemoveArray(a);
     }
   }
-  polyData->GetCellData()->Initialize();
+  vtkCellData* cd = polyData->GetCellData();
+  if (!keepCellData)
+  {
+    cd->Initialize();
+    return;
+  }
+  const vtkIdType cellCount = polyData->GetNumberOfCells();
+  for (int a = cd->GetNumberOfArrays() - 1; a >= 0; --a)
+  {
+    vtkAbstractArray* array = cd->GetAbstractArray(a);
+    if (array && (array->GetNumberOfTuples() != cellCount || array->GetNumberOfComponents() < 1))
+    {
+      const std::string name = array->GetName() ? array->GetName() : "";
+      warnings.push_back((what.empty() ? "" : what + ": ") + "cell attribute '" + name + "' has " +
+                         std::to_string(array->GetNumberOfTuples()) + " values for " +
+                         std::to_string(cellCount) + " cells: dropped");
+      cd->RemoveArray(a);
+    }
+  }
 }
 
 // INPUT's vertex, line and polygon cells (strips: none from vtkOBJReader) as BLOCKS polydata,
@@ -600,7 +622,7 @@ std::vector<ReaderBlock> readObjBlocks(const std::string& path, const VtkMessage
                                        std::vector<std::string>& warnings)
 {
   vtkSmartPointer<vtkPolyData> whole = readObj(path, capture);
-  dropMalformedArrays(whole, std::string(), warnings);
+  dropMalformedArrays(whole, std::string(), warnings, false);
   const ObjStatements statements = scanObjStatements(path);
   ObjMaterials materials(path, statements, warnings);
   // The file as one part: its material when all its cells use one.
@@ -760,6 +782,19 @@ vtkSmartPointer<vtkPolyData> readWithVtk(const std::string& path, const std::str
   if (ext == ".vtk")
   {
     return readLegacy(path, capture);
+  }
+  if (ext == ".vtu")
+  {
+    vtkNew<vtkXMLUnstructuredGridReader> reader;
+    reader->SetFileName(path.c_str());
+    reader->Update();
+    throwIfReaderFailed(path, reader, capture);
+    vtkDataSet* grid = reader->GetOutput();
+    if (!grid)
+    {
+      throw errorAbout(path, "not a VTK unstructured grid");
+    }
+    return surfaceOf(grid, path, capture);
   }
   if (ext == ".vtm")
   {

@@ -1,6 +1,7 @@
 #pragma once
 // The formats VTK's own readers read: .obj (vtkOBJReader), .vtp (XML polydata), .vtk (legacy, any
-// dataset: non-polygonal ones reduced to their outer surface), .vtm (vtkXMLMultiBlockDataReader:
+// dataset: non-polygonal ones reduced to their outer surface), .vtu (XML unstructured grid: its
+// outer surface, vtkDataSetSurfaceFilter, with the grid's point and cell arrays), .vtm (vtkXMLMultiBlockDataReader:
 // every leaf dataset, non-polygonal ones reduced to their outer surface like .vtk) and
 // .gltf/.glb (GltfReader.h, through tinygltf: parts with their materials and placements). These
 // readers are not hardened against hostile files (VTK 9.1's

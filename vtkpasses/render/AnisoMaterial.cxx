@@ -246,9 +246,9 @@ public:
 
   void updateVariant()
   {
-    dropped = droppedMaps(settings, mesh.tcoords);
+    dropped = droppedMaps(settings, mesh.tcoords && !mesh.lines);
     const MaterialVariant v =
-        materialVariant(resolved(), mesh.normals, mesh.tangents, mesh.tcoords);
+        materialVariant(resolved(), mesh.normals, mesh.tangents, mesh.tcoords, mesh.lines);
     if (!hook.installed() || installed != v)
     {
       install(v);
@@ -264,6 +264,10 @@ public:
     hooked.fragment = {{tags::kFragmentDec, code.fragmentDeclarations},
                        {tags::kFragmentUniformFlow, code.fragmentUniformFlow},
                        {tags::kFragmentImpl, code.fragmentImplementation}};
+    if (v.lines)
+    {
+      hooked.geometry = lineGeometryCode("aniso");
+    }
     hooked.attributes = meshAttributes("aniso", {v.normals, v.tangents, v.tcoords});
     hooked.uniform = "anisoSampleCount";
     hook.install(hooked);

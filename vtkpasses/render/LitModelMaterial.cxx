@@ -63,6 +63,10 @@ std::string litVariantDefines(const LitModelVariant& v)
   {
     d += "#define LIT_HAVE_TCOORDS\n";
   }
+  if (v.lines)
+  {
+    d += "#define LIT_LINE\n";
+  }
   return d;
 }
 
@@ -89,7 +93,10 @@ public:
 
   void updateVariant()
   {
-    const LitModelVariant v{settings.model, mesh.normals, mesh.tangents, mesh.tcoords};
+    // A line set's frame is its tangent and the view; its maps are the uniform texel's.
+    const bool lines = mesh.lines && mesh.tangents;
+    const LitModelVariant v{settings.model, mesh.normals && !lines, mesh.tangents,
+                            mesh.tcoords && !lines, lines};
     if (hook.installed() && installed == v)
     {
       return;
@@ -101,6 +108,10 @@ public:
     code.fragment = {{tags::kFragmentDec, defines + shaders::kLitFsDec},
                      {tags::kFragmentUniformFlow, shaders::kLitFsUniformFlow},
                      {tags::kFragmentImpl, shaders::kLitFsImpl}};
+    if (v.lines)
+    {
+      code.geometry = lineGeometryCode("lit");
+    }
     code.attributes = meshAttributes("lit", {v.normals, v.tangents, v.tcoords});
     code.uniform = "litLightCount";
     hook.install(code);

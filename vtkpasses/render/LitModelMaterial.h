@@ -36,10 +36,11 @@ struct LitModelVariant
   bool normals = false;
   bool tangents = false;
   bool tcoords = false;
+  bool lines = false; // an illuminated line set (LIT_LINE; docs/METHOD.md, "Lines")
   bool operator==(const LitModelVariant& o) const
   {
     return model == o.model && normals == o.normals && tangents == o.tangents &&
-           tcoords == o.tcoords;
+           tcoords == o.tcoords && lines == o.lines;
   }
   bool operator!=(const LitModelVariant& o) const { return !(*this == o); }
 };

@@ -9,14 +9,20 @@ bool MaterialVariant::operator==(const MaterialVariant& o) const
   return method == o.method && filtered == o.filtered && halfVectors == o.halfVectors &&
          environmentMis == o.environmentMis && environmentSources == o.environmentSources &&
          normals == o.normals && tangents == o.tangents &&
-         tcoords == o.tcoords && normalMap == o.normalMap && quaternionMap == o.quaternionMap &&
+         tcoords == o.tcoords && lines == o.lines && normalMap == o.normalMap && quaternionMap == o.quaternionMap &&
          tprMap == o.tprMap && heightMap == o.heightMap && albedoMap == o.albedoMap &&
          occlusionMap == o.occlusionMap && metallicMap == o.metallicMap;
 }
 
 MaterialVariant materialVariant(const MaterialSettings& settings, bool normals, bool tangents,
-                                bool tcoords)
+                                bool tcoords, bool lines)
 {
+  if (lines && tangents)
+  {
+    // A line's frame is its tangent and the view (ANISO_LINE); it has no surface to map.
+    normals = false;
+    tcoords = false;
+  }
   MaterialVariant v;
   v.method = settings.method;
   v.filtered = settings.filtered;
@@ -28,6 +34,7 @@ MaterialVariant materialVariant(const MaterialSettings& settings, bool normals, 
   v.normals = normals;
   v.tangents = tangents;
   v.tcoords = tcoords;
+  v.lines = lines && tangents;
   v.normalMap = tcoords && settings.normalMap;
   v.quaternionMap = tcoords && settings.quaternionMap;
   v.tprMap = tcoords && settings.tprMap;
@@ -62,6 +69,7 @@ std::string variantDefines(const MaterialVariant& v)
   define(v.normals, "ANISO_HAVE_NORMALS");
   define(v.tangents, "ANISO_HAVE_TANGENTS");
   define(v.tcoords, "ANISO_HAVE_TCOORDS");
+  define(v.lines, "ANISO_LINE");
   define(v.normalMap, "ANISO_NORMAL_MAP");
   define(v.quaternionMap, "ANISO_QUATERNION_MAP");
   define(v.tprMap, "ANISO_TPR_MAP");

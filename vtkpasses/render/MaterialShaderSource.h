@@ -24,6 +24,7 @@ struct MaterialVariant
   bool normals = false;        // mesh attributes present
   bool tangents = false;
   bool tcoords = false;
+  bool lines = false;     // an illuminated line set (ANISO_LINE: t along the line, n facing v)
   bool normalMap = false; // maps in use (only with tcoords)
   bool quaternionMap = false;
   bool tprMap = false;
@@ -39,8 +40,9 @@ struct MaterialVariant
 // The variant of SETTINGS on a mesh with the given arrays. Maps need texture coordinates;
 // without them they are left out (see droppedMaps). SETTINGS' environment sampling is taken as
 // resolved (EnvironmentLighting::resolveSampling): Auto draws as Off here.
+// A line set (LINES) takes no maps and no normals: its frame is the line's (docs/METHOD.md).
 MaterialVariant materialVariant(const MaterialSettings& settings, bool normals, bool tangents,
-                                bool tcoords);
+                                bool tcoords, bool lines = false);
 // True when SETTINGS asks for maps that the mesh cannot use (no texture coordinates).
 bool droppedMaps(const MaterialSettings& settings, bool tcoords);
 

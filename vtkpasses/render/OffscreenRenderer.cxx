@@ -54,6 +54,14 @@ void validate(const RenderSettings& s, const std::vector<RenderPart>& parts)
       continue;
     }
     anyVisible = true;
+    try
+    {
+      validateLineStyle(part.lineStyle);
+    }
+    catch (const Error& e)
+    {
+      throw several ? errorAbout(partSubject(part, i), e.what()) : e;
+    }
     if (!part.surface || part.surface->GetNumberOfPoints() == 0 ||
         part.surface->GetNumberOfCells() == 0)
     {
@@ -197,6 +205,7 @@ RenderResult renderOffscreen(const RenderSettings& s)
     actors[i] = vtkSmartPointer<vtkActor>::New();
     actors[i]->SetMapper(mapper);
     setDrawingFrame(actors[i], drawing); // for the point lights of the materials installed on it
+    setLineStyle(actors[i], parts[i].lineStyle); // for a line set's width
     renderer->AddActor(actors[i]);
   }
 

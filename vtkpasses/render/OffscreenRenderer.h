@@ -15,6 +15,7 @@
 #include "core/env/environment.h"
 #include "core/image/image.h"
 #include "vtkpasses/render/DisplaySettings.h"
+#include "vtkpasses/render/LineStyle.h"
 #include "vtkpasses/render/MaterialSettings.h"
 #include "vtkpasses/render/MaterialShaderSource.h"
 #include "vtkpasses/render/ViewSettings.h"
@@ -46,8 +47,10 @@ struct RenderPart
 {
   std::string name; // for messages and RenderResult::parts
   // A prepared surface (SurfacePreparation.h): triangles with "Normals", and "Tangents",
-  // "TCoords" when available.
+  // "TCoords" when available; or a line set (vtkpasses/mesh/LineSet.h: polylines with
+  // "Tangents"), drawn as illuminated lines of `lineStyle` by the same materials.
   vtkSmartPointer<vtkPolyData> surface;
+  LineStyle lineStyle; // for a line set
   MaterialSettings material;
   bool visible = true; // a hidden part is not drawn at all (and may have no surface)
   // When set, this part is shaded by it instead of `material` and of

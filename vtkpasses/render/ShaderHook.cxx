@@ -1,6 +1,7 @@
 #include "vtkpasses/render/ShaderHook.h"
 
 #include "core/error.h"
+#include "vtkpasses/render/LineStyle.h"
 #include "vtkpasses/render/MaterialShaderSource.h"
 #include "vtkpasses/render/RendererMatrices.h"
 
@@ -42,7 +43,33 @@ MeshArrays meshArraysOf(vtkPolyData* poly)
   arrays.normals = hasPointArray(poly, kNormalsArray, 3);
   arrays.tangents = hasPointArray(poly, kTangentsArray, 3);
   arrays.tcoords = hasPointArray(poly, kTCoordsArray, 2);
+  arrays.lines = poly->GetNumberOfLines() > 0 && poly->GetNumberOfPolys() == 0 &&
+                 poly->GetNumberOfStrips() == 0;
   return arrays;
+}
+
+std::vector<std::pair<std::string, std::string>> lineGeometryCode(const std::string& p)
+{
+  const std::string declarations =
+      "in vec3 " + p + "TangentWCVSOut[];\n" + "out vec3 " + p + "TangentWCGSOut;\n" + "in vec4 " +
+      p + "ClipPositionVSOut[];\n" + "out vec4 " + p + "ClipPositionGSOut;\n" + "uniform vec2 " +
+      p + "LineWorldWidthClip; // LineStyle.h; (0, 0): VTK's width in pixels\n";
+  // Before VTK's loop: the width of each end in normalised device coordinates, VTK's own
+  // (pixels) or the world width's projection there; VTK's code below reads it by its name.
+  const std::string start = "vec2 " + p + "LineWidthNVC[2];\n" + "for (int k = 0; k < 2; ++k)\n" +
+                            "{\n  " + p + "LineWidthNVC[k] = " + p +
+                            "LineWorldWidthClip.x > 0.0 ? " + p +
+                            "LineWorldWidthClip / gl_in[k].gl_Position.w : lineWidthNVC;\n}\n" +
+                            "#define lineWidthNVC " + p + "LineWidthNVC[i]\n";
+  // Inside VTK's loop over the quad's corners j (of the segment's end i), where `normal` is the
+  // segment's screen-space normal: the corner as VTK places it.
+  const std::string implementation =
+      p + "TangentWCGSOut = " + p + "TangentWCVSOut[i];\n" + p +
+      "ClipPositionGSOut = vec4(gl_in[i].gl_Position.xy + (lineWidthNVC * normal) * "
+      "(float((j + 1) % 2) - 0.5) * gl_in[i].gl_Position.w, gl_in[i].gl_Position.zw);\n";
+  return {{"//VTK::Normal::Dec", declarations},
+          {"//VTK::Normal::Start", start},
+          {"//VTK::Normal::Impl", implementation}};
 }
 
 std::vector<std::pair<std::string, std::string>> meshAttributes(const std::string& prefix,
@@ -147,6 +174,10 @@ public:
       for (const auto& [tag, text] : code.fragment)
       {
         sp->ClearFragmentShaderReplacement(tag, true);
+      }
+      for (const auto& [tag, text] : code.geometry)
+      {
+        sp->ClearGeometryShaderReplacement(tag, true);
       }
       actor->Modified();
     }
@@ -280,6 +311,13 @@ void ShaderHook::setTransforms(vtkShaderProgram* program, const std::string& pre
       det != 0.0 && std::isfinite(det) ? glm::transpose(glm::inverse(toWorld)) : toWorld;
   setUniformMatrix(program, (prefix + "DirectionToWorld").c_str(), toWorld);
   setUniformMatrix(program, (prefix + "NormalToWorld").c_str(), normalToWorld);
+  const std::string lineWidth = prefix + "LineWorldWidthClip";
+  if (program->IsUniformUsed(lineWidth.c_str()))
+  {
+    float clip[2];
+    lineWorldWidthClip(impl_->actor, impl_->renderer, clip);
+    program->SetUniform2f(lineWidth.c_str(), clip);
+  }
 }
 
 void ShaderHook::install(const ShaderCode& code)
@@ -298,6 +336,10 @@ void ShaderHook::install(const ShaderCode& code)
   for (const auto& [tag, text] : code.fragment)
   {
     sp->AddFragmentShaderReplacement(tag, true, tag + "\n" + text, false);
+  }
+  for (const auto& [tag, text] : code.geometry)
+  {
+    sp->AddGeometryShaderReplacement(tag, true, tag + "\n" + text, false);
   }
   for (const auto& [attribute, array] : code.attributes)
   {

@@ -34,6 +34,8 @@ struct ShaderCode
   // (tag, code inserted after it), e.g. {tags::kFragmentImpl, "..."}.
   std::vector<std::pair<std::string, std::string>> vertex;
   std::vector<std::pair<std::string, std::string>> fragment;
+  // Geometry shader: applies only where VTK draws with one (wide lines, lineGeometryCode).
+  std::vector<std::pair<std::string, std::string>> geometry;
   // (vertex attribute, point array) pairs the code reads.
   std::vector<std::pair<std::string, std::string>> attributes;
   // A uniform the code uses: a program without it (another pass's) is not the code's, and the
@@ -48,6 +50,7 @@ struct MeshArrays
   bool normals = false;
   bool tangents = false;
   bool tcoords = false;
+  bool lines = false; // a line set (vtkpasses/mesh/LineSet.h): polylines and no faces
   bool all() const { return normals && tangents && tcoords; }
 };
 MeshArrays meshArraysOf(vtkPolyData* poly);
@@ -55,6 +58,15 @@ MeshArrays meshArraysOf(vtkPolyData* poly);
 // names, for ShaderCode::attributes.
 std::vector<std::pair<std::string, std::string>> meshAttributes(const std::string& prefix,
                                                                 const MeshArrays& used);
+
+// Illuminated lines: VTK 9.1 draws lines wider than the hardware's widest through its own
+// geometry shader (vtkPolyDataWideLineGS), which expands each segment into a screen-facing quad
+// of the actor's line width in pixels and passes only VTK's own varyings on. A line variant names
+// its two varyings PREFIX + "TangentWCVSOut" (vec3) and PREFIX + "ClipPositionVSOut" (vec4)
+// (VTK renames VSOut to GSOut in the fragment shader when a geometry shader runs); this code,
+// inserted in that geometry shader, passes them on: the tangent of the segment's end, and the
+// clip position of the quad's own corner (the fragment's point on the quad, for its view ray).
+std::vector<std::pair<std::string, std::string>> lineGeometryCode(const std::string& prefix);
 
 class ShaderHook
 {

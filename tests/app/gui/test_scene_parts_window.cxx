@@ -388,6 +388,70 @@ private slots:
     QCOMPARE(window.view()->partCount(), 2);
   }
 
+  // A file of polylines only (a hand-written VTK legacy file: a circle of radius 1 in the plane
+  // y = 0, 64 segments) opens as its line part: listed in the dock, drawn as lines (no faces,
+  // its tangents along the line), brighter on the circle than at its empty centre; a wider
+  // line-width covers more of a square on the circle.
+  void aFileOfLinesIsALinePartInTheView()
+  {
+    QTemporaryDir dir;
+    const QString vtk = dir.filePath("ring.vtk");
+    {
+      QFile f(vtk);
+      QVERIFY(f.open(QIODevice::WriteOnly));
+      QByteArray text = "# vtk DataFile Version 3.0\nring\nASCII\nDATASET POLYDATA\n"
+                        "POINTS 64 double\n";
+      for (int i = 0; i < 64; ++i)
+      {
+        const double a = 2.0 * M_PI * i / 64.0;
+        text += QByteArray::number(std::cos(a), 'g', 17) + " 0 " +
+                QByteArray::number(std::sin(a), 'g', 17) + "\n";
+      }
+      text += "LINES 1 66\n65";
+      for (int i = 0; i <= 64; ++i)
+      {
+        text += " " + QByteArray::number(i % 64);
+      }
+      text += "\n";
+      f.write(text);
+    }
+    aniso::MainWindow window;
+    window.setErrorDialogs(false);
+    window.view()->setSettleMs(30);
+    window.view()->setFrameBudgetMs(0);
+    window.model()->setValues({{"samples", numberValue(4.0)},
+                               {"target-samples", numberValue(4.0)},
+                               {"background", textValue("color")},
+                               {"background-color", aniso::colorValue(0.0, 0.0, 0.0)}});
+    window.resize(900, 700);
+    window.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&window));
+    QVERIFY(window.openMesh(vtk));
+    aniso::SceneModel* model = window.model();
+    QCOMPARE(model->parts().size(), std::size_t(1));
+    QCOMPARE(model->parts()[0].block, std::string("ring lines"));
+    QCOMPARE(window.sceneDock()->tree()->topLevelItemCount(), 1);
+    aniso::SceneView* view = window.view();
+    vtkPolyData* drawn = view->partDrawnSurface(0);
+    QVERIFY(drawn);
+    QCOMPARE(drawn->GetNumberOfLines(), vtkIdType(1));
+    QCOMPARE(drawn->GetNumberOfPolys(), vtkIdType(0));
+    QVERIFY(drawn->GetPointData()->GetArray("Tangents"));
+
+    QTRY_VERIFY_WITH_TIMEOUT(settled(window), 60000);
+    const auto onLine = displayOf(view, {1.0, 0.0, 0.0});
+    const auto centre = displayOf(view, {0.0, 0.0, 0.0});
+    const auto lit = meanAround(view, onLine);
+    const auto empty = meanAround(view, centre);
+    QVERIFY2(lit[0] + lit[1] + lit[2] > empty[0] + empty[1] + empty[2] + 3.0,
+             "the line is not drawn");
+    window.editor()->edit("line-width", numberValue(6.0));
+    QTRY_VERIFY_WITH_TIMEOUT(settled(window), 60000);
+    const auto wide = meanAround(view, onLine);
+    QVERIFY2(std::abs(wide[0] + wide[1] + wide[2] - (lit[0] + lit[1] + lit[2])) > 3.0,
+             "the line's width did not change what it covers");
+  }
+
   // A placed part is drawn where its placement puts it, and its tangent model's axis turns with
   // it: the same sphere file twice, the second shifted by 4 along x and turned 90 degrees about z,
   // with tangents along the part's x axis (so along the scene's y).

@@ -11,7 +11,13 @@
 
 #include <cmath>
 #include <gtest/gtest.h>
+#include <algorithm>
+#include <limits>
+#include <vector>
+#include <vtkCellData.h>
+#include <vtkDoubleArray.h>
 #include <vtkFloatArray.h>
+#include <vtkPointData.h>
 #include <vtkNew.h>
 
 namespace aniso
@@ -273,6 +279,142 @@ TEST(BrushingTangents, FaceTangentsComeFromTheBRepArrays)
   }
 }
 
+// A point array "field" on the sphere: (-y, x, 0) (the field of around:0,0,1) plus a part
+// along the normal, which the projection removes; the tangents must be exactly around's
+// parallels. Poles (where the field is zero), NaN and Inf entries and entries along the normal
+// take the fallback, each counted, and no tangent is NaN.
+TEST(BrushingTangents, ArrayFieldIsProjectedIntoTheTangentPlane)
+{
+  vtkSmartPointer<vtkPolyData> sphere = makeSphere(48, 24);
+  vtkDataArray* normals = sphere->GetPointData()->GetNormals();
+  vtkNew<vtkDoubleArray> field;
+  field->SetName("flow");
+  field->SetNumberOfComponents(3);
+  field->SetNumberOfTuples(sphere->GetNumberOfPoints());
+  int zero = 0;
+  for (vtkIdType i = 0; i < sphere->GetNumberOfPoints(); ++i)
+  {
+    const glm::dvec3 p = test::point(sphere, i);
+    const glm::dvec3 n = test::vec3(normals, i);
+    const glm::dvec3 v = isPole(p) ? glm::dvec3(0.0) : glm::dvec3(-p.y, p.x, 0.0) + 3.0 * n;
+    zero += isPole(p) ? 1 : 0;
+    field->SetTuple3(i, v.x, v.y, v.z);
+  }
+  // Three bad entries away from the poles: NaN, Inf, and the normal itself.
+  std::vector<vtkIdType> bad;
+  for (vtkIdType i = 0; i < sphere->GetNumberOfPoints() && bad.size() < 3; i += 97)
+  {
+    if (!isPole(test::point(sphere, i)))
+    {
+      bad.push_back(i);
+    }
+  }
+  ASSERT_EQ(bad.size(), 3u);
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  field->SetTuple3(bad[0], 1.0, nan, 0.0);
+  field->SetTuple3(bad[1], std::numeric_limits<double>::infinity(), 0.0, 0.0);
+  const glm::dvec3 n2 = test::vec3(normals, bad[2]);
+  field->SetTuple3(bad[2], 2.0 * n2.x, 2.0 * n2.y, 2.0 * n2.z);
+  sphere->GetPointData()->AddArray(field);
+
+  vtkSmartPointer<vtkPolyData> reference = makeSphere(48, 24);
+  computeBrushingTangents(reference, model("around:0,0,1"), "sphere");
+  const TangentStats stats = computeBrushingTangents(sphere, model("array:flow"), "sphere");
+  expectUnitAndOrthogonal(sphere);
+  EXPECT_EQ(stats.points, sphere->GetNumberOfPoints());
+  EXPECT_EQ(stats.fallbackPoints, zero + 3);
+  EXPECT_EQ(stats.nonFinitePoints, 2);
+  vtkDataArray* tangents = sphere->GetPointData()->GetTangents();
+  for (vtkIdType i = 0; i < sphere->GetNumberOfPoints(); ++i)
+  {
+    const glm::dvec3 t = test::vec3(tangents, i);
+    ASSERT_TRUE(std::isfinite(t.x) && std::isfinite(t.y) && std::isfinite(t.z)) << i;
+    if (isPole(test::point(sphere, i)) || std::find(bad.begin(), bad.end(), i) != bad.end())
+    {
+      continue;
+    }
+    const glm::dvec3 expected = test::vec3(reference->GetPointData()->GetTangents(), i);
+    EXPECT_NEAR(glm::length(t - expected), 0.0, 1e-6) << "point " << i;
+  }
+}
+
+// A cell array: the plate's faces each carry (-y, x, 0) at their centroid (the field of a
+// rotation about Z). Averaged to the points by corner angle, the field at a vertex is the
+// rotation field at a point near it, so the tangent runs within a few degrees of around's;
+// the centre vertex, where the faces' vectors cancel, takes the fallback.
+TEST(BrushingTangents, CellArrayIsAveragedToThePoints)
+{
+  vtkSmartPointer<vtkPolyData> plate = makePlate(16);
+  vtkNew<vtkFloatArray> field;
+  field->SetName("swirl");
+  field->SetNumberOfComponents(3);
+  field->SetNumberOfTuples(plate->GetNumberOfCells());
+  for (vtkIdType c = 0; c < plate->GetNumberOfCells(); ++c)
+  {
+    const vtkIdType* ids = nullptr;
+    vtkIdType count = 0;
+    plate->GetCellPoints(c, count, ids);
+    glm::dvec3 centroid(0.0);
+    for (vtkIdType k = 0; k < count; ++k)
+    {
+      centroid += test::point(plate, ids[k]) / double(count);
+    }
+    field->SetTuple3(c, -centroid.y, centroid.x, 0.0);
+  }
+  plate->GetCellData()->AddArray(field);
+  const TangentStats stats = computeBrushingTangents(plate, model("array:swirl"), "plate");
+  expectUnitAndOrthogonal(plate);
+  EXPECT_EQ(stats.nonFinitePoints, 0);
+  EXPECT_LE(stats.fallbackPoints, 1);
+  for (vtkIdType i = 0; i < plate->GetNumberOfPoints(); ++i)
+  {
+    const glm::dvec3 p = test::point(plate, i);
+    if (std::hypot(p.x, p.y) < 0.2)
+    {
+      continue;
+    }
+    const glm::dvec3 t = test::vec3(plate->GetPointData()->GetTangents(), i);
+    const glm::dvec3 around = glm::normalize(glm::dvec3(-p.y, p.x, 0.0));
+    EXPECT_GT(glm::dot(t, around), std::cos(15.0 * kPi / 180.0)) << "point " << i;
+  }
+}
+
+// array:NAME names what the mesh lacks: the error lists its vector arrays; a scalar array is
+// refused with its component count.
+TEST(BrushingTangents, ArrayModelErrorsNameTheArrays)
+{
+  vtkSmartPointer<vtkPolyData> plate = makePlate(4);
+  vtkNew<vtkFloatArray> velocity;
+  velocity->SetName("velocity");
+  velocity->SetNumberOfComponents(3);
+  velocity->SetNumberOfTuples(plate->GetNumberOfPoints());
+  velocity->Fill(1.0);
+  plate->GetPointData()->AddArray(velocity);
+  vtkNew<vtkFloatArray> pressure;
+  pressure->SetName("pressure");
+  pressure->SetNumberOfTuples(plate->GetNumberOfCells());
+  pressure->Fill(0.0);
+  plate->GetCellData()->AddArray(pressure);
+  const std::pair<const char*, const char*> cases[] = {
+      {"array:speed", "part.vtp: tangents 'array:speed': the mesh has no point or cell array "
+                      "'speed' (its vector arrays: velocity)"},
+      {"array:pressure", "part.vtp: tangents 'array:pressure': the array has 1 component, a "
+                         "direction needs 2 or 3 (its vector arrays: velocity)"},
+  };
+  for (const auto& [text, expected] : cases)
+  {
+    try
+    {
+      computeBrushingTangents(plate, model(text), "part.vtp");
+      ADD_FAILURE() << "accepted '" << text << "'";
+    }
+    catch (const Error& e)
+    {
+      EXPECT_EQ(std::string(e.what()), expected);
+    }
+  }
+}
+
 TEST(BrushingModelParsing, AcceptsEverySpellingAndRoundTrips)
 {
   EXPECT_EQ(model("uv").kind, BrushingKind::Uv);
@@ -292,7 +434,11 @@ TEST(BrushingModelParsing, AcceptsEverySpellingAndRoundTrips)
   // same model, one ulp off, before unit axes were kept as they are: a fuzzing finding).
   EXPECT_EQ(model("face-u").kind, BrushingKind::FaceU);
   EXPECT_EQ(model("face-v").kind, BrushingKind::FaceV);
-  for (const char* text : {"uv", "face-u", "face-v", "axis:0.6,0,0.8", "around:0,0,1@1,-2,3.5", "radial:1,2,3",
+  const BrushingModel field = model(" array:flow velocity ");
+  EXPECT_EQ(field.kind, BrushingKind::Array);
+  EXPECT_EQ(field.array, "flow velocity");
+  EXPECT_EQ(toString(field), "array:flow velocity");
+  for (const char* text : {"uv", "face-u", "face-v", "array:v", "axis:0.6,0,0.8", "around:0,0,1@1,-2,3.5", "radial:1,2,3",
                            "around:1,0,1@0.5,0,0", "axis:1,2,3", "axis:0.3,-0.4,0.5",
                            "around:7,1e-3,-2", "axis:1e-300,1e-300,1e-300"})
   {
@@ -301,6 +447,7 @@ TEST(BrushingModelParsing, AcceptsEverySpellingAndRoundTrips)
     EXPECT_EQ(again.kind, parsed.kind) << text;
     EXPECT_EQ(again.vector, parsed.vector) << text;
     EXPECT_EQ(again.centre, parsed.centre) << text;
+    EXPECT_EQ(again.array, parsed.array) << text;
   }
 }
 
@@ -308,9 +455,9 @@ TEST(BrushingModelParsing, RejectsMalformedSpellingsWithTheArgumentName)
 {
   const std::pair<const char*, const char*> cases[] = {
       {"", "--tangents: empty brushing model (expected "
-           "uv|axis:X,Y,Z|around:X,Y,Z[@CX,CY,CZ]|radial:X,Y,Z|face-u|face-v)"},
+           "uv|axis:X,Y,Z|around:X,Y,Z[@CX,CY,CZ]|radial:X,Y,Z|face-u|face-v|array:NAME)"},
       {"spiral:0,0,1", "--tangents: unknown brushing model 'spiral' (expected "
-                       "uv|axis:X,Y,Z|around:X,Y,Z[@CX,CY,CZ]|radial:X,Y,Z|face-u|face-v)"},
+                       "uv|axis:X,Y,Z|around:X,Y,Z[@CX,CY,CZ]|radial:X,Y,Z|face-u|face-v|array:NAME)"},
       {"axis", "--tangents: 'axis' needs X,Y,Z, as in axis:0,0,1"},
       {"axis:1,2", "--tangents: 'axis:1,2': the axis needs three comma-separated numbers X,Y,Z"},
       {"axis:1,2,3,", "--tangents: 'axis:1,2,3,': the axis needs three comma-separated numbers "
@@ -323,6 +470,8 @@ TEST(BrushingModelParsing, RejectsMalformedSpellingsWithTheArgumentName)
       {"uv:1,0,0", "--tangents: 'uv:1,0,0': uv takes no parameters"},
       {"face-u:1", "--tangents: 'face-u:1': face-u takes no parameters"},
       {"radial:", "--tangents: 'radial:': the point needs three comma-separated numbers X,Y,Z"},
+      {"array:", "--tangents: 'array:' needs the name of a vector array, as in array:velocity"},
+      {"array", "--tangents: 'array' needs the name of a vector array, as in array:velocity"},
   };
   for (const auto& [text, expected] : cases)
   {

@@ -217,9 +217,9 @@ TEST_F(MeshBlocksTest, VtmLeavesArePartsNamedByTheirMetadataAndAnEmptyOneIsAWarn
 {
   // Checks: one part per leaf in file order, named by NAME, with the triangle counts of the
   // sources (the tetrahedron grid by its surface), and a leaf without faces (a polyline: VTK's
-  // writer leaves out leaves without cells) skipped with one warning naming the file and the
-  // part. Reference: VTK's sources' own cells; the merged loadMesh of the same file holds their
-  // sum.
+  // writer leaves out leaves without cells) a line part of its own, "wire lines" (LineSet.h),
+  // with no warning. Reference: VTK's sources' own cells; the merged loadMesh of the same file
+  // holds the sum of the faces.
   vtkNew<vtkMultiBlockDataSet> tree;
   setBlock(tree, 0, sphere(), "ball");
   setBlock(tree, 1, cube(0, 0, 0), "box");
@@ -228,15 +228,16 @@ TEST_F(MeshBlocksTest, VtmLeavesArePartsNamedByTheirMetadataAndAnEmptyOneIsAWarn
   const std::string file = writeVtm(this->path("scene.vtm"), tree);
 
   const LoadedBlocks loaded = loadQuietly(file);
-  EXPECT_EQ(namesOf(loaded), (std::vector<std::string>{"ball", "box", "tetra"}));
-  EXPECT_EQ(trianglesOf(loaded), (std::vector<int64_t>{sphereTriangles(), 12, 4}));
-  EXPECT_EQ(loaded.warnings,
-            std::vector<std::string>{file + ": part wire: no faces (only 1 vertex or line cells)"});
+  EXPECT_EQ(namesOf(loaded), (std::vector<std::string>{"ball", "box", "tetra", "wire lines"}));
+  EXPECT_EQ(trianglesOf(loaded), (std::vector<int64_t>{sphereTriangles(), 12, 4, 0}));
+  EXPECT_TRUE(loaded.warnings.empty());
   for (const MeshBlock& block : loaded.blocks)
   {
     EXPECT_EQ(block.mesh.report.source, file);
   }
-  ASSERT_EQ(loaded.blocks.size(), 3u);
+  ASSERT_EQ(loaded.blocks.size(), 4u);
+  EXPECT_TRUE(loaded.blocks[3].lines);
+  EXPECT_EQ(loaded.blocks[3].mesh.report.lineSegments, 2);
   // The box keeps the source's bounds: [-1, 1] x [-2, 2] x [-3, 3].
   expectBounds(loaded.blocks[1].mesh.polyData, {-1, 1, -2, 2, -3, 3}, 1e-6);
   EXPECT_EQ(loadMesh(file).report.triangles, sphereTriangles() + 12 + 4);

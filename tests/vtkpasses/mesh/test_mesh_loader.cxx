@@ -499,10 +499,10 @@ TEST_F(MeshLoaderTest, FileProblemsAreReportedWithThePath)
             "is a directory, not a mesh file");
   EXPECT_EQ(this->loadError(this->write("empty.stl", "")), "empty file");
   EXPECT_EQ(this->loadError(this->write("mesh.xyz", boxObj())),
-            "unknown mesh format '.xyz' (expected *.obj *.ply *.stl *.off *.vtk *.vtp *.vtm *.gltf "
+            "unknown mesh format '.xyz' (expected *.obj *.ply *.stl *.off *.vtk *.vtp *.vtu *.vtm *.gltf "
             "*.glb *.step *.stp *.iges *.igs)");
   EXPECT_EQ(this->loadError(this->write("mesh", boxObj())),
-            "no file extension (expected *.obj *.ply *.stl *.off *.vtk *.vtp *.vtm *.gltf *.glb "
+            "no file extension (expected *.obj *.ply *.stl *.off *.vtk *.vtp *.vtu *.vtm *.gltf *.glb "
             "*.step *.stp *.iges *.igs)");
 }
 

@@ -59,6 +59,30 @@ TEST(MaterialShaderSource, MapsNeedTextureCoordinates)
   EXPECT_FALSE(droppedMaps(MaterialSettings{}, false));
 }
 
+// A line set (LineSet.h) is the line variant: its frame is the line's and the view's, so
+// normals and texture coordinates are not read and its maps are left out; without tangents
+// (no line direction) it stays a surface variant.
+TEST(MaterialShaderSource, LineSetsAreTheLineVariantWithoutMaps)
+{
+  MaterialSettings s;
+  s.tprMap = std::make_shared<const Image>(4, 4, 2);
+  const MaterialVariant v = materialVariant(s, true, true, true, true);
+  EXPECT_TRUE(v.lines);
+  EXPECT_TRUE(defines(v, "ANISO_LINE"));
+  EXPECT_TRUE(defines(v, "ANISO_HAVE_TANGENTS"));
+  EXPECT_FALSE(defines(v, "ANISO_HAVE_NORMALS"));
+  EXPECT_FALSE(defines(v, "ANISO_HAVE_TCOORDS"));
+  EXPECT_FALSE(defines(v, "ANISO_TPR_MAP"));
+  EXPECT_NE(v, materialVariant(s, false, true, false, false));
+  EXPECT_FALSE(materialVariant(s, false, false, false, true).lines);
+  // The line variant's varyings carry VTK's VSOut suffix in both stages (ShaderHook.h).
+  const MaterialShaderCode code = composeMaterialShaders(v);
+  EXPECT_NE(code.vertexDeclarations.find("#define anisoTangentWC anisoTangentWCVSOut"),
+            std::string::npos);
+  EXPECT_NE(code.fragmentDeclarations.find("#define anisoClipPosition anisoClipPositionVSOut"),
+            std::string::npos);
+}
+
 TEST(MaterialShaderSource, EachFeatureIsItsOwnDefine)
 {
   MaterialSettings s;

@@ -2,6 +2,12 @@
 // texel, the per-pixel frame, point and directional lights, and one model chosen by a #define
 // (LIT_MODEL_ASHIKHMIN_SHIRLEY, _BANKS, _BLINN_PHONG, _WARD or _HEIDRICH_SEIDEL). Each function
 // mirrors its CPU twin in core/brdf (same names in the comments).
+#ifdef LIT_LINE
+// A line set: varyings with VTK's VSOut suffix, passed on by its wide-line geometry shader
+// (ShaderHook.h, lineGeometryCode).
+#define litTangentWC litTangentWCVSOut
+#define litClipPosition litClipPositionVSOut
+#endif
 #ifdef LIT_HAVE_NORMALS
 in vec3 litNormalWC;
 #endif

@@ -4,7 +4,16 @@
     vec4 litNearH = litClipToWorld * vec4(litNdc, -1.0, 1.0);
     vec3 litView = normalize(litNearH.xyz / litNearH.w - litPositionWC);
 
-#ifdef LIT_HAVE_NORMALS
+#ifdef LIT_LINE
+    // An illuminated line (docs/METHOD.md, "Lines"): n the viewer-facing normal of the thin
+    // cylinder around the line, v's part perpendicular to the tangent (the hint below).
+    vec3 litLineT = normalize(litTangentWC);
+    vec3 litN = litView - dot(litView, litLineT) * litLineT;
+    litN = dot(litN, litN) > 1e-12 ? normalize(litN)
+                                   : normalize(cross(litLineT, abs(litLineT.z) < 0.9
+                                                                 ? vec3(0.0, 0.0, 1.0)
+                                                                 : vec3(1.0, 0.0, 0.0)));
+#elif defined(LIT_HAVE_NORMALS)
     vec3 litN = normalize(litNormalWC);
     if (!gl_FrontFacing)
     {

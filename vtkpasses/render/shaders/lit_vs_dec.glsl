@@ -1,5 +1,11 @@
 // Lit models, vertex shader declarations: the shading frame and texture coordinates reach the
 // fragment shader in world space, from the actor's own arrays.
+#ifdef LIT_LINE
+// A line set: varyings with VTK's VSOut suffix, passed on by its wide-line geometry shader
+// (ShaderHook.h, lineGeometryCode).
+#define litTangentWC litTangentWCVSOut
+#define litClipPosition litClipPositionVSOut
+#endif
 #ifdef LIT_HAVE_NORMALS
 in vec3 litNormalMC;
 uniform mat3 litNormalToWorld; // inverse transpose of the actor matrix (3x3)

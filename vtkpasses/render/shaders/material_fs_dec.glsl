@@ -1,6 +1,11 @@
 // Anisotropic material, fragment shader declarations: Ashikhmin-Shirley specular by importance
 // sampling of the environment cubemap (docs/METHOD.md, source 1), Lambert diffuse from SH9
 // irradiance, and the optional frame maps. The #define lines above this text select the variant.
+#ifdef ANISO_LINE
+// A line set (VSOut becomes GSOut here when VTK's wide-line geometry shader runs).
+#define anisoTangentWC anisoTangentWCVSOut
+#define anisoClipPosition anisoClipPositionVSOut
+#endif
 #ifdef ANISO_HAVE_NORMALS
 in vec3 anisoNormalWC;
 #endif

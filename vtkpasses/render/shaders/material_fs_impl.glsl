@@ -6,6 +6,13 @@
     vec4 nearH = anisoClipToWorld * vec4(ndc, -1.0, 1.0);
     vec3 v = normalize(nearH.xyz / nearH.w - anisoPositionWC);
 
+#ifdef ANISO_LINE
+    // An illuminated line (docs/METHOD.md, "Lines"): t along the line, n the normal of the thin
+    // cylinder around it that faces the viewer, v's part perpendicular to t.
+    vec3 t = normalize(anisoTangentWC);
+    vec3 n = v - dot(v, t) * t;
+    n = dot(n, n) > 1e-12 ? normalize(n) : anisoAnyPerpendicular(t);
+#else
 #ifdef ANISO_HAVE_NORMALS
     vec3 n = normalize(anisoNormalWC);
     if (!gl_FrontFacing)
@@ -21,6 +28,7 @@
     t = dot(t, t) > 1e-12 ? normalize(t) : anisoAnyPerpendicular(n);
 #else
     vec3 t = anisoAnyPerpendicular(n);
+#endif
 #endif
     vec3 b = cross(n, t);
 

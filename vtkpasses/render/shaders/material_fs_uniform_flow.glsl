@@ -1,7 +1,7 @@
   // Anisotropic material: everything that needs screen-space derivatives, before any branch.
   vec4 anisoPositionH = anisoClipToWorld * anisoClipPosition;
   vec3 anisoPositionWC = anisoPositionH.xyz / anisoPositionH.w;
-#ifndef ANISO_HAVE_NORMALS
+#if !defined(ANISO_HAVE_NORMALS) && !defined(ANISO_LINE)
   vec3 anisoFaceNormalWC = normalize(cross(dFdx(anisoPositionWC), dFdy(anisoPositionWC)));
 #endif
 #ifdef ANISO_HAVE_TCOORDS

@@ -1,6 +1,12 @@
 // Anisotropic material, vertex shader declarations: the shading frame reaches the fragment
 // shader in world space (normals and tangents from the actor's own arrays, so VTK's
 // shift-and-scale of positions never bends them).
+#ifdef ANISO_LINE
+// A line set: the varyings carry VTK's VSOut suffix, so that its wide-line geometry shader
+// passes them on (ShaderHook.h, lineGeometryCode).
+#define anisoTangentWC anisoTangentWCVSOut
+#define anisoClipPosition anisoClipPositionVSOut
+#endif
 #ifdef ANISO_HAVE_NORMALS
 in vec3 anisoNormalMC;
 uniform mat3 anisoNormalToWorld; // inverse transpose of the actor matrix (3x3)
