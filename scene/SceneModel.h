@@ -95,12 +95,12 @@ void checkCameraState(const CameraState& camera);
 // (the material of the first edited part kept), as opening a file does.
 class SceneModel;
 
-// The start-up scene (the window's first, and File > New's; ./run renders the same offscreen):
-// the built-in sphere (the mesh key's default) of the library's kStartMaterialName, aluminium
-// brushed along the parallels and far sharper across the brushing than along it, under the
-// default studio at one stop under the declared exposure, so that each of the studio's windows
-// is a thin streak from pole to pole: the brushing shows at a glance. Every other value is its
-// key's default.
+// The start-up scene (the window's first, and reset()'s; ./run renders the same offscreen): the
+// built-in sphere (the mesh key's default) of the library's kStartMaterialName, aluminium brushed
+// along the parallels (n_u 10000 along them, n_v 20 across), under the default studio at one
+// stop under the declared exposure, so that each of the studio's windows is spread across the
+// brushing into a thin streak from pole to pole: the brushing shows at a glance. Every other
+// value is its key's default.
 inline constexpr std::string_view kStartMesh = "builtin:sphere";
 inline constexpr double kStartExposure = -1.0;
 

@@ -61,10 +61,10 @@ Material defaultMaterial(std::string name);
 // The name of the material a scene of one part starts with, and what a session of the
 // single-material version becomes.
 inline constexpr std::string_view kDefaultMaterialName = "brushed aluminium";
-// The material of the window's start-up scene (scene/SceneModel.h, kStartMesh): aluminium far
-// sharper across its brushing than along it (n_u 10000, n_v 20), with the mesh's tangents, so on
-// the built-in sphere (tangents along the parallels) each light is a thin streak from pole to
-// pole.
+// The material of the window's start-up scene (scene/SceneModel.h, kStartMesh): aluminium
+// brushed along the mesh's tangents, its lobe 500 times sharper along them than across them
+// (n_u 10000, n_v 20), so on the built-in sphere (tangents along the parallels) each light is
+// spread across the brushing into a thin streak from pole to pole.
 inline constexpr std::string_view kStartMaterialName = "spun aluminium";
 
 // Materials by name, in the order they were added.
