@@ -22,8 +22,12 @@ int main(int argc, char** argv)
   const int size = argc > 1 ? std::atoi(argv[1]) : 128;
   const int samples = argc > 2 ? std::atoi(argv[2]) : 4096;
   aniso::SceneModel model;
-  model.setValues(
-      {{"lut-size", aniso::numberValue(size)}, {"lut-samples", aniso::numberValue(samples)}});
+  // The lobe of the declared default material (brushed aluminium), as first measured, not the
+  // start-up scene's.
+  model.setValues({{"lut-size", aniso::numberValue(size)},
+                   {"lut-samples", aniso::numberValue(samples)},
+                   {"nu", aniso::numberValue(1000.0)},
+                   {"nv", aniso::numberValue(50.0)}});
   aniso::SceneEditor editor(&model);
   aniso::MaterialDock dock(&editor);
   aniso::LutCache cache("none");

@@ -43,7 +43,7 @@ std::vector<SceneKey> makeKeys()
   using A = Affects;
   const Affects map = A::Variant | A::FrameCost;
   keys.push_back(
-      asset("mesh", "Mesh", "builtin:torus",
+      asset("mesh", "Mesh", kStartMesh,
             "the mesh: a file path or builtin:sphere, builtin:torus, builtin:plate, builtin:disk",
             A::FrameCost | A::LitModels | A::SurfaceModels));
   keys.push_back(asset("normal-map", "Normal map", {}, "tangent-space normal map", map));
@@ -84,6 +84,16 @@ std::size_t indexOf(std::string_view key)
 ParameterValue defaultValue(const SceneKey& key)
 {
   return defaultParameterValue(key.spec);
+}
+
+// KEY's value in the start-up scene: its default, but the exposure.
+ParameterValue startValue(const SceneKey& key)
+{
+  if (key.spec.name == "exposure")
+  {
+    return numberValue(kStartExposure);
+  }
+  return defaultValue(key);
 }
 
 bool finite3(const std::array<double, 3>& v)
@@ -216,10 +226,10 @@ SceneModel::SceneModel(QObject* parent)
 {
   for (const SceneKey& key : sceneKeys())
   {
-    values_.push_back(defaultValue(key));
+    values_.push_back(startValue(key));
   }
-  // Every default material value is the default material's (brushed aluminium).
-  parts_.push_back(partOfMesh(text("mesh"), std::string(kDefaultMaterialName)));
+  parts_.push_back(partOfMesh(text("mesh"), std::string(kStartMaterialName)));
+  projectMaterial();
 }
 
 SceneModel::~SceneModel() = default;
@@ -603,14 +613,17 @@ void SceneModel::reset()
   const auto& keys = sceneKeys();
   for (std::size_t i = 0; i < keys.size(); ++i)
   {
-    const ParameterValue v = defaultValue(keys[i]);
+    const ParameterValue v =
+        isMaterialKey(keys[i].spec.name)
+            ? builtinMaterials().at(kStartMaterialName).value(keys[i].spec.name)
+            : startValue(keys[i]);
     if (!(values_[i] == v))
     {
       values_[i] = v;
       changed.push_back(QString::fromStdString(std::string(keys[i].spec.name)));
     }
   }
-  std::vector<ScenePart> parts{partOfMesh(text("mesh"), std::string(kDefaultMaterialName))};
+  std::vector<ScenePart> parts{partOfMesh(text("mesh"), std::string(kStartMaterialName))};
   const bool partsDiffer = parts != parts_;
   const bool materialsDiffer = library_ != builtinMaterials();
   const bool hadSelection = !selection_.empty();

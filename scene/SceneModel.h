@@ -4,8 +4,8 @@
 // scene only through this model (usually through a SceneEditor, which makes edits undoable);
 // the renderer listens to it. Qt-only: no VTK, no GL.
 #include "core/parameters/material_library.h"
-#include "core/placement.h"
 #include "core/parameters/parameters.h"
+#include "core/placement.h"
 
 #include <QObject>
 #include <QString>
@@ -38,7 +38,6 @@ bool isSceneKey(std::string_view key);
 // Whether a change of KEY affects any of WHAT (ParameterSpec::affects); false for a key that is
 // no scene key.
 bool sceneKeyAffects(std::string_view key, Affects what);
-
 
 // Where the camera is; unset until a view was recorded (then the renderer frames the mesh).
 struct CameraState
@@ -96,6 +95,15 @@ void checkCameraState(const CameraState& camera);
 // (the material of the first edited part kept), as opening a file does.
 class SceneModel;
 
+// The start-up scene (the window's first, and reset()'s; ./run renders the same offscreen): the
+// built-in sphere (the mesh key's default) of the library's kStartMaterialName, aluminium brushed
+// along the parallels (n_u 10000 along them, n_v 20 across), under the default studio at one
+// stop under the declared exposure, so that each of the studio's windows is spread across the
+// brushing into a thin streak from pole to pole: the brushing shows at a glance. Every other
+// value is its key's default.
+inline constexpr std::string_view kStartMesh = "builtin:sphere";
+inline constexpr double kStartExposure = -1.0;
+
 // The one part of a scene of MESH (a mesh text) with MATERIAL: named by the file's stem or the
 // built-in's name, in no group.
 ScenePart partOfMesh(const std::string& mesh, const std::string& material);
@@ -132,11 +140,12 @@ public:
   void setValues(const Values& values);
   // Every key with its value.
   Values values() const;
-  // Every key back to its default (validators are not consulted: defaults are always valid).
+  // Back to the start-up scene (above): every key to its default but the exposure, one part of
+  // the default mesh with the start-up material, the built-in library (validators are not
+  // consulted: these values are always valid).
   void reset();
 
   void setValidator(std::string_view key, Validator validator);
-
 
   // The parts, in order, and the library their materials come from.
   const std::vector<ScenePart>& parts() const { return parts_; }
@@ -203,6 +212,6 @@ private:
 // held them) make: the mesh key's part with a material of the values' material keys, which is
 // LIBRARY's material of those values when there is one, else a new one named "material" (made
 // unique) added to LIBRARY.
-std::pair<std::vector<ScenePart>, MaterialLibrary>
-onePartScene(const SceneModel::Values& values, MaterialLibrary library);
+std::pair<std::vector<ScenePart>, MaterialLibrary> onePartScene(const SceneModel::Values& values,
+                                                                MaterialLibrary library);
 } // namespace aniso

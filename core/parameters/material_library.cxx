@@ -408,6 +408,7 @@ const MaterialLibrary& builtinMaterials()
   {
     MaterialLibrary l;
     l.put(defaultMaterial(std::string(kDefaultMaterialName)));
+    l.put(metal(std::string(kStartMaterialName), 10000.0, 20.0, defaultMaterial({}).value("f0")));
     l.put(metal("brushed steel", 800.0, 40.0, colorValue(0.562, 0.565, 0.578)));
     l.put(metal("brushed titanium", 600.0, 60.0, colorValue(0.542, 0.497, 0.449)));
     l.put(metal("turned brass", 2000.0, 80.0, colorValue(0.910, 0.778, 0.423), "around:0,0,1"));
@@ -475,8 +476,8 @@ MaterialLibrary materialLibraryFromJson(const std::string& text, const std::stri
   if (version->get<long long>() > kLibraryVersion || version->get<long long>() < 1)
   {
     throw errorAbout(subject, "version " + std::to_string(version->get<long long>()) +
-                                  " (this version reads 1 to " +
-                                  std::to_string(kLibraryVersion) + ")");
+                                  " (this version reads 1 to " + std::to_string(kLibraryVersion) +
+                                  ")");
   }
   const auto materials = document.find("materials");
   if (materials == document.end() || !materials->is_object())
@@ -540,8 +541,8 @@ void writeMaterialLibrary(const std::string& path, const MaterialLibrary& librar
   const fs::path target(path);
   const fs::path parent = fs::absolute(target, ec).parent_path();
   const std::string text = materialLibraryToJson(library, parent.string());
-  const fs::path temp = parent / ("." + target.filename().string() + ".tmp-" +
-                                  std::to_string(::getpid()));
+  const fs::path temp =
+      parent / ("." + target.filename().string() + ".tmp-" + std::to_string(::getpid()));
   {
     std::ofstream out(temp, std::ios::binary | std::ios::trunc);
     if (!out)

@@ -61,6 +61,11 @@ Material defaultMaterial(std::string name);
 // The name of the material a scene of one part starts with, and what a session of the
 // single-material version becomes.
 inline constexpr std::string_view kDefaultMaterialName = "brushed aluminium";
+// The material of the window's start-up scene (scene/SceneModel.h, kStartMesh): aluminium
+// brushed along the mesh's tangents, its lobe 500 times sharper along them than across them
+// (n_u 10000, n_v 20), so on the built-in sphere (tangents along the parallels) each light is
+// spread across the brushing into a thin streak from pole to pole.
+inline constexpr std::string_view kStartMaterialName = "spun aluminium";
 
 // Materials by name, in the order they were added.
 class MaterialLibrary
@@ -99,9 +104,10 @@ private:
   std::vector<Material> materials_;
 };
 
-// The built-in metals: brushed aluminium (every default), brushed steel, brushed titanium,
-// turned brass (tangents around the part's Z axis), brushed copper, satin gold and polished
-// chromium (isotropic), with F0 of the measured linear values of each metal.
+// The built-in metals: brushed aluminium (every default), spun aluminium (the start-up scene's),
+// brushed steel, brushed titanium, turned brass (tangents around the part's Z axis), brushed
+// copper, satin gold and polished chromium (isotropic), with F0 of the measured linear values of
+// each metal.
 const MaterialLibrary& builtinMaterials();
 
 // The library as a document (see above); map paths under BASE_DIRECTORY relative to it (empty:

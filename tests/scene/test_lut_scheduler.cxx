@@ -157,7 +157,7 @@ private slots:
     QSignalSpy ready(&scheduler, &aniso::LutScheduler::lutsReady);
     scheduler.requestNow();
     QVERIFY(ready.wait(10000));
-    QVERIFY2(view.infoText().contains("n_u = 1000, n_v = 50; 16 × 16 texels, 32 samples"),
+    QVERIFY2(view.infoText().contains("n_u = 10000, n_v = 20; 16 × 16 texels, 32 samples"),
              qPrintable(view.infoText()));
   }
 };

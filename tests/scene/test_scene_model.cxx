@@ -23,20 +23,42 @@ class TestSceneModel : public QObject
 
 private slots:
   // Every declared parameter is a key, with the declared default (the declaration in
-  // core/parameters/parameters.cxx is the reference), and the assets default to "none".
+  // core/parameters/parameters.cxx is the reference) but for the start-up scene's: the material
+  // keys are the start-up material's (the library's "spun aluminium") and the exposure is one
+  // stop under the declared one; the mesh is the built-in sphere; the assets default to "none".
   void defaultsAreTheDeclaredOnes()
   {
     SceneModel model;
+    const aniso::Material& start = aniso::builtinMaterials().at(aniso::kStartMaterialName);
     for (const aniso::ParameterSpec& spec : aniso::parameterSpecs())
     {
       QVERIFY(aniso::isSceneKey(spec.name));
-      QCOMPARE(model.value(spec.name), aniso::defaultParameterValue(spec));
+      if (aniso::isMaterialKey(spec.name))
+      {
+        QCOMPARE(model.value(spec.name), start.value(spec.name));
+      }
+      else if (spec.name != "exposure")
+      {
+        QCOMPARE(model.value(spec.name), aniso::defaultParameterValue(spec));
+      }
     }
-    QCOMPARE(model.real("nu"), 1000.0);
+    QCOMPARE(model.real("exposure"), aniso::parameterSpec("exposure").defaultValue[0] - 1.0);
+    QCOMPARE(model.real("nu"), 10000.0);
+    QCOMPARE(model.real("nv"), 20.0);
+    QCOMPARE(model.text("tangents"), std::string("auto"));
     QCOMPARE(model.text("method"), std::string("exact"));
     QCOMPARE(model.text("normal-map"), std::string());
-    QCOMPARE(model.text("mesh"), std::string("builtin:torus"));
+    QCOMPARE(model.text("mesh"), std::string("builtin:sphere"));
+    QCOMPARE(model.parts().size(), std::size_t(1));
+    QCOMPARE(model.parts()[0].material, std::string("spun aluminium"));
     QVERIFY(!model.camera().set);
+    // reset() comes back to the same scene after edits.
+    model.setValue("nu", aniso::numberValue(30.0));
+    model.setValue("exposure", aniso::numberValue(2.0));
+    model.reset();
+    QCOMPARE(model.real("nu"), 10000.0);
+    QCOMPARE(model.real("exposure"), -1.0);
+    QCOMPARE(model.parts()[0].material, std::string("spun aluminium"));
   }
 
   // What the keys beside the declared parameters affect (the parameters' roles: test_parameters):
@@ -139,7 +161,7 @@ private slots:
     QVERIFY_EXCEPTION_THROWN(
         model.setValues({{"nu", numberValue(5.0)}, {"exposure", numberValue(100.0)}}),
         aniso::Error);
-    QCOMPARE(model.real("nu"), 1000.0);
+    QCOMPARE(model.real("nu"), 10000.0);
     QCOMPARE(spy.count(), 0);
   }
 
@@ -181,7 +203,7 @@ private slots:
     QCOMPARE(model.camera(), camera);
     model.setValue("nu", numberValue(3.0));
     model.reset();
-    QCOMPARE(model.real("nu"), 1000.0);
+    QCOMPARE(model.real("nu"), 10000.0);
     QVERIFY(!model.camera().set);
   }
 
@@ -195,9 +217,9 @@ private slots:
     QCOMPARE(editor.undoStack()->count(), 2);
     editor.undoStack()->undo();
     QCOMPARE(model.real("nu"), 2000.0);
-    QCOMPARE(model.real("nv"), 50.0);
+    QCOMPARE(model.real("nv"), 20.0);
     editor.undoStack()->undo();
-    QCOMPARE(model.real("nu"), 1000.0);
+    QCOMPARE(model.real("nu"), 10000.0);
     editor.undoStack()->redo();
     editor.undoStack()->redo();
     QCOMPARE(model.real("nu"), 4000.0);
@@ -225,7 +247,7 @@ private slots:
     editor.edit("nu", numberValue(2500.0), second);
     QCOMPARE(editor.undoStack()->count(), 1);
     editor.undoStack()->undo();
-    QCOMPARE(model.real("nu"), 1000.0);
+    QCOMPARE(model.real("nu"), 10000.0);
   }
 
   // Replacing the whole scene (opening a session) is one step; undo restores values and camera.
@@ -244,7 +266,7 @@ private slots:
     QCOMPARE(model.real("nu"), 20000.0);
     QCOMPARE(model.camera(), camera);
     editor.undoStack()->undo();
-    QCOMPARE(model.real("nu"), 1000.0);
+    QCOMPARE(model.real("nu"), 10000.0);
     QCOMPARE(model.text("tone-mapping"), std::string("aces"));
     QVERIFY(!model.camera().set);
   }

@@ -53,15 +53,15 @@ class TestSceneParts : public QObject
   Q_OBJECT
 
 private slots:
-  // A new scene is one part of the default mesh with the default material, and the material
+  // A new scene is one part of the default mesh with the start-up material, and the material
   // keys are that material's.
   void aNewSceneIsOnePart()
   {
     SceneModel model;
     QCOMPARE(model.parts().size(), std::size_t(1));
-    QCOMPARE(model.parts()[0].name, std::string("torus"));
-    QCOMPARE(model.parts()[0].material, std::string(aniso::kDefaultMaterialName));
-    QCOMPARE(model.real("nu"), nuOf(model, std::string(aniso::kDefaultMaterialName)));
+    QCOMPARE(model.parts()[0].name, std::string("sphere"));
+    QCOMPARE(model.parts()[0].material, std::string(aniso::kStartMaterialName));
+    QCOMPARE(model.real("nu"), nuOf(model, std::string(aniso::kStartMaterialName)));
   }
 
   // With nothing selected an edit reaches every part's material; with a part selected, only
@@ -197,10 +197,10 @@ private slots:
     gearbox(model);
     model.setSelection({1});
     QSignalSpy parts(&model, &SceneModel::partsChanged);
-    model.setValue("mesh", aniso::textValue("builtin:sphere"));
+    model.setValue("mesh", aniso::textValue("builtin:torus"));
     QCOMPARE(parts.count(), 1);
     QCOMPARE(model.parts().size(), std::size_t(1));
-    QCOMPARE(model.parts()[0].name, std::string("sphere"));
+    QCOMPARE(model.parts()[0].name, std::string("torus"));
     QCOMPARE(model.parts()[0].material, std::string("turned brass"));
     QVERIFY(model.selection().empty());
   }
@@ -237,7 +237,7 @@ private slots:
     QCOMPARE(other.text("mesh"), model.text("mesh"));
     otherEditor.undoStack()->undo();
     QCOMPARE(other.parts().size(), std::size_t(1));
-    QCOMPARE(other.parts()[0].name, std::string("torus"));
+    QCOMPARE(other.parts()[0].name, std::string("sphere"));
   }
 
   // A session of the single-material version (no parts) opens as one part of its mesh with a

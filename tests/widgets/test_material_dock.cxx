@@ -80,6 +80,7 @@ private slots:
   void sliderDragSetsModelInOneUndoStep()
   {
     aniso::SceneModel model;
+    model.setValue("nu", aniso::numberValue(1000.0)); // from the brushed aluminium's n_u
     aniso::SceneEditor editor(&model);
     aniso::MaterialDock dock(&editor);
     auto* nu = dock.findChild<aniso::NumberControl*>("nu");
@@ -120,6 +121,8 @@ private slots:
   void linkKeepsTheRatio()
   {
     aniso::SceneModel model;
+    // From the brushed aluminium's lobe.
+    model.setValues({{"nu", aniso::numberValue(1000.0)}, {"nv", aniso::numberValue(50.0)}});
     aniso::SceneEditor editor(&model);
     aniso::MaterialDock dock(&editor);
     dock.findChild<QCheckBox*>("link")->setChecked(true);

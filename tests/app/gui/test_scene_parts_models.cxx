@@ -2,18 +2,19 @@
 // Xvfb, serially). Two spheres side by side, written by VTK's PLY writer (an independent writer,
 // with texture coordinates for the surface models), are opened as two parts, the left one
 // aluminium with a grey albedo, the right one satin gold (F0 1, 0.78, 0.34: less blue than red)
-// with a golden albedo (the lit models' colour), under a light from the camera. Checks: the lit model's view (Ward) draws one actor per part, and the right part's
-// pixels have a lower blue to red ratio than the left part's; so does every viewport of the
-// comparison window, each drawing two actors (the main view's part surfaces); so does the LEADR
-// view. Editing the right part's material changes the right part's pixels in the lit view and
-// leaves the left part's exactly as they were. Hiding the right part takes its actor out of the
-// lit view's renderer, the comparison window's viewports and the LEADR view.
+// with a golden albedo (the lit models' colour), under a light from the camera. Checks: the lit
+// model's view (Ward) draws one actor per part, and the right part's pixels have a lower blue to
+// red ratio than the left part's; so does every viewport of the comparison window, each drawing two
+// actors (the main view's part surfaces); so does the LEADR view. Editing the right part's material
+// changes the right part's pixels in the lit view and leaves the left part's exactly as they were.
+// Hiding the right part takes its actor out of the lit view's renderer, the comparison window's
+// viewports and the LEADR view.
 #include "app/gui/CompareWindow.h"
 #include "app/gui/LitModelView.h"
 #include "app/gui/MainWindow.h"
-#include "core/image/image.h"
 #include "app/gui/SceneView.h"
 #include "app/gui/SurfaceModelView.h"
+#include "core/image/image.h"
 #include "scene/LutScheduler.h"
 #include "widgets/SceneDock.h"
 
@@ -63,8 +64,7 @@ void writeSphere(const QString& path, double x)
 
 // Where the mesh-space point P is shown by RENDERER (drawing in VIEW's drawing frame), in display
 // coordinates (origin bottom left).
-std::array<int, 2> displayOf(aniso::SceneView* view, vtkRenderer* renderer,
-                             std::array<double, 3> p)
+std::array<int, 2> displayOf(aniso::SceneView* view, vtkRenderer* renderer, std::array<double, 3> p)
 {
   const glm::dvec3 d = view->drawingFrame().pointToDrawing(glm::dvec3(p[0], p[1], p[2]));
   renderer->SetWorldPoint(d.x, d.y, d.z, 1.0);
@@ -156,6 +156,10 @@ private slots:
     // colours, not the studio's soft boxes, decide the pixels.
     window.model()->setValues({{"samples", numberValue(1.0)},
                                {"target-samples", numberValue(1.0)},
+                               // The declared exposure, not the start-up scene's -1 EV: the
+                               // LEADR step below sets it back to 0, and the lit view's pixels
+                               // before and after are compared at one exposure.
+                               {"exposure", numberValue(0.0)},
                                {"background", textValue("color")},
                                {"background-color", aniso::colorValue(0.0, 0.0, 0.0)},
                                {"env-lights", textValue("off")}});
@@ -167,6 +171,12 @@ private slots:
     QVERIFY(window.addMeshes({right}));
     aniso::SceneModel* model = window.model();
     QCOMPARE(model->parts().size(), std::size_t(2));
+    // Brushed aluminium for the left part (it kept the start-up scene's spun aluminium, whose
+    // streaks from pole to pole would cross the measured points).
+    model->setSelection({0});
+    window.sceneDock()->assignToSelection(QString::fromUtf8(
+        aniso::kDefaultMaterialName.data(), int(aniso::kDefaultMaterialName.size())));
+    QCOMPARE(model->parts()[0].material, std::string(aniso::kDefaultMaterialName));
     model->setSelection({1});
     window.sceneDock()->assignToSelection("satin gold");
     QCOMPARE(model->parts()[1].material, std::string("satin gold"));
@@ -253,9 +263,9 @@ private slots:
     QTRY_VERIFY_WITH_TIMEOUT(settled(window), 60000);
     const auto leadrLeftPixels = meanAround(rw, leftAt());
     const auto leadrRightPixels = meanAround(rw, rightAt());
-    QVERIFY2(rightIsGold(leadrLeftPixels, leadrRightPixels),
-             qPrintable("leadr: left " + rgb(leadrLeftPixels) + ", right " +
-                        rgb(leadrRightPixels)));
+    QVERIFY2(
+        rightIsGold(leadrLeftPixels, leadrRightPixels),
+        qPrintable("leadr: left " + rgb(leadrLeftPixels) + ", right " + rgb(leadrRightPixels)));
     window.editor()->edit("exposure", numberValue(0.0));
 
     // The comparison window: every viewport draws both parts, each with its material (its

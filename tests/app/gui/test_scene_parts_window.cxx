@@ -2,10 +2,11 @@
 // side, written by VTK's PLY writer (an independent writer), are opened and added as two parts:
 // the scene dock lists them with the triangle counts of the written spheres; a click on the right
 // sphere (the view's pick, a ray cast against the drawn parts) selects that part in the model
-// and the dock; a library material assigned to the selection reaches only that part (its pixels turn gold, the left part's pixels
-// stay as they were, pixel checks against the image before the edit); hiding a part takes its
-// pixels away (the background shows there) and frames the visible part alone; undo brings the
-// part back; a session of the scene reopens with the same parts and materials.
+// and the dock; a library material assigned to the selection reaches only that part (its pixels
+// turn gold, the left part's pixels stay as they were, pixel checks against the image before the
+// edit); hiding a part takes its pixels away (the background shows there) and frames the visible
+// part alone; undo brings the part back; a session of the scene reopens with the same parts and
+// materials.
 #include "app/gui/MainWindow.h"
 #include "app/gui/SceneView.h"
 #include "core/lut/lut_cache.h"
@@ -187,21 +188,21 @@ private slots:
     QVERIFY(model->selection().empty());
     view->clickedAt(rightAt[0], rightAt[1], false);
 
-    // A material of the left part's lobe (copper: F0 only differs) for the right part leaves
-    // the left part's pixels exactly as they were.
+    // Another material (copper) for the right part leaves the left part's pixels exactly as they
+    // were.
     dock->assignToSelection("brushed copper");
     QTRY_VERIFY_WITH_TIMEOUT(settled(window), 60000);
     const auto leftBesideCopper = meanAround(view, leftAt);
     for (int c = 0; c < 3; ++c)
     {
       QVERIFY2(std::abs(leftBesideCopper[std::size_t(c)] - leftBefore[std::size_t(c)]) < 0.5,
-               "the left part changed with the right part's material of the same lobe");
+               "the left part changed with the right part's material");
     }
 
     // Gold for the selected part only.
     dock->assignToSelection("satin gold");
     QCOMPARE(model->parts()[1].material, std::string("satin gold"));
-    QCOMPARE(model->parts()[0].material, std::string(aniso::kDefaultMaterialName));
+    QCOMPARE(model->parts()[0].material, std::string(aniso::kStartMaterialName));
     QTRY_VERIFY_WITH_TIMEOUT(settled(window), 60000);
     // The selection's outline (drawn over the parts) out of the measured squares.
     model->setSelection({});
@@ -297,9 +298,9 @@ private slots:
     QCOMPARE(counters(0).shaderInstalls, left0.shaderInstalls);
     QCOMPARE(counters(0).textureUploads, left0.textureUploads);
     QCOMPARE(counters(1).shaderInstalls, right0.shaderInstalls); // n_u and F0 are uniforms
-    QVERIFY(counters(1).textureUploads > right0.textureUploads);  // the new half-vector table
+    QVERIFY(counters(1).textureUploads > right0.textureUploads); // the new half-vector table
     QCOMPARE(model->materials().at(model->parts()[0].material).value("f0").number[0],
-             aniso::builtinMaterials().at(aniso::kDefaultMaterialName).value("f0").number[0]);
+             aniso::builtinMaterials().at(aniso::kStartMaterialName).value("f0").number[0]);
 
     // An edit of the selection reaches only the right part's material.
     const double leftNu = model->materials().at(model->parts()[0].material).value("nu").number[0];
