@@ -14,7 +14,7 @@ ANISO_PACKAGES=(cmake g++ make pkg-config libvtk9-dev libvtk9-qt-dev qtbase5-dev
 aniso_install_packages() {
   local missing=() p
   for p in "$@"; do
-    if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then
+    if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q " ok installed$"; then
       missing+=("$p")
     fi
   done
