@@ -6,6 +6,7 @@
 // Each parseX reads one of the parameter's choices; any other text throws aniso::Error
 // "KEY: 'TEXT' is not one of A, B" (the message checkParameterValue gives). spelling() is the
 // inverse: the choice that parses back to the value.
+#include "core/fields/field_mapping.h"
 #include "core/microstructure/microstructure.h"
 
 #include <string_view>
@@ -107,6 +108,12 @@ MicroMasking parseMicroMasking(std::string_view text);
 std::string_view spelling(MicroMasking value);
 MicroBrdf parseMicroBrdf(std::string_view text);
 std::string_view spelling(MicroBrdf value);
+
+// "field-target" and "field-colormap" (the enums of core/fields/field_mapping.h, color_map.h)
+FieldTarget parseFieldTarget(std::string_view text);
+std::string_view spelling(FieldTarget value);
+ColorMap parseColorMap(std::string_view text);
+std::string_view spelling(ColorMap value);
 
 // "filtered", "jitter-grid" and "self-shadow": KEY names the parameter (its choices, in its
 // order, make the message).

@@ -1,6 +1,7 @@
 #include "core/parameters/parameters.h"
 
 #include "core/error.h"
+#include "core/fields/field_mapping.h"
 #include "core/leadr/leadr.h"
 #include "core/lut/lut.h"
 #include "core/microstructure/microstructure.h"
@@ -131,6 +132,14 @@ constexpr Spelling<MicroMasking> kMicroMaskings[] = {{MicroMasking::ParallaxOccl
                                                      {MicroMasking::Normal, "normal"}};
 constexpr Spelling<MicroBrdf> kMicroBrdfs[] = {{MicroBrdf::GgxSmithSchlick, "ggx"},
                                                {MicroBrdf::BlinnPhong, "blinn-phong"}};
+constexpr Spelling<FieldTarget> kFieldTargets[] = {{FieldTarget::Albedo, "albedo"},
+                                                  {FieldTarget::F0, "f0"},
+                                                  {FieldTarget::Roughness, "roughness"},
+                                                  {FieldTarget::Anisotropy, "anisotropy"}};
+constexpr Spelling<ColorMap> kColorMaps[] = {{ColorMap::Viridis, "viridis"},
+                                             {ColorMap::Cividis, "cividis"},
+                                             {ColorMap::CoolToWarm, "cool-to-warm"},
+                                             {ColorMap::Grayscale, "grayscale"}};
 constexpr Spelling<OnOff> kOnOff[] = {{OnOff::Off, "off"}, {OnOff::On, "on"}};
 
 template <typename E, std::size_t N>
@@ -267,6 +276,41 @@ std::vector<ParameterSpec> declare()
                      "IGES part, else axis:1,0,0), uv, axis:X,Y,Z, around:X,Y,Z, radial:X,Y,Z, "
                      "face-u, face-v: along a CAD face's own u or v (a turned face: round "
                      "or along its axis), or array:NAME: along the mesh's vector array NAME"))),
+      // A data field of the mesh that drives the material (core/fields/field_mapping.h): its
+      // values reach the shader as a vertex attribute, the range and the target's values as
+      // uniforms, so dragging them never recompiles nor re-uploads the mesh.
+      ofMaterial(affecting(A::Uniforms | A::Variant | A::FrameCost,
+                text("field", "Field",  "none",
+                     "a data array that drives the material: none, NAME (a point or cell "
+                     "array; a vector's magnitude), NAME:magnitude, NAME:x|y|z or NAME:N "
+                     "(one component, from 0); cell values are averaged to the points"))),
+      ofMaterial(affecting(A::Uniforms | A::Variant | A::FrameCost,
+                choice("field-target", "Field drives",
+                       {FieldTarget::Albedo, FieldTarget::F0, FieldTarget::Roughness,
+                        FieldTarget::Anisotropy},
+                       FieldTarget::Albedo,
+                       "what the field sets: albedo or f0 (through field-colormap), roughness "
+                       "(n_u and n_v times field-low to field-high) or anisotropy (strength "
+                       "field-low to field-high: 0 isotropic, 1 the material's lobe)"))),
+      ofMaterial(affecting(A::Uniforms,
+                choice("field-colormap", "Colour map",
+                       {ColorMap::Viridis, ColorMap::Cividis, ColorMap::CoolToWarm,
+                        ColorMap::Grayscale},
+                       ColorMap::Viridis,
+                       "colour map of the field (ParaView's presets: Viridis (matplotlib), "
+                       "Cividis, Cool to Warm, Grayscale), with its NaN colour"))),
+      ofMaterial(affecting(A::Uniforms,
+                text("field-range", "Field range", "auto",
+                     "the field's values mapped to the colour map's ends: auto (the finite "
+                     "range over the parts that show the field) or MIN,MAX"))),
+      ofMaterial(affecting(A::Uniforms,
+                number("field-low", "Field low", T::Real, 0.0, 0.0, 1000.0, 0.01, S::Linear, {},
+                       "roughness: the exponents' scale at the range's minimum; anisotropy: "
+                       "the strength there (clamped to [0, 1])"))),
+      ofMaterial(affecting(A::Uniforms,
+                number("field-high", "Field high", T::Real, 1.0, 0.0, 1000.0, 0.01, S::Linear, {},
+                       "roughness: the exponents' scale at the range's maximum; anisotropy: "
+                       "the strength there (clamped to [0, 1])"))),
       // Illuminated lines (a file's polylines, vtkpasses/mesh/LineSet.h): their width, per
       // material, so that each line part has its own.
       ofMaterial(affecting(A::Uniforms | A::FrameCost | A::LitModels,
@@ -487,6 +531,15 @@ void checkParameterValue(const ParameterSpec& spec, const ParameterValue& value,
         allowed += (i ? ", " : "") + std::string(spec.choices[i]);
       }
       throw errorAbout(subject, quoted(value.text) + " is not one of " + allowed);
+    }
+    // Texts with a grammar of their own are read here, so every way in checks them alike.
+    if (spec.name == "field")
+    {
+      parseFieldSpec(value.text, subject);
+    }
+    else if (spec.name == "field-range")
+    {
+      parseFieldRange(value.text, subject);
     }
     return;
   }
@@ -771,6 +824,26 @@ MicroBrdf parseMicroBrdf(std::string_view text)
 std::string_view spelling(MicroBrdf value)
 {
   return spellingIn(kMicroBrdfs, value);
+}
+
+FieldTarget parseFieldTarget(std::string_view text)
+{
+  return parseIn(kFieldTargets, "field-target", text);
+}
+
+std::string_view spelling(FieldTarget value)
+{
+  return spellingIn(kFieldTargets, value);
+}
+
+ColorMap parseColorMap(std::string_view text)
+{
+  return parseIn(kColorMaps, "field-colormap", text);
+}
+
+std::string_view spelling(ColorMap value)
+{
+  return spellingIn(kColorMaps, value);
 }
 
 OnOff parseOnOff(std::string_view key, std::string_view text)
