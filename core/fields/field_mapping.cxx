@@ -96,7 +96,8 @@ FieldRange parseFieldRange(std::string_view text, const std::string& subject)
     return range;
   }
   const std::size_t comma = text.find(',');
-  const auto lo = comma == std::string_view::npos ? std::nullopt : finiteNumber(text.substr(0, comma));
+  const auto lo =
+      comma == std::string_view::npos ? std::nullopt : finiteNumber(text.substr(0, comma));
   const auto hi =
       comma == std::string_view::npos ? std::nullopt : finiteNumber(text.substr(comma + 1));
   if (!lo || !hi)

@@ -32,10 +32,7 @@ struct FieldSpec
   std::string array;
   int component = -1; // -1: the magnitude (the value itself for one component), else 0-based
 
-  bool operator==(const FieldSpec& o) const
-  {
-    return array == o.array && component == o.component;
-  }
+  bool operator==(const FieldSpec& o) const { return array == o.array && component == o.component; }
 };
 
 // "none" (or empty) -> no field; "NAME", "NAME:magnitude", "NAME:x|y|z" or "NAME:N" (0-based

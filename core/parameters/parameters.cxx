@@ -347,6 +347,10 @@ std::vector<ParameterSpec> declare()
       affecting(A::Display, color("background-color", "Background colour", {0.18, 0.18, 0.18}, 0.01,
                                   "linear radiance of a plain background")),
       affecting(A::Display,
+                choice("legend", "Field legend", {OnOff::On, OnOff::Off}, OnOff::On,
+                       "a colour legend of each field shown through a colour map (field), at "
+                       "the right of the view, in screenshots and PNG files (not in EXR)")),
+      affecting(A::Display,
                 choice("tone-mapping", "Tone mapping",
                        {ToneMapping::Aces, ToneMapping::Reinhard, ToneMapping::Clamp},
                        ToneMapping::Aces,

@@ -1,9 +1,11 @@
 #include "vtkpasses/render/AnisoMaterial.h"
 
 #include "core/error.h"
+#include "core/fields/color_map.h"
 #include "core/lut/lut.h"
 #include "core/lut/lut_cache.h"
 #include "vtkpasses/render/EnvironmentLighting.h"
+#include "vtkpasses/render/FieldValues.h"
 #include "vtkpasses/render/RendererMatrices.h"
 #include "vtkpasses/render/ShaderHook.h"
 #include "vtkpasses/render/TextureUpload.h"
@@ -14,6 +16,7 @@
 #include <cmath>
 #include <functional>
 #include <glm/gtc/type_ptr.hpp>
+#include <atomic>
 #include <map>
 #include <memory>
 #include <string>
@@ -21,7 +24,10 @@
 #include <vtkInformation.h>
 #include <vtkInformationDoubleVectorKey.h>
 #include <vtkInformationIntegerKey.h>
+#include <vtkCellData.h>
+#include <vtkMapper.h>
 #include <vtkOpenGLRenderWindow.h>
+#include <vtkPointData.h>
 #include <vtkOpenGLState.h>
 #include <vtkPolyData.h>
 #include <vtkRenderer.h>
@@ -78,6 +84,27 @@ void checkMap(const std::shared_ptr<const Image>& map, int minChannels, const ch
     throw errorAbout(name, std::to_string(map->channels) + " channel(s), at least " +
                                std::to_string(minChannels) + " needed");
   }
+}
+
+// Entries of a field's colour-map texture: t = i / (count - 1) at texel i's centre.
+constexpr int kFieldColorCount = 256;
+
+// The colour map's table as linear RGB, made once per map for the process (materials of one map
+// share its texture in a window).
+std::shared_ptr<const std::vector<float>> fieldColorTable(ColorMap map)
+{
+  static const std::array<std::shared_ptr<const std::vector<float>>, 4> tables = []
+  {
+    std::array<std::shared_ptr<const std::vector<float>>, 4> t;
+    for (ColorMap m : {ColorMap::Viridis, ColorMap::Cividis, ColorMap::CoolToWarm,
+                       ColorMap::Grayscale})
+    {
+      t[static_cast<std::size_t>(m)] =
+          std::make_shared<const std::vector<float>>(colorMapTableLinear(m, kFieldColorCount));
+    }
+    return t;
+  }();
+  return tables[static_cast<std::size_t>(map)];
 }
 
 // A grey image as RGB (albedo maps may be single-channel).
@@ -185,8 +212,74 @@ public:
   Texture albedoTexture;
   Texture occlusionTexture;
   Texture metallicTexture;
+  Texture fieldColorTexture;
+  // The field's values on the drawn mesh (writeFieldValues): a point array of this material's
+  // own name, so materials of other fields may draw the same surface.
+  const std::string fieldArrayName = std::string(kFieldArray) + "#" + std::to_string(nextId());
+  vtkWeakPointer<vtkPolyData> meshPoly; // the mesh last drawn
+  vtkWeakPointer<vtkPolyData> fieldPoly; // where the values were written, and of which field
+  std::optional<FieldSpec> fieldWritten;
+  vtkMTimeType fieldSourceTime = 0;
+  double fieldOffset = 0.0;
+  FieldRange fieldOwnRange; // the field's finite range on the mesh, for an automatic range
+  bool fieldPresent = false;
   // Last, so it lets go of the actor (and the textures it activated) before the rest goes.
   ShaderHook hook{"anisotropic material"};
+
+  static int nextId()
+  {
+    static std::atomic<int> id{0};
+    return ++id;
+  }
+
+  ~Impl() { removeFieldValues(); }
+
+  void removeFieldValues()
+  {
+    if (fieldPoly && fieldPoly->GetPointData()->GetArray(fieldArrayName.c_str()))
+    {
+      fieldPoly->GetPointData()->RemoveArray(fieldArrayName.c_str());
+    }
+    fieldPoly = nullptr;
+    fieldWritten.reset();
+    fieldPresent = false;
+  }
+
+  // The array the field's values come from, for its modification time.
+  static vtkDataArray* fieldSource(vtkPolyData* poly, const FieldSpec& spec)
+  {
+    vtkDataArray* a = poly->GetPointData()->GetArray(spec.array.c_str());
+    return a ? a : poly->GetCellData()->GetArray(spec.array.c_str());
+  }
+
+  // Writes the field's values onto POLY when the field, the mesh or its array changed.
+  void refreshField(vtkPolyData* poly)
+  {
+    if (!settings.field || !poly)
+    {
+      removeFieldValues();
+      return;
+    }
+    const FieldSpec& spec = settings.field->spec;
+    vtkDataArray* source = fieldSource(poly, spec);
+    const vtkMTimeType sourceTime = source ? source->GetMTime() : 0;
+    if (fieldPoly == poly && fieldWritten && *fieldWritten == spec &&
+        fieldSourceTime == sourceTime &&
+        (!fieldPresent || poly->GetPointData()->GetArray(fieldArrayName.c_str())))
+    {
+      return;
+    }
+    removeFieldValues();
+    const std::optional<double> offset = writeFieldValues(poly, spec, fieldArrayName.c_str());
+    fieldPoly = poly;
+    fieldWritten = spec;
+    fieldSourceTime = sourceTime;
+    fieldPresent = offset.has_value();
+    fieldOffset = offset.value_or(0.0);
+    const auto statistics = fieldStatistics(poly, spec);
+    const auto range = statistics ? jointFieldRange({*statistics}) : std::nullopt;
+    fieldOwnRange = range.value_or(FieldRange{false, 0.0, 1.0});
+  }
 
   static bool matches(const std::shared_ptr<const HalfVectorLut>& lut, const MaterialSettings& s)
   {
@@ -206,7 +299,8 @@ public:
   {
     // Only what the variant reads: the in-shader variant of `exact` needs no table at all.
     std::shared_ptr<const HalfVectorLut> halfVectors;
-    if (s.halfVectors == HalfVectorSource::Lut)
+    const bool fieldLobe = s.field && !s.field->colors(); // half vectors in the shader
+    if (s.halfVectors == HalfVectorSource::Lut && !fieldLobe)
     {
       halfVectors = matches(givenHalf, s)       ? givenHalf
                     : matches(halfVectorLut, s) ? halfVectorLut
@@ -240,6 +334,8 @@ public:
   // The mesh the mapper is about to draw chooses the variant.
   void onMesh(vtkPolyData* poly)
   {
+    meshPoly = poly;
+    refreshField(poly);
     mesh = meshArraysOf(poly);
     updateVariant();
   }
@@ -248,7 +344,8 @@ public:
   {
     dropped = droppedMaps(settings, mesh.tcoords && !mesh.lines);
     const MaterialVariant v =
-        materialVariant(resolved(), mesh.normals, mesh.tangents, mesh.tcoords, mesh.lines);
+        materialVariant(resolved(), mesh.normals, mesh.tangents, mesh.tcoords, mesh.lines,
+                        fieldPresent);
     if (!hook.installed() || installed != v)
     {
       install(v);
@@ -269,6 +366,10 @@ public:
       hooked.geometry = lineGeometryCode("aniso");
     }
     hooked.attributes = meshAttributes("aniso", {v.normals, v.tangents, v.tcoords});
+    if (v.field)
+    {
+      hooked.attributes.emplace_back("anisoFieldMC", fieldArrayName);
+    }
     hooked.uniform = "anisoSampleCount";
     hook.install(hooked);
     installed = v;
@@ -333,15 +434,26 @@ public:
     mapTexture(heightTexture, v.heightMap, settings.heightMap, 1, "height map");
     mapTexture(occlusionTexture, v.occlusionMap, settings.occlusionMap, 1, "occlusion map");
     mapTexture(metallicTexture, v.metallicMap, settings.metallicMap, 1, "metallic map");
+    kind = "field colours";
+    const bool fieldColors = v.field && settings.field && settings.field->colors();
+    const auto table = fieldColors ? fieldColorTable(settings.field->colorMap) : nullptr;
+    refresh(fieldColorTexture, table,
+            [&]
+            {
+              return uploadFloatTexture(window, kFieldColorCount, 1, 3, table->data(),
+                                        TextureFiltering::Linear, TextureWrap::Clamp,
+                                        "field colours");
+            });
     kind = "albedo map";
     refresh(albedoTexture, v.albedoMap ? settings.albedoMap : nullptr,
             [&] { return uploadMapTexture(window, asRgb(*settings.albedoMap), 3, "albedo map"); });
   }
 
-  std::array<Texture*, 9> allTextures()
+  std::array<Texture*, 10> allTextures()
   {
-    return {&halfVectorTexture, &brdfTexture,   &normalTexture,    &quaternionTexture, &tprTexture,
-            &heightTexture,     &albedoTexture, &occlusionTexture, &metallicTexture};
+    return {&halfVectorTexture, &brdfTexture,      &normalTexture,   &quaternionTexture,
+            &tprTexture,        &heightTexture,    &albedoTexture,   &occlusionTexture,
+            &metallicTexture,   &fieldColorTexture};
   }
 
   // Uniforms and textures, every time the mapper draws: no value here changes the shader.
@@ -431,6 +543,10 @@ public:
     const float exponents[2] = {static_cast<float>(settings.lobe.nu),
                                 static_cast<float>(settings.lobe.nv)};
     program->SetUniform2f("anisoExponents", exponents);
+    if (installed.field && settings.field)
+    {
+      setFieldUniforms(program, exponents);
+    }
     if (brdfTexture.object)
     {
       hook.bindTexture(program, "anisoBrdfLut", brdfTexture.object);
@@ -448,6 +564,27 @@ public:
       }
     }
     program->SetUniformf("anisoHeightScale", static_cast<float>(settings.heightScale));
+  }
+
+  // The field's range (relative to the values' offset), the target's values and its colours.
+  void setFieldUniforms(vtkShaderProgram* program, const float exponents[2])
+  {
+    const FieldMapping& f = *settings.field;
+    const FieldRange range = f.range.automatic ? fieldOwnRange : f.range;
+    const float fieldRange[2] = {static_cast<float>(range.min - fieldOffset),
+                                 static_cast<float>(range.max - fieldOffset)};
+    program->SetUniform2f("anisoFieldRange", fieldRange);
+    const float targets[2] = {static_cast<float>(f.low), static_cast<float>(f.high)};
+    program->SetUniform2f("anisoFieldTargets", targets);
+    program->SetUniform2f("anisoMaterialExponents", exponents);
+    if (fieldColorTexture.object)
+    {
+      hook.bindTexture(program, "anisoFieldColors", fieldColorTexture.object);
+      program->SetUniformi("anisoFieldColorCount", kFieldColorCount);
+      const glm::dvec3 nan = colorMapNanColor(f.colorMap);
+      setVector(program, "anisoFieldNanColor",
+                glm::dvec3(srgbToLinear(nan.x), srgbToLinear(nan.y), srgbToLinear(nan.z)));
+    }
   }
 };
 
@@ -490,6 +627,19 @@ void AnisoMaterial::validate(const MaterialSettings& s)
   checkMap(s.albedoMap, 1, "albedo map");
   checkMap(s.occlusionMap, 1, "occlusion map");
   checkMap(s.metallicMap, 1, "metallic map");
+  if (s.field)
+  {
+    if (!std::isfinite(s.field->low) || !std::isfinite(s.field->high) || s.field->low < 0.0 ||
+        s.field->high < 0.0)
+    {
+      throw errorAbout("field-low", "the target's values must be finite numbers >= 0");
+    }
+    if (!s.field->colors() && s.method != SpecularMethod::Exact)
+    {
+      throw errorAbout("field-target", "roughness and anisotropy need the exact method "
+                                       "(method exact): the split sum's BRDF table holds one lobe");
+    }
+  }
 }
 
 void AnisoMaterial::apply(vtkActor* actor, vtkRenderer* renderer)
@@ -500,6 +650,8 @@ void AnisoMaterial::apply(vtkActor* actor, vtkRenderer* renderer)
 void AnisoMaterial::detach()
 {
   impl_->hook.detach();
+  impl_->removeFieldValues();
+  impl_->meshPoly = nullptr;
 }
 
 void AnisoMaterial::setSettings(const MaterialSettings& settings)
@@ -517,6 +669,10 @@ void AnisoMaterial::setSettings(const MaterialSettings& settings,
     return; // its tables are the ones held: nothing to upload, nothing to draw anew
   }
   impl_->adopt(settings, halfVector, brdf);
+  if (impl_->meshPoly)
+  {
+    impl_->refreshField(impl_->meshPoly);
+  }
   if (impl_->hook.installed())
   {
     impl_->updateVariant();

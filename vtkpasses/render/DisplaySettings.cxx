@@ -11,6 +11,7 @@ DisplaySettings displayFromParameters(const ParameterSet& parameters)
   d.toneMapping = parseToneMapping(parameters.text("tone-mapping"));
   d.background = parseBackgroundMode(parameters.text("background"));
   d.backgroundColor = parameters.color("background-color");
+  d.legend = parseOnOff("legend", parameters.text("legend")) == OnOff::On;
   return d;
 }
 } // namespace aniso

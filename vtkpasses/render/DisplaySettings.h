@@ -16,15 +16,17 @@ struct DisplaySettings
   ToneMapping toneMapping = ToneMapping::Aces;
   BackgroundMode background = BackgroundMode::Environment;
   glm::dvec3 backgroundColor{0.18, 0.18, 0.18}; // linear radiance, seen through the transform
+  bool legend = true; // the colour legends of the fields shown (FieldValues.h), over the image
 
   bool operator==(const DisplaySettings& o) const
   {
     return exposureEV == o.exposureEV && toneMapping == o.toneMapping &&
-           background == o.background && backgroundColor == o.backgroundColor;
+           background == o.background && backgroundColor == o.backgroundColor &&
+           legend == o.legend;
   }
   bool operator!=(const DisplaySettings& o) const { return !(*this == o); }
 };
 // From the declared parameters (core/parameters/parameters.h): exposure, tone-mapping,
-// background, background-color.
+// background, background-color, legend.
 DisplaySettings displayFromParameters(const ParameterSet& parameters);
 } // namespace aniso

@@ -17,6 +17,7 @@ MaterialSettings materialFromParameters(const ParameterSet& parameters, Material
   base.halfVectors = parseHalfVectorSource(parameters.text("half-vectors"));
   base.environmentSampling = parseEnvironmentSampling(parameters.text("env-sampling"));
   base.heightScale = parameters.real("height-scale");
+  base.field = fieldMappingFromParameters(parameters);
   return base;
 }
 } // namespace aniso

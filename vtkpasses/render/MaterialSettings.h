@@ -3,11 +3,13 @@
 // moving them never recompiles a shader) and the features it uses (each a shader variant,
 // compiled only when a material uses it).
 #include "core/brdf/ashikhmin_shirley.h"
+#include "core/fields/field_mapping.h"
 #include "core/image/image.h"
 #include "core/parameters/choices.h" // SpecularMethod, HalfVectorSource, EnvironmentSampling
 
 #include <glm/vec3.hpp>
 #include <memory>
+#include <optional>
 
 namespace aniso
 {
@@ -56,6 +58,13 @@ struct MaterialSettings
   std::shared_ptr<const Image> occlusionMap;  // R = ambient occlusion
   std::shared_ptr<const Image> metallicMap;   // R = metalness (1: F0, no diffuse; 0: F0 = 0.04)
 
+  // A data field of the mesh that drives albedo, F0, the roughness or the anisotropy
+  // (core/fields/field_mapping.h); none = not used. Its range is used as it is when set, else
+  // the field's own finite range on the drawn mesh (a scene resolves it over its parts:
+  // vtkpasses/render/FieldValues.h). A lobe-changing target draws with half vectors computed
+  // in the shader (the lookup table holds one lobe only) and needs the exact method.
+  std::optional<FieldMapping> field;
+
   // Every field equal, maps by identity (the same images).
   bool operator==(const MaterialSettings& o) const
   {
@@ -68,7 +77,7 @@ struct MaterialSettings
            environmentSampling == o.environmentSampling && normalMap == o.normalMap &&
            quaternionMap == o.quaternionMap && tprMap == o.tprMap && heightMap == o.heightMap &&
            albedoMap == o.albedoMap && occlusionMap == o.occlusionMap &&
-           metallicMap == o.metallicMap;
+           metallicMap == o.metallicMap && field == o.field;
   }
   bool operator!=(const MaterialSettings& o) const { return !(*this == o); }
 
@@ -81,7 +90,7 @@ struct MaterialSettings
 
 // The declared parameters (core/parameters/parameters.h) that a material takes: n_u, n_v, F0,
 // albedo, samples, LUT size and samples, method, filtered, half-vectors, env-sampling,
-// height scale.
+// height scale, the field mapping.
 // Everything else (the maps) keeps its value in BASE.
 MaterialSettings materialFromParameters(const ParameterSet& parameters, MaterialSettings base = {});
 } // namespace aniso

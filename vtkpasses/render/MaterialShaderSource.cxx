@@ -11,11 +11,12 @@ bool MaterialVariant::operator==(const MaterialVariant& o) const
          normals == o.normals && tangents == o.tangents &&
          tcoords == o.tcoords && lines == o.lines && normalMap == o.normalMap && quaternionMap == o.quaternionMap &&
          tprMap == o.tprMap && heightMap == o.heightMap && albedoMap == o.albedoMap &&
-         occlusionMap == o.occlusionMap && metallicMap == o.metallicMap;
+         occlusionMap == o.occlusionMap && metallicMap == o.metallicMap && field == o.field &&
+         (!field || fieldTarget == o.fieldTarget);
 }
 
 MaterialVariant materialVariant(const MaterialSettings& settings, bool normals, bool tangents,
-                                bool tcoords, bool lines)
+                                bool tcoords, bool lines, bool field)
 {
   if (lines && tangents)
   {
@@ -42,6 +43,15 @@ MaterialVariant materialVariant(const MaterialSettings& settings, bool normals, 
   v.albedoMap = tcoords && settings.albedoMap;
   v.occlusionMap = tcoords && settings.occlusionMap;
   v.metallicMap = tcoords && settings.metallicMap;
+  v.field = field && settings.field && !v.lines;
+  if (v.field)
+  {
+    v.fieldTarget = settings.field->target;
+    if (!settings.field->colors())
+    {
+      v.halfVectors = HalfVectorSource::Shader; // the table holds the material's lobe only
+    }
+  }
   return v;
 }
 
@@ -77,6 +87,13 @@ std::string variantDefines(const MaterialVariant& v)
   define(v.albedoMap, "ANISO_ALBEDO_MAP");
   define(v.occlusionMap, "ANISO_OCCLUSION_MAP");
   define(v.metallicMap, "ANISO_METALLIC_MAP");
+  define(v.field, "ANISO_FIELD");
+  define(v.field && v.fieldTarget == FieldTarget::Albedo, "ANISO_FIELD_COLOR_ALBEDO");
+  define(v.field && v.fieldTarget == FieldTarget::F0, "ANISO_FIELD_COLOR_F0");
+  define(v.field && (v.fieldTarget == FieldTarget::Roughness ||
+                     v.fieldTarget == FieldTarget::Anisotropy),
+         "ANISO_FIELD_LOBE");
+  define(v.field && v.fieldTarget == FieldTarget::Anisotropy, "ANISO_FIELD_ANISOTROPY");
   return d;
 }
 

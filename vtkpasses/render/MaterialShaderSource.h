@@ -12,6 +12,9 @@ namespace aniso
 inline constexpr const char* kNormalsArray = "Normals";   // float3
 inline constexpr const char* kTangentsArray = "Tangents"; // float3, unit, orthogonal to normals
 inline constexpr const char* kTCoordsArray = "TCoords";   // float2
+// The field's values per point, written by the material from the mesh's data arrays
+// (vtkpasses/render/FieldValues.h): float2 (value, 1 where the value is NaN).
+inline constexpr const char* kFieldArray = "AnisoFieldValues";
 
 // Everything that changes the compiled shader; nothing else does.
 struct MaterialVariant
@@ -32,6 +35,11 @@ struct MaterialVariant
   bool albedoMap = false;
   bool occlusionMap = false;
   bool metallicMap = false;
+  // A data field drives the material (the mesh has its values): ANISO_FIELD with
+  // ANISO_FIELD_COLOR_ALBEDO, ANISO_FIELD_COLOR_F0 or ANISO_FIELD_LOBE (roughness and
+  // anisotropy, which also computes the half vectors in the shader).
+  bool field = false;
+  FieldTarget fieldTarget = FieldTarget::Albedo;
 
   bool operator==(const MaterialVariant& other) const;
   bool operator!=(const MaterialVariant& other) const { return !(*this == other); }
@@ -41,8 +49,10 @@ struct MaterialVariant
 // without them they are left out (see droppedMaps). SETTINGS' environment sampling is taken as
 // resolved (EnvironmentLighting::resolveSampling): Auto draws as Off here.
 // A line set (LINES) takes no maps and no normals: its frame is the line's (docs/METHOD.md).
+// FIELD: the mesh carries the field's values (kFieldArray); without them, or on a line set, the
+// field is left out.
 MaterialVariant materialVariant(const MaterialSettings& settings, bool normals, bool tangents,
-                                bool tcoords, bool lines = false);
+                                bool tcoords, bool lines = false, bool field = false);
 // True when SETTINGS asks for maps that the mesh cannot use (no texture coordinates).
 bool droppedMaps(const MaterialSettings& settings, bool tcoords);
 

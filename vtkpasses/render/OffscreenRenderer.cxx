@@ -4,6 +4,7 @@
 #include "vtkpasses/render/AnisoMaterial.h"
 #include "vtkpasses/render/DrawingFrame.h"
 #include "vtkpasses/render/EnvironmentLighting.h"
+#include "vtkpasses/render/FieldValues.h"
 #include "vtkpasses/render/vtkAnisoAccumulationPass.h"
 
 #include <X11/Xlib.h>
@@ -22,6 +23,7 @@
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtkRenderStepsPass.h>
+#include <vtkScalarBarActor.h>
 #include <vtkUnsignedCharArray.h>
 #include <vtk_glew.h>
 
@@ -223,6 +225,40 @@ RenderResult renderOffscreen(const RenderSettings& s)
   pass->SetTargetFrames(s.frames);
   renderer->SetPass(pass);
 
+  // The parts' fields with automatic ranges mapped over every visible part that shows them.
+  std::vector<MaterialSettings> settings(parts.size());
+  std::vector<vtkPolyData*> fieldSurfaces;
+  std::vector<MaterialSettings*> fieldMaterials;
+  for (std::size_t i = 0; i < parts.size(); ++i)
+  {
+    settings[i] = parts[i].material;
+    if (actors[i] && !parts[i].installMaterial && !s.installMaterial)
+    {
+      fieldSurfaces.push_back(parts[i].surface);
+      fieldMaterials.push_back(&settings[i]);
+    }
+  }
+  resolveFieldRanges(fieldSurfaces, fieldMaterials);
+  // Their colour legends over the image, in a layer the accumulation does not touch.
+  vtkNew<vtkRenderer> overlay;
+  std::vector<vtkSmartPointer<vtkScalarBarActor>> legends;
+  if (s.display.legend)
+  {
+    const auto shown = fieldLegends({fieldMaterials.begin(), fieldMaterials.end()});
+    for (std::size_t k = 0; k < shown.size(); ++k)
+    {
+      legends.push_back(makeFieldLegendActor(shown[k], int(k)));
+      overlay->AddViewProp(legends.back());
+    }
+  }
+  if (!legends.empty())
+  {
+    window->SetNumberOfLayers(2);
+    overlay->SetLayer(1);
+    overlay->InteractiveOff();
+    window->AddRenderer(overlay);
+  }
+
   std::vector<std::unique_ptr<AnisoMaterial>> materials(parts.size());
   std::vector<std::shared_ptr<void>> otherMaterials;
   for (std::size_t i = 0; i < parts.size(); ++i)
@@ -241,7 +277,7 @@ RenderResult renderOffscreen(const RenderSettings& s)
     }
     else
     {
-      materials[i] = std::make_unique<AnisoMaterial>(lighting, parts[i].material);
+      materials[i] = std::make_unique<AnisoMaterial>(lighting, settings[i]);
       materials[i]->apply(actors[i], renderer);
     }
   }

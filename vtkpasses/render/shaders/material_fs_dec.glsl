@@ -27,7 +27,11 @@ uniform mat3 anisoWorldToEnvironment; // undoes the environment rotation about Z
 uniform samplerCube anisoEnvironment;
 uniform float anisoLog2TexelSolidAngle; // log2(4 pi / (6 size^2)) of mip level 0
 uniform float anisoMaxLod;
+#ifdef ANISO_FIELD_LOBE
+float anisoLodAnisotropy; // per fragment, from the field's lobe (set before any sample)
+#else
 uniform float anisoLodAnisotropy; // 0.25 log2((n_max + 1) / (n_min + 1)), see anisoSampleLod
+#endif
 uniform float anisoLodBias;       // added to every filtered level
 uniform float anisoPixelDecorrelation; // 1: each pixel shifts its sample set by a hash, 0: not
 uniform vec3 anisoIrradianceSH[9]; // SH9 radiance coefficients times the cosine-lobe factors
@@ -36,9 +40,24 @@ uniform vec3 anisoIrradianceSH[9]; // SH9 radiance coefficients times the cosine
 uniform sampler2D anisoHalfVectorLut; // RGBA32F: h in tangent space, log2 p_h
 uniform int anisoHalfVectorLutSize;
 #endif
-#if !defined(ANISO_HALF_VECTORS_FROM_LUT) || defined(ANISO_ENVIRONMENT_MIS) ||                 \
+#ifdef ANISO_FIELD_LOBE
+// The field changes the lobe per fragment: the material's exponents scaled (roughness) or
+// drawn towards their geometric mean (anisotropy), core/fields/field_mapping.h's fieldLobe.
+uniform vec2 anisoMaterialExponents; // the material's (n_u, n_v)
+vec2 anisoExponents;                 // per fragment (set before any sample)
+#elif !defined(ANISO_HALF_VECTORS_FROM_LUT) || defined(ANISO_ENVIRONMENT_MIS) ||               \
   defined(ANISO_ENVIRONMENT_SOURCES)
 uniform vec2 anisoExponents; // (n_u, n_v)
+#endif
+#ifdef ANISO_FIELD
+in vec2 anisoField;             // the field's value, and 1 where it is NaN
+uniform vec2 anisoFieldRange;   // the values mapped to t = 0 and t = 1
+uniform vec2 anisoFieldTargets; // (low, high): the target's values at t = 0 and t = 1
+#if defined(ANISO_FIELD_COLOR_ALBEDO) || defined(ANISO_FIELD_COLOR_F0)
+uniform sampler2D anisoFieldColors; // W x 1, linear RGB of the colour map at t = i / (W - 1)
+uniform int anisoFieldColorCount;   // W
+uniform vec3 anisoFieldNanColor;    // linear RGB
+#endif
 #endif
 #ifdef ANISO_ENVIRONMENT_MIS
 // Environment importance sampling (core/env/env_sampling.h), in environment coordinates.
@@ -87,6 +106,56 @@ uniform sampler2D anisoMetallicMap; // R: 1 = the metal F0 and no diffuse, 0 = d
 #endif
 
 const float anisoPi = 3.14159265358979;
+
+#ifdef ANISO_FIELD
+// t in [0, 1] of the field's value over its range, or -1 where it is NaN.
+float anisoFieldParameter()
+{
+  if (anisoField.y > 0.5)
+  {
+    return -1.0;
+  }
+  float span = anisoFieldRange.y - anisoFieldRange.x;
+  return span > 0.0 ? clamp((anisoField.x - anisoFieldRange.x) / span, 0.0, 1.0) : 0.5;
+}
+#if defined(ANISO_FIELD_COLOR_ALBEDO) || defined(ANISO_FIELD_COLOR_F0)
+// The colour map at t, read between the table's entries (entry i at its texel's centre).
+vec3 anisoFieldColor(float t)
+{
+  if (t < 0.0)
+  {
+    return anisoFieldNanColor;
+  }
+  float w = float(anisoFieldColorCount);
+  return textureLod(anisoFieldColors, vec2((t * (w - 1.0) + 0.5) / w, 0.5), 0.0).rgb;
+}
+#endif
+#ifdef ANISO_FIELD_LOBE
+// b^e without GLSL's undefined pow(0, 0) and pow of a negative base.
+float anisoPower(float b, float e)
+{
+  return e == 0.0 ? 1.0 : (b <= 0.0 ? 0.0 : pow(b, e));
+}
+
+// The exponents at t (fieldLobe in core/fields/field_mapping.cxx); NaN keeps the material's.
+vec2 anisoFieldLobe(vec2 n, float t)
+{
+  if (t < 0.0)
+  {
+    return n;
+  }
+  float s = mix(anisoFieldTargets.x, anisoFieldTargets.y, t);
+#ifdef ANISO_FIELD_ANISOTROPY
+  s = clamp(s, 0.0, 1.0);
+  float mean = sqrt(n.x * n.y);
+  float towards = anisoPower(mean, 1.0 - s);
+  return vec2(towards * anisoPower(n.x, s), towards * anisoPower(n.y, s));
+#else
+  return clamp(n * s, vec2(0.0), vec2(1e6));
+#endif
+}
+#endif
+#endif
 
 // Van der Corput radical inverse in base 2 (bit reversal).
 float anisoRadicalInverse2(uint bits)

@@ -76,6 +76,20 @@
 
     vec3 f0 = anisoF0;
     vec3 albedo = anisoAlbedo;
+#ifdef ANISO_FIELD
+    float fieldT = anisoFieldParameter();
+#ifdef ANISO_FIELD_COLOR_ALBEDO
+    albedo = anisoFieldColor(fieldT);
+#endif
+#ifdef ANISO_FIELD_COLOR_F0
+    f0 = anisoFieldColor(fieldT);
+#endif
+#ifdef ANISO_FIELD_LOBE
+    anisoExponents = anisoFieldLobe(anisoMaterialExponents, fieldT);
+    anisoLodAnisotropy = 0.25 * log2((max(anisoExponents.x, anisoExponents.y) + 1.0) /
+                                     (min(anisoExponents.x, anisoExponents.y) + 1.0));
+#endif
+#endif
 #ifdef ANISO_ALBEDO_MAP
     albedo *= textureGrad(anisoAlbedoMap, uv, anisoTCoordDx, anisoTCoordDy).rgb;
 #endif

@@ -21,4 +21,8 @@ out vec3 anisoTangentWC;
 in vec2 anisoTCoordMC;
 out vec2 anisoTCoord;
 #endif
+#ifdef ANISO_FIELD
+in vec2 anisoFieldMC; // the field's value and 1 where it is NaN (MaterialShaderSource.h)
+out vec2 anisoField;
+#endif
 out vec4 anisoClipPosition;

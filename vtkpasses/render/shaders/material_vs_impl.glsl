@@ -8,6 +8,9 @@
 #ifdef ANISO_HAVE_TCOORDS
   anisoTCoord = anisoTCoordMC;
 #endif
+#ifdef ANISO_FIELD
+  anisoField = anisoFieldMC;
+#endif
   // Clip coordinates interpolate linearly on the triangle, so the fragment recovers its exact
   // view ray (perspective or parallel) from them.
   anisoClipPosition = gl_Position;
