@@ -20,6 +20,7 @@
 #include "vtkpasses/mesh/MeshLoader.h"
 #include "vtkpasses/mesh/PartPlacement.h"
 #include "vtkpasses/mesh/SurfacePreparation.h"
+#include "vtkpasses/render/FieldValues.h"
 #include "vtkpasses/render/OffscreenRenderer.h"
 
 #include <algorithm>
@@ -46,7 +47,10 @@ const char* const kDeclared[] = {"env",          "env-rotation", "nu",       "nv
                                  "f0",           "albedo",       "method",   "filtered",
                                  "half-vectors", "samples",      "lut-size", "lut-samples",
                                  "cube-size",    "height-scale", "exposure", "tone-mapping",
-                                 "env-sampling", "line-width",   "line-width-unit"};
+                                 "env-sampling", "line-width",   "line-width-unit",
+                                 "field",        "field-target", "field-colormap",
+                                 "field-range",  "field-low",    "field-high",
+                                 "legend"};
 
 // "a|b|c" as "a | b | c", so that help texts can wrap between the alternatives.
 std::string spacedChoices(const std::string& syntax)
@@ -86,6 +90,23 @@ Option declared(const char* name)
   if (std::string(name) == "env")
   {
     o.valueName = "FILE|builtin:NAME";
+  }
+  // A field that drives the material is read as the maps are; its legend is drawn on the image.
+  if (o.spec.name.rfind("field", 0) == 0)
+  {
+    o.group = kGroupMaps;
+  }
+  if (o.spec.name == "legend")
+  {
+    o.group = kGroupOutput;
+  }
+  if (o.spec.name == "field")
+  {
+    o.valueName = "none|NAME[:magnitude|x|y|z|N]";
+  }
+  if (o.spec.name == "field-range")
+  {
+    o.valueName = "auto|MIN,MAX";
   }
   return o;
 }
@@ -522,6 +543,53 @@ std::string renderSummary()
   return "render a mesh with an anisotropic material to a PNG or EXR, headless";
 }
 
+// The fields the visible surface parts' materials show: a part without the array is drawn
+// without it, with a warning naming it and its file; when no part has it the run fails. What a
+// field holds that is not finite is counted (drawn in the colour map's NaN colour).
+static void checkFields(const std::vector<ScenePart>& scene, const std::vector<RenderPart>& parts,
+                 std::ostream& report, std::ostream& err)
+{
+  std::map<std::string, int> found; // field -> parts that have it
+  std::vector<std::pair<std::size_t, std::string>> missing;
+  for (std::size_t i = 0; i < parts.size(); ++i)
+  {
+    const RenderPart& part = parts[i];
+    if (!part.visible || scene[i].lines || !part.material.field)
+    {
+      continue;
+    }
+    const FieldSpec& spec = part.material.field->spec;
+    const std::string name = formatFieldSpec(spec);
+    found.emplace(name, 0);
+    const auto statistics = fieldStatistics(part.surface, spec);
+    if (!statistics)
+    {
+      missing.emplace_back(i, name);
+      continue;
+    }
+    ++found[name];
+    if (statistics->nonFinite > 0)
+    {
+      report << "render: field " << name << " of " << scene[i].name << ": "
+             << statistics->nonFinite << " of " << statistics->values << " "
+             << (statistics->perCell ? "cell" : "point")
+             << " values NaN or infinite (drawn in the colour map's NaN colour)\n";
+    }
+  }
+  for (const auto& [i, name] : missing)
+  {
+    if (found[name] == 0)
+    {
+      throw errorAbout(scene[i].source, "has no point or cell array '" +
+                                            parseFieldSpec(name, "field")->array +
+                                            "' for --field (aniso render --list-arrays lists "
+                                            "them)");
+    }
+    err << "aniso: warning: " << scene[i].source << ": part " << scene[i].name
+        << " has no array for field " << name << " (drawn without it)\n";
+  }
+}
+
 int runRender(const std::vector<std::string>& args, std::ostream& out, std::ostream& err)
 {
   const Command command = renderCommand();
@@ -746,6 +814,7 @@ int runRender(const std::vector<std::string>& args, std::ostream& out, std::ostr
     }
     parts.push_back(std::move(drawn));
   }
+  checkFields(scene, parts, report, err);
   // One part is drawn as the renderer's one-part scene; several as its parts (and a line part,
   // whose style the one-part scene has no place for, as a scene of one part).
   if (parts.size() == 1 && !anyLines)

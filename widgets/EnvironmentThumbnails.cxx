@@ -96,7 +96,7 @@ Image toneMappedThumbnail(const Image& hdr, int width)
   const double exposure = 0.18 / average;
   for (float& v : small.data)
   {
-    v = static_cast<float>(linearToSrgb(aces(exposure * v)));
+    v = static_cast<float>(swatchFromLinear(aces(exposure * v)));
   }
   return small;
 }

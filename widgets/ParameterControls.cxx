@@ -1,5 +1,6 @@
 #include "widgets/ParameterControls.h"
 
+#include "core/fields/color_map.h"
 #include "widgets/SliderMapping.h"
 
 #include <QColorDialog>
@@ -54,16 +55,14 @@ QDoubleSpinBox* makeSpinBox(const ParameterSpec& spec, QWidget* parent)
 }
 } // namespace
 
-double linearToSrgb(double linear)
+double swatchFromLinear(double linear)
 {
-  const double c = std::clamp(linear, 0.0, 1.0);
-  return c <= 0.0031308 ? 12.92 * c : 1.055 * std::pow(c, 1.0 / 2.4) - 0.055;
+  return linearToSrgb(std::clamp(linear, 0.0, 1.0));
 }
 
-double srgbToLinear(double encoded)
+double linearFromSwatch(double encoded)
 {
-  const double c = std::clamp(encoded, 0.0, 1.0);
-  return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4);
+  return srgbToLinear(std::clamp(encoded, 0.0, 1.0));
 }
 
 QString parameterToolTip(const ParameterSpec& spec)
@@ -200,8 +199,8 @@ void ColorControl::componentEdited()
 void ColorControl::pickColor()
 {
   QColor initial;
-  initial.setRgbF(linearToSrgb(spins_[0]->value()), linearToSrgb(spins_[1]->value()),
-                  linearToSrgb(spins_[2]->value()));
+  initial.setRgbF(swatchFromLinear(spins_[0]->value()), swatchFromLinear(spins_[1]->value()),
+                  swatchFromLinear(spins_[2]->value()));
   const QColor chosen = QColorDialog::getColor(initial, this, qstr(spec().label));
   if (!chosen.isValid())
   {
@@ -213,7 +212,7 @@ void ColorControl::pickColor()
   {
     // Three decimals, as the spin boxes show, so the model holds what the user sees.
     value.number[static_cast<std::size_t>(i)] =
-        std::round(srgbToLinear(encoded[i]) * 1000.0) / 1000.0;
+        std::round(linearFromSwatch(encoded[i]) * 1000.0) / 1000.0;
   }
   setValue(value);
   emit edited(value, false);
@@ -222,8 +221,8 @@ void ColorControl::pickColor()
 void ColorControl::updateSwatch()
 {
   QColor c;
-  c.setRgbF(linearToSrgb(spins_[0]->value()), linearToSrgb(spins_[1]->value()),
-            linearToSrgb(spins_[2]->value()));
+  c.setRgbF(swatchFromLinear(spins_[0]->value()), swatchFromLinear(spins_[1]->value()),
+            swatchFromLinear(spins_[2]->value()));
   swatch_->setStyleSheet(
       QString("background-color: %1; border: 1px solid palette(mid);").arg(c.name()));
 }

@@ -92,9 +92,10 @@ private:
 // NumberControl for numbers. Free text has no generic control (null).
 ParameterControl* makeParameterControl(const ParameterSpec& spec, QWidget* parent);
 
-// Linear <-> sRGB-encoded components in [0, 1] (the IEC 61966-2-1 curve), for swatches.
-double linearToSrgb(double linear);
-double srgbToLinear(double encoded);
+// Linear <-> sRGB-encoded components clamped to [0, 1] (core/fields/color_map.h's IEC
+// 61966-2-1 curve), for swatches.
+double swatchFromLinear(double linear);
+double linearFromSwatch(double encoded);
 } // namespace aniso
 
 Q_DECLARE_METATYPE(aniso::ParameterValue)

@@ -275,9 +275,9 @@ vtkSmartPointer<vtkScalarBarActor> makeFieldLegendActor(const FieldLegend& legen
   bar->SetTitle(legend.title.c_str());
   bar->SetNumberOfLabels(5);
   bar->SetOrientationToVertical();
-  bar->SetPosition(0.9 - 0.11 * index, 0.1);
-  bar->SetPosition2(0.1, 0.8); // width and height, normalised viewport
-  bar->SetMaximumWidthInPixels(110);
+  bar->SetPosition(0.85 - 0.14 * index, 0.1);
+  bar->SetPosition2(0.14, 0.8); // width and height, normalised viewport
+  bar->SetMaximumWidthInPixels(120);
   bar->SetTextPositionToPrecedeScalarBar();
   bar->DrawNanAnnotationOn();
   bar->SetNanAnnotation("NaN");
