@@ -10,8 +10,8 @@
 // Needs an X display (xvfb-run). Usage: bench_mis_render [--size S] [--samples N] [--frames F]
 #include "bench/bench_scenes.h"
 #include "bench/mis_width_rule.h"
-#include "bench/pixel_geometry.h"
-#include "bench/reference_image.h"
+#include "core/reference/pixel_geometry.h"
+#include "core/reference/reference_image.h"
 #include "bench/render_session.h"
 #include "core/env/env_sampling.h"
 #include "core/env/environment.h"
@@ -53,9 +53,9 @@ int main(int argc, char** argv)
     aniso::bench::RenderSession session(size, size);
     vtkSmartPointer<vtkPolyData> sphere = aniso::makeSphere(256, 128);
     session.setSurface(sphere, aniso::ViewSettings{});
-    const std::vector<aniso::bench::PixelSample> geometry = aniso::bench::castPixels(
-        aniso::bench::triangleMesh(sphere), session.clipToWorld(), size, size);
-    const std::vector<int> selected = aniso::bench::selectPixels(geometry, size, size, 1024);
+    const std::vector<aniso::PixelSample> geometry = aniso::castPixels(
+        aniso::triangleMesh(sphere), session.clipToWorld(), size, size);
+    const std::vector<int> selected = aniso::selectPixels(geometry, size, size, 1024);
     std::printf("Sphere %dx%d, %zu pixels compared, %d samples x %d frames, pixel decorrelation "
                 "on. Relative L2 against the reference integrator.\n\n"
                 "| Environment | Lobe | c width rule | c new | lobe only | MIS, width rule | MIS, "
@@ -79,14 +79,14 @@ int main(int argc, char** argv)
         m.pixelDecorrelation = true;
 
         // The reference at the selected pixels, with the frames the shader shades there.
-        aniso::bench::ReferenceImage reference;
+        aniso::ReferenceImage reference;
         reference.width = size;
         reference.height = size;
         aniso::ReferenceOptions options;
         options.relativeTolerance = 1e-4;
         for (const int index : selected)
         {
-          const aniso::bench::PixelSample& p = geometry[std::size_t(index)];
+          const aniso::PixelSample& p = geometry[std::size_t(index)];
           const aniso::Frame frame = aniso::Frame::fromNormalTangent(p.normal, p.tangent);
           const aniso::ReferenceResult r =
               sun ? aniso::integrateSpecularSunSky(lobe, m.f0, frame, p.view, *sun, options)
@@ -99,7 +99,7 @@ int main(int argc, char** argv)
         {
           session.useMaterial(settings);
           session.render(frames);
-          return aniso::bench::compareToReference(session.read(), reference).relativeL2;
+          return aniso::compareToReference(session.read(), reference).relativeL2;
         };
         const double lobeOnly = error(m);
         m.environmentSampling = aniso::EnvironmentSampling::Mis;

@@ -2,7 +2,7 @@
 
 #include "bench/bench_models.h"
 #include "bench/bench_scenes.h"
-#include "bench/reference_image.h"
+#include "core/reference/reference_image.h"
 #include "bench/render_session.h"
 #include "core/env/env_sources.h"
 #include "core/error.h"

@@ -72,35 +72,6 @@ glm::dmat4 viewClipToWorld(const BenchMesh& mesh, int width, int height)
   return clipToWorld(renderer);
 }
 
-TriangleMesh triangleMesh(vtkPolyData* surface)
-{
-  vtkDataArray* normals = surface->GetPointData()->GetArray("Normals");
-  vtkDataArray* tangents = surface->GetPointData()->GetArray("Tangents");
-  if (!normals || !tangents)
-  {
-    throw errorAbout("mesh", "a prepared surface with Normals and Tangents is needed");
-  }
-  TriangleMesh mesh;
-  const vtkIdType points = surface->GetNumberOfPoints();
-  for (vtkIdType i = 0; i < points; ++i)
-  {
-    mesh.positions.push_back(geometry::pointAt(surface->GetPoints(), i));
-    mesh.normals.push_back(geometry::tupleAt(normals, i));
-    mesh.tangents.push_back(geometry::tupleAt(tangents, i));
-  }
-  geometry::forEachCell(surface->GetPolys(),
-                        [&](vtkIdType count, const vtkIdType* ids)
-                        {
-                          if (count == 3)
-                          {
-                            mesh.triangles.push_back({static_cast<uint32_t>(ids[0]),
-                                                      static_cast<uint32_t>(ids[1]),
-                                                      static_cast<uint32_t>(ids[2])});
-                          }
-                        });
-  return mesh;
-}
-
 std::vector<std::string> benchEnvironments(const std::string& directory)
 {
   std::vector<std::string> specs{"builtin:studio"};

@@ -1,10 +1,10 @@
 #pragma once
 // The benchmark's fixed scene set: meshes with their views, environments, and the materials
 // (n_u, n_v), plus the VTK physically based material standing for each of them.
-#include "bench/pixel_geometry.h"
 #include "bench/render_session.h"
 #include "core/brdf/ashikhmin_shirley.h"
 #include "core/brdf/ggx.h"
+#include "vtkpasses/mesh/TriangleArrays.h"
 #include "vtkpasses/render/ViewSettings.h"
 
 #include <cstdint>
@@ -29,8 +29,6 @@ struct BenchMesh
 // around:0,0,1, from azimuth 30, elevation 40). Throws aniso::Error for another name.
 BenchMesh makeBenchMesh(const std::string& name);
 
-// The point arrays "Normals" and "Tangents" of a prepared surface and its triangles.
-TriangleMesh triangleMesh(vtkPolyData* surface);
 
 // Where the Blender CC0 studio-light HDRIs are installed (blender-data).
 constexpr const char* kBlenderHdriDirectory = "/usr/share/blender/datafiles/studiolights/world";

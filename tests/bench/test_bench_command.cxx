@@ -24,7 +24,7 @@
 #include "bench/bench_run.h"
 #include "bench/bench_scenes.h"
 #include "bench/flange_mesh.h"
-#include "bench/pixel_geometry.h"
+#include "core/reference/pixel_geometry.h"
 #include "bench/plot.h"
 #include "core/error.h"
 #include "core/image/image.h"

@@ -30,8 +30,8 @@
 // wrong Jacobian shows as a disagreement. The numbers printed are in docs/BENCHMARKS.md
 // ("References under the HDRIs").
 #include "bench/bench_scenes.h"
-#include "bench/pixel_geometry.h"
-#include "bench/reference_image.h"
+#include "core/reference/pixel_geometry.h"
+#include "core/reference/reference_image.h"
 #include "core/env/env_sampling.h"
 #include "core/env/environment.h"
 #include "core/env/parallel.h"

@@ -20,4 +20,21 @@ MaterialSettings materialFromParameters(const ParameterSet& parameters, Material
   base.field = fieldMappingFromParameters(parameters);
   return base;
 }
+
+std::optional<ReferenceMaterial> referenceMaterialOf(const MaterialSettings& settings,
+                                                     std::string& why)
+{
+  if (settings.usesMaps())
+  {
+    why = "the reference does not integrate maps (normal, quaternion, TPR, height, albedo, "
+          "occlusion or metallic)";
+    return std::nullopt;
+  }
+  if (settings.field)
+  {
+    why = "the reference does not integrate a data field (field)";
+    return std::nullopt;
+  }
+  return ReferenceMaterial{settings.lobe, settings.f0, settings.albedo};
+}
 } // namespace aniso

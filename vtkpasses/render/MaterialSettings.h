@@ -6,10 +6,12 @@
 #include "core/fields/field_mapping.h"
 #include "core/image/image.h"
 #include "core/parameters/choices.h" // SpecularMethod, HalfVectorSource, EnvironmentSampling
+#include "core/reference/reference_image.h"
 
 #include <glm/vec3.hpp>
 #include <memory>
 #include <optional>
+#include <string>
 
 namespace aniso
 {
@@ -93,4 +95,10 @@ struct MaterialSettings
 // height scale, the field mapping.
 // Everything else (the maps) keeps its value in BASE.
 MaterialSettings materialFromParameters(const ParameterSet& parameters, MaterialSettings base = {});
+
+// What the CPU reference shades for SETTINGS (its lobe, F0 and albedo: what every method, filter
+// and sampling of the material converges to), or nullopt with WHY set when the reference does
+// not cover what the material draws: maps or a data field.
+std::optional<ReferenceMaterial> referenceMaterialOf(const MaterialSettings& settings,
+                                                     std::string& why);
 } // namespace aniso

@@ -5,6 +5,7 @@
 #include "vtkpasses/render/DrawingFrame.h"
 #include "vtkpasses/render/EnvironmentLighting.h"
 #include "vtkpasses/render/FieldValues.h"
+#include "vtkpasses/render/RendererMatrices.h"
 #include "vtkpasses/render/vtkAnisoAccumulationPass.h"
 
 #include <X11/Xlib.h>
@@ -304,6 +305,9 @@ RenderResult renderOffscreen(const RenderSettings& s)
     result.renderer = reinterpret_cast<const char*>(name);
   }
   result.linear = pass->ReadAccumulation();
+  result.drawing = drawing;
+  result.clipToWorld = clipToWorld(renderer);
+  result.worldToEnvironment = lighting->worldToEnvironment();
   if (result.linear.empty())
   {
     throw errorAbout("render", "no image was rendered");

@@ -15,6 +15,7 @@
 #include "core/env/environment.h"
 #include "core/image/image.h"
 #include "vtkpasses/render/DisplaySettings.h"
+#include "vtkpasses/render/DrawingFrame.h"
 #include "vtkpasses/render/LineStyle.h"
 #include "vtkpasses/render/MaterialSettings.h"
 #include "vtkpasses/render/MaterialShaderSource.h"
@@ -22,6 +23,8 @@
 
 #include <cstdint>
 #include <functional>
+#include <glm/mat3x3.hpp>
+#include <glm/mat4x4.hpp>
 #include <memory>
 #include <optional>
 #include <string>
@@ -107,6 +110,12 @@ struct RenderResult
   bool mapsDropped = false;         // maps given but a visible mesh has no texture coordinates
   std::string renderer;             // the OpenGL renderer string (e.g. "llvmpipe ...")
   std::vector<RenderedPart> parts;  // every part of sceneParts(), in order
+  // Where the pixels' rays go, for the CPU reference (core/reference/pixel_geometry.h): the
+  // scene was drawn in DRAWING's frame, its clip coordinates back to that frame by CLIP_TO_WORLD,
+  // and the environment turned by WORLD_TO_ENVIRONMENT.
+  DrawingFrame drawing;
+  glm::dmat4 clipToWorld{1.0};
+  glm::dmat3 worldToEnvironment{1.0};
 };
 
 // Throws aniso::Error "SUBJECT: reason" for invalid settings (a visible part's invalid material

@@ -10,16 +10,18 @@
 #include <glm/vec3.hpp>
 #include <vector>
 
-namespace aniso::bench
+namespace aniso
 {
 // A triangle mesh as plain arrays: the point arrays "Normals" and "Tangents" of a prepared
-// surface (SurfacePreparation.h), one entry per point.
+// surface (SurfacePreparation.h), one entry per point; a scene of parts is one mesh whose
+// triangles say which part's material they take (empty: all the first).
 struct TriangleMesh
 {
   std::vector<glm::dvec3> positions;
   std::vector<glm::dvec3> normals;
   std::vector<glm::dvec3> tangents;
   std::vector<std::array<uint32_t, 3>> triangles;
+  std::vector<int> triangleMaterials; // per triangle, or empty
 };
 
 struct PixelSample
@@ -29,6 +31,7 @@ struct PixelSample
   glm::dvec3 normal{0.0, 0.0, 1.0};  // unit; reversed when the triangle is seen from behind
   glm::dvec3 tangent{1.0, 0.0, 0.0}; // unit, orthogonal to normal
   glm::dvec3 view{0.0, 0.0, 1.0};    // unit, from the hit towards the eye
+  int material = 0;                  // the hit triangle's (TriangleMesh::triangleMaterials)
 };
 
 // Ray through the centre of pixel (x, y), row 0 at the top, of a width x height image drawn
@@ -41,8 +44,14 @@ struct PixelRay
 };
 PixelRay pixelRay(const glm::dmat4& clipToWorld, int x, int y, int width, int height);
 
+// Appends PART's triangles to SCENE, its positions mapped p -> (p - centre) / scale (a scene drawn
+// in the frame of its bounding sphere, vtkpasses/render/DrawingFrame.h), its triangles taking
+// MATERIAL.
+void appendTriangles(TriangleMesh& scene, const TriangleMesh& part, int material,
+                     const glm::dvec3& centre = glm::dvec3(0.0), double scale = 1.0);
+
 // Every pixel of the image, row-major from the top row. Rays run on all hardware threads.
 // Throws aniso::Error "mesh: reason" for inconsistent arrays or out-of-range indices.
 std::vector<PixelSample> castPixels(const TriangleMesh& mesh, const glm::dmat4& clipToWorld,
                                     int width, int height);
-} // namespace aniso::bench
+} // namespace aniso

@@ -1,4 +1,4 @@
-#include "bench/pixel_geometry.h"
+#include "core/reference/pixel_geometry.h"
 
 #include "core/env/parallel.h"
 #include "core/error.h"
@@ -10,7 +10,7 @@
 #include <limits>
 #include <numeric>
 
-namespace aniso::bench
+namespace aniso
 {
 namespace
 {
@@ -210,6 +210,10 @@ void validateMesh(const TriangleMesh& mesh)
   {
     throw errorAbout("mesh", "normals and tangents must have one entry per point");
   }
+  if (!mesh.triangleMaterials.empty() && mesh.triangleMaterials.size() != mesh.triangles.size())
+  {
+    throw errorAbout("mesh", "triangle materials must have one entry per triangle");
+  }
   for (const auto& triangle : mesh.triangles)
   {
     for (uint32_t corner : triangle)
@@ -232,6 +236,28 @@ glm::dvec3 anyPerpendicular(const glm::dvec3& n)
   return glm::normalize(axis - glm::dot(axis, n) * n);
 }
 } // namespace
+
+void appendTriangles(TriangleMesh& scene, const TriangleMesh& part, int material,
+                     const glm::dvec3& centre, double scale)
+{
+  validateMesh(part);
+  if (scene.triangleMaterials.size() != scene.triangles.size())
+  {
+    scene.triangleMaterials.resize(scene.triangles.size(), 0);
+  }
+  const auto offset = static_cast<uint32_t>(scene.positions.size());
+  for (const glm::dvec3& p : part.positions)
+  {
+    scene.positions.push_back((p - centre) / scale);
+  }
+  scene.normals.insert(scene.normals.end(), part.normals.begin(), part.normals.end());
+  scene.tangents.insert(scene.tangents.end(), part.tangents.begin(), part.tangents.end());
+  for (const auto& t : part.triangles)
+  {
+    scene.triangles.push_back({t[0] + offset, t[1] + offset, t[2] + offset});
+    scene.triangleMaterials.push_back(material);
+  }
+}
 
 PixelRay pixelRay(const glm::dmat4& clipToWorld, int x, int y, int width, int height)
 {
@@ -271,6 +297,7 @@ std::vector<PixelSample> castPixels(const TriangleMesh& mesh, const glm::dmat4& 
           s.position =
               w * mesh.positions[c[0]] + u * mesh.positions[c[1]] + v * mesh.positions[c[2]];
           s.view = -ray.direction;
+          s.material = mesh.triangleMaterials.empty() ? 0 : mesh.triangleMaterials[triangle];
           // Counter-clockwise triangles face the viewer when their geometric normal does.
           const glm::dvec3 face = glm::cross(mesh.positions[c[1]] - mesh.positions[c[0]],
                                              mesh.positions[c[2]] - mesh.positions[c[0]]);
@@ -291,4 +318,4 @@ std::vector<PixelSample> castPixels(const TriangleMesh& mesh, const glm::dmat4& 
       4);
   return pixels;
 }
-} // namespace aniso::bench
+} // namespace aniso

@@ -4,19 +4,21 @@
 // shader shades there (pixel_geometry.h). References are expensive (milliseconds to a tenth of
 // a second per pixel), so they are cached on disk, keyed by everything they depend on.
 // GL-free.
-#include "bench/pixel_geometry.h"
+#include "core/reference/pixel_geometry.h"
 #include "core/brdf/ashikhmin_shirley.h"
 #include "core/brdf/ggx.h"
 #include "core/env/environment.h"
 #include "core/image/image.h"
 #include "core/reference/reference_integrator.h"
 
+#include <atomic>
 #include <cstdint>
+#include <glm/mat3x3.hpp>
 #include <glm/vec3.hpp>
 #include <string>
 #include <vector>
 
-namespace aniso::bench
+namespace aniso
 {
 // The model a reference integrates: Ashikhmin-Shirley (the project's renders) or GGX (VTK's
 // own physically based shading, its lobe from ggxLobeFromVtk). GGX's anisotropy direction is
@@ -83,4 +85,43 @@ struct ImageError
 };
 
 ImageError compareToReference(const Image& render, const ReferenceImage& reference);
-} // namespace aniso::bench
+
+// A scene's reference: what the anisotropic environment material converges to at each pixel, per
+// part's material (PixelSample::material indexes MATERIALS): the Ashikhmin-Shirley specular
+// (integrateSpecular, the sun-sky's sun over its own cone) plus the Lambert diffuse the shader
+// adds, (1 - F(n.v)) albedo / pi times the irradiance E(n) (integrateIrradiance), F Schlick's
+// at the view. The environment is turned as the renderer turns it: WORLD_TO_ENVIRONMENT maps the
+// frame and the view into the environment's coordinates. The error estimate adds the two
+// integrals' (the diffuse one times its factor). Not cached: a view's pixels are its own.
+struct ReferenceMaterial
+{
+  AsLobe lobe;
+  glm::dvec3 f0{1.0};
+  glm::dvec3 albedo{0.0};
+};
+ReferencePixel referencePixel(const PixelSample& sample, int x, int y,
+                              const ReferenceMaterial& material, const Environment& environment,
+                              const glm::dmat3& worldToEnvironment,
+                              const ReferenceOptions& options, uint64_t* evaluations = nullptr);
+
+// The scene's reference at the SELECTED pixels (row-major indices into GEOMETRY), on all
+// hardware threads. CANCEL (may be null) is read between pixels: once true, the pixels not yet
+// begun are left out (ReferenceImage::pixels holds those done, in no particular order, and
+// cancelled is set).
+struct SceneReference : ReferenceImage
+{
+  bool cancelled = false;
+};
+SceneReference computeSceneReference(const std::vector<PixelSample>& geometry, int width,
+                                     int height, const std::vector<int>& selected,
+                                     const std::vector<ReferenceMaterial>& materials,
+                                     const Environment& environment,
+                                     const glm::dmat3& worldToEnvironment,
+                                     const ReferenceOptions& options,
+                                     const std::atomic<bool>* cancel = nullptr);
+
+// Per compared pixel of REFERENCE, |render - ref| / rms(ref) (RGB lengths; rms over the
+// compared pixels, as ImageError::percentile99): an image of WIDTH x HEIGHT with one channel,
+// NaN where nothing was compared.
+Image errorMap(const Image& render, const ReferenceImage& reference);
+} // namespace aniso

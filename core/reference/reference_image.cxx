@@ -1,4 +1,4 @@
-#include "bench/reference_image.h"
+#include "core/reference/reference_image.h"
 
 #include "core/env/parallel.h"
 #include "core/env/sun_sky.h"
@@ -17,7 +17,7 @@
 #include <sstream>
 #include <unistd.h>
 
-namespace aniso::bench
+namespace aniso
 {
 namespace
 {
@@ -322,6 +322,113 @@ ReferenceImage computeReference(const std::vector<PixelSample>& geometry, int wi
   return image;
 }
 
+ReferencePixel referencePixel(const PixelSample& s, int x, int y, const ReferenceMaterial& material,
+                              const Environment& environment, const glm::dmat3& worldToEnvironment,
+                              const ReferenceOptions& options, uint64_t* evaluations)
+{
+  const Frame world = Frame::fromNormalTangent(s.normal, s.tangent);
+  const Frame frame = Frame::fromNormalTangent(worldToEnvironment * world.n,
+                                               worldToEnvironment * world.t);
+  const glm::dvec3 view = worldToEnvironment * s.view;
+  const auto* sunSky = dynamic_cast<const SunSkyEnvironment*>(&environment);
+  const ReferenceResult specular =
+      sunSky ? integrateSpecularSunSky(material.lobe, material.f0, frame, view, *sunSky, options)
+             : integrateSpecular(material.lobe, material.f0, frame, view, environment, options);
+  ReferencePixel p{x, y, specular.value, specular.errorEstimate, specular.converged};
+  uint64_t count = specular.evaluations;
+  if (material.albedo != glm::dvec3(0.0))
+  {
+    // The shader's k_d = 1 - F(n.v), Schlick at the view angle.
+    const double m = std::clamp(1.0 - glm::dot(frame.n, view), 0.0, 1.0);
+    const glm::dvec3 fresnel = material.f0 + (1.0 - material.f0) * std::pow(m, 5.0);
+    const ReferenceResult irradiance = integrateIrradiance(frame.n, environment, options);
+    const glm::dvec3 factor = (1.0 - fresnel) * material.albedo / M_PI;
+    p.value += factor * irradiance.value;
+    p.errorEstimate += luminance(factor) * irradiance.errorEstimate;
+    p.converged = p.converged && irradiance.converged;
+    count += irradiance.evaluations;
+  }
+  if (evaluations)
+  {
+    *evaluations = count;
+  }
+  return p;
+}
+
+SceneReference computeSceneReference(const std::vector<PixelSample>& geometry, int width,
+                                     int height, const std::vector<int>& selected,
+                                     const std::vector<ReferenceMaterial>& materials,
+                                     const Environment& environment,
+                                     const glm::dmat3& worldToEnvironment,
+                                     const ReferenceOptions& options,
+                                     const std::atomic<bool>* cancel)
+{
+  SceneReference image;
+  image.width = width;
+  image.height = height;
+  const auto start = std::chrono::steady_clock::now();
+  std::vector<ReferencePixel> pixels(selected.size());
+  std::vector<char> done(selected.size(), 0);
+  std::vector<uint64_t> evaluations(selected.size(), 0);
+  parallelFor(
+      static_cast<int>(selected.size()),
+      [&](int i)
+      {
+        if (cancel && cancel->load(std::memory_order_relaxed))
+        {
+          return;
+        }
+        const int index = selected[std::size_t(i)];
+        const PixelSample& s = geometry.at(std::size_t(index));
+        if (!s.hit || s.material < 0 || s.material >= int(materials.size()))
+        {
+          throw errorAbout("reference", "pixel " + std::to_string(index) +
+                                            " is not on a part with a material");
+        }
+        pixels[std::size_t(i)] =
+            referencePixel(s, index % width, index / width, materials[std::size_t(s.material)],
+                           environment, worldToEnvironment, options, &evaluations[std::size_t(i)]);
+        done[std::size_t(i)] = 1;
+      });
+  for (std::size_t i = 0; i < pixels.size(); ++i)
+  {
+    if (done[i])
+    {
+      image.pixels.push_back(pixels[i]);
+      image.evaluations += evaluations[i];
+      image.unconverged += pixels[i].converged ? 0 : 1;
+    }
+  }
+  image.cancelled = image.pixels.size() < selected.size();
+  image.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  image.relativeErrorBound = errorBound(image.pixels);
+  return image;
+}
+
+Image errorMap(const Image& render, const ReferenceImage& reference)
+{
+  if (render.width != reference.width || render.height != reference.height || render.channels < 3)
+  {
+    throw errorAbout("render", "image size or channels differ from the reference");
+  }
+  Image map(reference.width, reference.height, 1);
+  std::fill(map.data.begin(), map.data.end(), std::numeric_limits<float>::quiet_NaN());
+  double norm = 0.0;
+  for (const ReferencePixel& p : reference.pixels)
+  {
+    norm += glm::dot(p.value, p.value);
+  }
+  const double rms =
+      reference.pixels.empty() ? 0.0 : std::sqrt(norm / double(reference.pixels.size()));
+  for (const ReferencePixel& p : reference.pixels)
+  {
+    const glm::dvec3 value(render.at(p.x, p.y, 0), render.at(p.x, p.y, 1), render.at(p.x, p.y, 2));
+    const double d = glm::length(value - p.value);
+    map.at(p.x, p.y, 0) = static_cast<float>(rms > 0.0 ? d / rms : d);
+  }
+  return map;
+}
+
 ImageError compareToReference(const Image& render, const ReferenceImage& reference)
 {
   if (render.width != reference.width || render.height != reference.height || render.channels < 4)
@@ -366,4 +473,4 @@ ImageError compareToReference(const Image& render, const ReferenceImage& referen
   e.percentile99 = pixelErrors[rank] / rms;
   return e;
 }
-} // namespace aniso::bench
+} // namespace aniso
