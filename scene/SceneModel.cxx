@@ -528,6 +528,40 @@ std::vector<std::string> SceneModel::editedPartArrays() const
   return names;
 }
 
+void SceneModel::setPartFields(const std::string& part, std::vector<std::string> names)
+{
+  const auto it = partFields_.find(part);
+  if (it != partFields_.end() ? it->second == names : names.empty())
+  {
+    return;
+  }
+  partFields_[part] = std::move(names);
+  emit partArraysChanged();
+}
+
+const std::vector<std::string>& SceneModel::partFields(const std::string& part) const
+{
+  static const std::vector<std::string> none;
+  const auto it = partFields_.find(part);
+  return it == partFields_.end() ? none : it->second;
+}
+
+std::vector<std::string> SceneModel::editedPartFields() const
+{
+  std::vector<std::string> names;
+  for (int i : editedParts())
+  {
+    for (const std::string& name : partFields(parts_[size_t(i)].name))
+    {
+      if (std::find(names.begin(), names.end(), name) == names.end())
+      {
+        names.push_back(name);
+      }
+    }
+  }
+  return names;
+}
+
 void SceneModel::setSelection(std::vector<int> parts)
 {
   std::vector<int> kept;

@@ -180,6 +180,12 @@ public:
   const std::vector<std::string>& partArrays(const std::string& part) const;
   // Those of the edited parts, each name once, in part order.
   std::vector<std::string> editedPartArrays() const;
+  // Likewise what a part's mesh offers the `field` key (its data arrays, a vector's components:
+  // "NAME", "NAME:x", ...), for the Maps dock's list; emits partArraysChanged when they change.
+  void setPartFields(const std::string& part, std::vector<std::string> names);
+  const std::vector<std::string>& partFields(const std::string& part) const;
+  // Those of the edited parts, each once, in part order.
+  std::vector<std::string> editedPartFields() const;
 
   const CameraState& camera() const { return camera_; }
   // Throws aniso::Error "view: reason" (checkCameraState) and keeps the previous camera.
@@ -204,6 +210,7 @@ private:
   MaterialLibrary library_;
   std::vector<int> selection_;
   std::map<std::string, std::vector<std::string>> partArrays_;
+  std::map<std::string, std::vector<std::string>> partFields_;
   std::vector<Validator> validators_;
   CameraState camera_;
 };

@@ -190,6 +190,49 @@ std::vector<std::string> SceneAssets::vectorArrays(const std::string& mesh,
   return vectorArrayNames(loadedMesh(mesh, block)->polyData);
 }
 
+std::vector<std::string> SceneAssets::fieldChoices(const std::string& mesh,
+                                                   const std::string& block)
+{
+  const std::string key = mesh + readOptionsKey(mesh);
+  const bool builtin = mesh.rfind(kBuiltinPrefix, 0) == 0;
+  if (block.empty() ? !builtin && !meshes_.contains(key) : !blocks_.contains(key))
+  {
+    return {};
+  }
+  std::vector<std::string> choices;
+  const auto offer = [&choices](std::string choice)
+  {
+    if (std::find(choices.begin(), choices.end(), choice) == choices.end())
+    {
+      choices.push_back(std::move(choice));
+    }
+  };
+  for (const ArrayInfo& info : describeArrays(loadedMesh(mesh, block)->polyData))
+  {
+    if (isGeometryArray(info.name))
+    {
+      continue;
+    }
+    offer(info.name); // the value itself, or a vector's magnitude
+    if (info.components == 2 || info.components == 3)
+    {
+      static const char* const kAxes[] = {"x", "y", "z"};
+      for (int c = 0; c < info.components; ++c)
+      {
+        offer(info.name + ":" + kAxes[c]);
+      }
+    }
+    else if (info.components > 3)
+    {
+      for (int c = 0; c < info.components; ++c)
+      {
+        offer(info.name + ":" + std::to_string(c));
+      }
+    }
+  }
+  return choices;
+}
+
 std::shared_ptr<const SceneAssets::Surface> SceneAssets::surfaceEntry(const std::string& mesh,
                                                                       const std::string& block,
                                                                       const std::string& tangents)

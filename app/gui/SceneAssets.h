@@ -121,6 +121,12 @@ public:
   // tangent model (MeshArrays.h, vectorArrayNames); none when it is not loaded (nothing is read
   // here). Throws aniso::Error "MESH: no part BLOCK" for a block the file does not have.
   std::vector<std::string> vectorArrays(const std::string& mesh, const std::string& block);
+  // What the same block offers the `field` key (core/fields/field_mapping.h), from its data
+  // arrays (MeshArrays.h, describeArrays; not isGeometryArray), each name once, point arrays
+  // first: "NAME" for an array of one component; "NAME" (its magnitude), "NAME:x", "NAME:y" and
+  // for three components "NAME:z" for an array of 2 or 3; "NAME" and "NAME:0", "NAME:1", ... for
+  // any other count. None when it is not loaded; throws as vectorArrays does.
+  std::vector<std::string> fieldChoices(const std::string& mesh, const std::string& block);
   // Its stand-in while the view moves (LevelOfDetail.h), null when it is drawn as it is. Made
   // with the surface, so a surface prepared on a worker brings it along.
   vtkSmartPointer<vtkPolyData> interactiveSurface(const std::string& mesh,

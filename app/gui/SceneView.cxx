@@ -4,10 +4,12 @@
 #include "app/gui/SceneAssets.h"
 #include "app/gui/ViewCamera.h"
 #include "core/error.h"
+#include "core/parameters/choices.h"
 #include "scene/LutScheduler.h"
 #include "vtkpasses/mesh/PartPlacement.h"
 #include "vtkpasses/render/AnisoMaterial.h"
 #include "vtkpasses/render/EnvironmentLighting.h"
+#include "vtkpasses/render/FieldValues.h"
 #include "vtkpasses/render/LineStyle.h"
 #include "vtkpasses/render/vtkAnisoAccumulationPass.h"
 
@@ -18,20 +20,21 @@
 #include <functional>
 #include <vtkActor.h>
 #include <vtkAppendPolyData.h>
-#include <vtkOutlineSource.h>
-#include <vtkPolyDataMapper.h>
-#include <vtkCellPicker.h>
-#include <vtkProperty.h>
 #include <vtkCallbackCommand.h>
+#include <vtkCellPicker.h>
 #include <vtkCommand.h>
 #include <vtkInteractorObserver.h>
 #include <vtkOpenGLPolyDataMapper.h>
 #include <vtkOpenGLRenderWindow.h>
 #include <vtkOpenGLRenderer.h>
+#include <vtkOutlineSource.h>
 #include <vtkPolyData.h>
+#include <vtkPolyDataMapper.h>
+#include <vtkProperty.h>
 #include <vtkRenderStepsPass.h>
 #include <vtkRenderWindow.h>
 #include <vtkRenderWindowInteractor.h>
+#include <vtkScalarBarActor.h>
 #include <vtk_glew.h> // before any other GL header
 
 namespace aniso
@@ -310,6 +313,11 @@ vtkOpenGLRenderer* SceneView::renderer() const
   return renderer_;
 }
 
+vtkRenderer* SceneView::overlay() const
+{
+  return overlay_;
+}
+
 void SceneView::setSettleMs(int ms)
 {
   settle_->setInterval(ms);
@@ -513,6 +521,7 @@ bool SceneView::syncParts()
         }
         part.loaded = true;
         model_->setPartArrays(wanted.name, assets_->vectorArrays(wanted.mesh, wanted.block));
+        model_->setPartFields(wanted.name, assets_->fieldChoices(wanted.mesh, wanted.block));
         for (const std::string& note : assets_->surfaceNotes(wanted.mesh, wanted.block, tangents))
         {
           emit noteAdded(QString::fromStdString(note));
@@ -527,10 +536,12 @@ bool SceneView::syncParts()
           // The mesh may have loaded and its tangent model failed (array:NAME of an array it
           // lacks): its arrays are still offered.
           model_->setPartArrays(wanted.name, assets_->vectorArrays(wanted.mesh, wanted.block));
+          model_->setPartFields(wanted.name, assets_->fieldChoices(wanted.mesh, wanted.block));
         }
         catch (const Error&)
         {
           model_->setPartArrays(wanted.name, {});
+          model_->setPartFields(wanted.name, {});
         }
         emit errorOccurred(tr("Part %1 skipped: %2")
                                .arg(QString::fromStdString(wanted.name),
@@ -795,6 +806,7 @@ void SceneView::setPartsShown(bool shown)
     part->actor->SetVisibility(shown);
   }
   applySelection();
+  applyLegends();
 }
 
 void SceneView::applySelection()
@@ -866,6 +878,7 @@ void SceneView::applyMaterial()
 {
   if (parts_.empty())
   {
+    applyLegends();
     return;
   }
   // The LUT scheduler bakes the tables of the edited material (the docks' n_u, n_v): its parts
@@ -877,6 +890,9 @@ void SceneView::applyMaterial()
   int frames = 1;
   bool first = true;
   bool mapsDropped = false;
+  // Each drawn part's settings first, then their fields' automatic ranges resolved over the
+  // drawn parts together, then the settings to the materials.
+  std::vector<char> bakedFor(parts_.size(), 0);
   for (std::size_t i = 0; i < parts_.size(); ++i)
   {
     PartView& part = *parts_[i];
@@ -898,6 +914,7 @@ void SceneView::applyMaterial()
                        ready.request.lobe.nv == wanted.lobe.nv &&
                        ready.request.size == wanted.lutSize &&
                        ready.request.samples == wanted.brdfLutSamples;
+    bakedFor[i] = baked;
     const bool editedPart =
         std::find(edited.begin(), edited.end(), part.material) != edited.end();
     if (editedPart && needsLuts(wanted) && !baked)
@@ -920,11 +937,20 @@ void SceneView::applyMaterial()
       wanted.environmentSampling = EnvironmentSampling::Off;
     }
     part.full = wanted;
+  }
+  resolveFields();
+  for (std::size_t i = 0; i < parts_.size(); ++i)
+  {
+    PartView& part = *parts_[i];
+    if (!part.inRenderer || !part.shading)
+    {
+      continue;
+    }
     if (first)
     {
       // What the planner and the quality follow: the first drawn part's settings (the samples
       // per frame and the quality are the scene's, the same for every part).
-      full_ = wanted;
+      full_ = part.full;
     }
     MaterialSettings shown = part.full;
     if (interacting_)
@@ -958,7 +984,7 @@ void SceneView::applyMaterial()
     // The scheduler's tables when they are this part's: nothing is read or baked here for the
     // edited parts, even when the cache has dropped them from memory since.
     changedSettings_ = changedSettings_ || shown != part.shading->settings();
-    if (baked)
+    if (bakedFor[i])
     {
       part.shading->setSettings(shown, ready.halfVector, ready.brdf);
     }
@@ -969,15 +995,101 @@ void SceneView::applyMaterial()
     mapsDropped = mapsDropped || part.shading->mapsDropped();
   }
   pass_->SetTargetFrames(std::max(frames, 1));
+  applyLegends();
   if (mapsDropped)
   {
     emit noteAdded(tr("The mesh has no texture coordinates: its maps are not used."));
   }
 }
 
+void SceneView::resolveFields()
+{
+  // What the resolution depends on: each drawn part's surface (and its modification time) and
+  // its field. applyMaterial runs often (each settle, each replanned run) and the statistics
+  // read every value, so an unchanged scene keeps the ranges it resolved.
+  std::vector<ResolvedField> wanted;
+  std::vector<vtkPolyData*> surfaces;
+  std::vector<MaterialSettings*> materials;
+  for (auto& part : parts_)
+  {
+    if (!part->inRenderer || !part->shading || !part->full.field)
+    {
+      continue;
+    }
+    ResolvedField f;
+    f.surface = part->surface;
+    f.surfaceTime = part->surface ? part->surface->GetMTime() : 0;
+    f.spec = part->full.field->spec;
+    f.automatic = part->full.field->range.automatic;
+    wanted.push_back(f);
+    surfaces.push_back(part->surface);
+    materials.push_back(&part->full);
+  }
+  const bool same = wanted.size() == resolvedFields_.size() &&
+                    std::equal(wanted.begin(), wanted.end(), resolvedFields_.begin(),
+                               [](const ResolvedField& a, const ResolvedField& b)
+                               {
+                                 return a.surface == b.surface && a.surfaceTime == b.surfaceTime &&
+                                        a.spec == b.spec && a.automatic == b.automatic;
+                               });
+  if (same)
+  {
+    for (std::size_t k = 0; k < materials.size(); ++k)
+    {
+      materials[k]->field->range = resolvedFields_[k].range;
+    }
+    return;
+  }
+  // Parts that show one array share one colour scale, as ParaView colours a multiblock
+  // dataset (FieldValues.h).
+  resolveFieldRanges(surfaces, materials);
+  for (std::size_t k = 0; k < materials.size(); ++k)
+  {
+    wanted[k].range = materials[k]->field->range;
+  }
+  resolvedFields_ = std::move(wanted);
+}
+
+void SceneView::applyLegends()
+{
+  // The colour legends of the fields the drawn parts show through a colour map (their ranges
+  // resolved), over the image in the overlay (the accumulated image stays as it is); none while
+  // another model's view draws in the parts' place, or with legend off.
+  std::vector<FieldLegend> wanted;
+  if (partsShown_ && parseOnOff("legend", model_->text("legend")) == OnOff::On)
+  {
+    std::vector<const MaterialSettings*> shown;
+    for (const auto& part : parts_)
+    {
+      if (part->inRenderer && part->shading)
+      {
+        shown.push_back(&part->full);
+      }
+    }
+    wanted = fieldLegends(shown);
+  }
+  if (wanted == legends_)
+  {
+    return;
+  }
+  for (const auto& actor : legendActors_)
+  {
+    overlay_->RemoveViewProp(actor);
+  }
+  legendActors_.clear();
+  for (std::size_t k = 0; k < wanted.size(); ++k)
+  {
+    legendActors_.push_back(makeFieldLegendActor(wanted[k], int(k)));
+    overlay_->AddViewProp(legendActors_.back());
+  }
+  legends_ = std::move(wanted);
+  requestRender();
+}
+
 void SceneView::applyDisplay()
 {
   pass_->SetDisplaySettings(displayFromParameters(model_->parameters()));
+  applyLegends();
 }
 
 void SceneView::applyCameraFromModel()

@@ -27,6 +27,7 @@
 #include "scene/SceneModel.h"
 #include "vtkpasses/render/DisplaySettings.h"
 #include "vtkpasses/render/DrawingFrame.h"
+#include "vtkpasses/render/FieldValues.h"
 #include "vtkpasses/render/MaterialSettings.h"
 #include "vtkpasses/render/OffscreenRenderer.h"
 
@@ -39,6 +40,7 @@
 #include <vector>
 #include <vtkNew.h>
 #include <vtkSmartPointer.h>
+#include <vtkType.h>
 
 class QStringList;
 class QTimer;
@@ -49,6 +51,7 @@ class vtkOpenGLRenderer;
 class vtkRenderStepsPass;
 class vtkRenderWindow;
 class vtkRenderer;
+class vtkScalarBarActor;
 class vtkCallbackCommand;
 
 namespace aniso
@@ -78,6 +81,10 @@ public:
   ~SceneView() override;
 
   vtkOpenGLRenderer* renderer() const;
+  // The renderer drawn over the scene's (its layer 1, sharing its camera): the selected parts'
+  // outline and the colour legends of the fields the drawn parts show (FieldValues.h), with
+  // legend on, one vtkScalarBarActor a distinct array, colour map and range.
+  vtkRenderer* overlay() const;
 
   // The scene's parts as drawn: one actor each, with its own material (the part's library
   // material over the scene's parameters). Parts whose surface did not load or prepare are
@@ -218,6 +225,12 @@ private:
   // Runs ACTION; an aniso::Error it throws is reported (errorOccurred).
   void attempt(const std::function<void()>& action);
   void applyMaterial();
+  // The drawn parts' fields with an automatic range (MaterialSettings::field) take the joint
+  // range of their array over the drawn parts that show it (resolveFieldRanges), in their
+  // settings (PartView::full), before these reach the materials.
+  void resolveFields();
+  // The overlay's colour legends as the drawn parts' settings and the legend key ask.
+  void applyLegends();
   void applyDisplay();
   void applyCameraFromModel();
   void renderNow();
@@ -242,6 +255,20 @@ private:
   // layer 1, sharing its camera): selecting a part leaves the accumulated image as it is.
   vtkNew<vtkRenderer> overlay_;
   vtkNew<vtkActor> outline_;
+  // The fields' colour legends in the overlay, and what they show.
+  std::vector<FieldLegend> legends_;
+  std::vector<vtkSmartPointer<vtkScalarBarActor>> legendActors_;
+  // The last resolution of automatic field ranges (resolveFields), one entry a drawn part that
+  // shows a field, in part order.
+  struct ResolvedField
+  {
+    vtkPolyData* surface = nullptr;
+    vtkMTimeType surfaceTime = 0;
+    FieldSpec spec;
+    bool automatic = true;
+    FieldRange range; // as resolved
+  };
+  std::vector<ResolvedField> resolvedFields_;
   vtkNew<vtkRenderStepsPass> steps_;
   vtkNew<vtkAnisoAccumulationPass> pass_;
   vtkNew<vtkCallbackCommand> interactionObserver_;
