@@ -12,7 +12,7 @@
 //   material with the lobe core's fieldLobe gives (a render of that lobe without a field).
 #include "core/fields/color_map.h"
 #include "core/fields/field_mapping.h"
-#include "render_test_helpers.h"
+#include "tests/vtkpasses/render/render_test_helpers.h"
 #include "vtkpasses/render/FieldValues.h"
 
 #include <limits>
