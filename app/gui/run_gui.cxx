@@ -2,11 +2,13 @@
 
 #include "app/cli.h"
 #include "app/gui/MainWindow.h"
+#include "app/gui/OpenGlCheck.h"
 #include "app/gui/SceneView.h"
 #include "core/error.h"
 #include "scene/LutScheduler.h"
 
 #include <QApplication>
+#include <QMessageBox>
 #include <QStringList>
 #include <QSurfaceFormat>
 #include <QTimer>
@@ -151,6 +153,15 @@ int runGui(const std::vector<std::string>& args)
   QApplication app(argc, argv);
   QApplication::setOrganizationName("aniso");
   QApplication::setApplicationName("aniso");
+  // One clear message, before any VTK window, where OpenGL lacks what the renderer needs.
+  if (const std::string missing = openGlShortcoming(); !missing.empty())
+  {
+    if (a.screenshot.empty() && a.windowScreenshot.empty())
+    {
+      QMessageBox::critical(nullptr, QStringLiteral("aniso"), QString::fromStdString(missing));
+    }
+    throw errorAbout("OpenGL", missing);
+  }
 
   MainWindow window;
   const bool scripted = !a.screenshot.empty() || !a.windowScreenshot.empty();

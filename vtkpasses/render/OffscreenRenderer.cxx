@@ -5,6 +5,7 @@
 #include "vtkpasses/render/DrawingFrame.h"
 #include "vtkpasses/render/EnvironmentLighting.h"
 #include "vtkpasses/render/FieldValues.h"
+#include "vtkpasses/render/OpenGlCapabilities.h"
 #include "vtkpasses/render/RendererMatrices.h"
 #include "vtkpasses/render/vtkAnisoAccumulationPass.h"
 
@@ -193,6 +194,10 @@ RenderResult renderOffscreen(const RenderSettings& s)
   window->SetAlphaBitPlanes(1);
   window->SetSize(s.width, s.height);
   window->AddRenderer(renderer);
+  // The context first, and what the renderer needs of it, before anything is drawn.
+  auto* context = vtkOpenGLRenderWindow::SafeDownCast(window);
+  context->Initialize();
+  requireRenderCapabilities(context);
 
   // One actor a visible part; hidden parts are not added at all.
   std::vector<vtkSmartPointer<vtkActor>> actors(parts.size());
