@@ -3,6 +3,7 @@
 #include "app/cli.h"
 #include "app/render_models.h"
 #include "app/render_parts.h"
+#include "app/render_reference.h"
 #include "app/render_turntable.h"
 #include "core/env/env_source_text.h"
 #include "core/env/env_sources.h"
@@ -278,6 +279,29 @@ Command renderCommand()
              "besides the image, or instead of it without -o")));
   c.options.push_back(
       in(kGroupOutput,
+         textOption("--reference", "FILE",
+                    "write the CPU reference of the rendered view as EXR (linear RGBA float, each "
+                    "computed pixel over its N x N block, alpha 0 where none was) and print the "
+                    "render's relative L2 error against it; for the as-env model without maps, "
+                    "fields or line parts")));
+  c.options.push_back(
+      in(kGroupOutput,
+         textOption("--error-map", "FILE",
+                    "write |render - reference| / rms(reference) per compared pixel: .exr one "
+                    "channel, NaN elsewhere; .png a Viridis heat map over [0, E], E the 99th "
+                    "percentile, over each pixel's block, transparent elsewhere (with or without "
+                    "--reference)")));
+  c.options.push_back(
+      in(kGroupOutput,
+         numberOption("--reference-step", "N", ParameterType::Integer, 2.0, 1.0, 1024.0, {},
+                      "the reference at every Nth pixel in x and y, from N/2 (2: a quarter of "
+                      "the pixels)")));
+  c.options.push_back(
+      in(kGroupOutput,
+         numberOption("--reference-tolerance", "T", ParameterType::Real, 1e-3, 1e-6, 0.5, {},
+                      "the reference integrator's relative tolerance per pixel (on luminance)")));
+  c.options.push_back(
+      in(kGroupOutput,
          flagOption("--time", "print the median frame time and the samples per second")));
   addPartOptions(c);
   addModelOptions(c);
@@ -290,7 +314,8 @@ Command renderCommand()
               "  aniso render *.ply --materials shop.json --part '*=brushed steel' --list-parts\n"
               "  aniso render scene.glb --part 'shaft*=brushed steel' --export-gltf out.glb\n"
               "  aniso render flow.vtp --list-arrays\n"
-              "  aniso render flow.vtp --tangents array:velocity -o flow.png\n";
+              "  aniso render flow.vtp --tangents array:velocity -o flow.png\n"
+              "  aniso render --builtin sphere -o s.exr --reference r.exr --error-map e.png\n";
   return c;
 }
 
@@ -615,6 +640,16 @@ int runRender(const std::vector<std::string>& args, std::ostream& out, std::ostr
   {
     checkOutput(exported, ".glb", ".gltf");
   }
+  const std::optional<ReferenceRequest> reference = listing ? std::nullopt : referenceRequestOf(a);
+  for (const std::string& file :
+       reference ? std::vector<std::string>{reference->reference, reference->errorMap}
+                 : std::vector<std::string>{})
+  {
+    if (!file.empty())
+    {
+      checkOutput(file, ".exr", ".png"); // the extensions are checked: where the files go
+    }
+  }
   RenderSettings settings;
   std::tie(settings.width, settings.height) = parseImageSize(a.text("--size"), "--size", kMaxSide);
   if (a.has("--turntable") && a.has("--compare"))
@@ -815,6 +850,10 @@ int runRender(const std::vector<std::string>& args, std::ostream& out, std::ostr
     parts.push_back(std::move(drawn));
   }
   checkFields(scene, parts, report, err);
+  if (reference)
+  {
+    checkReferenceScene(scene, parts);
+  }
   // One part is drawn as the renderer's one-part scene; several as its parts (and a line part,
   // whose style the one-part scene has no place for, as a scene of one part).
   if (parts.size() == 1 && !anyLines)
@@ -867,6 +906,10 @@ int runRender(const std::vector<std::string>& args, std::ostream& out, std::ostr
         << ", shaders and textures included); " << result.coveredPixels << " covered pixels x "
         << samples << " samples: " << samplesPerSecond / 1e6 << " M samples/s on "
         << result.renderer << "\n";
+  }
+  if (reference)
+  {
+    reportReference(*reference, settings, result, out);
   }
   return 0;
 }

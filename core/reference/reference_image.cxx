@@ -212,16 +212,14 @@ double errorBound(const std::vector<ReferencePixel>& pixels)
   }
   return norm > 0.0 ? std::sqrt(error / norm) : 0.0;
 }
-} // namespace
 
-std::vector<int> selectPixels(const std::vector<PixelSample>& geometry, int width, int height,
-                              int count)
+// Hit pixels facing the viewer whose 3x3 neighbourhood is hit too (selectPixels).
+std::vector<char> eligiblePixels(const std::vector<PixelSample>& geometry, int width, int height)
 {
   auto hitAt = [&](int x, int y) {
     return x >= 0 && y >= 0 && x < width && y < height && geometry[std::size_t(y) * width + x].hit;
   };
   std::vector<char> eligible(geometry.size(), 0);
-  int64_t total = 0;
   for (int y = 0; y < height; ++y)
   {
     for (int x = 0; x < width; ++x)
@@ -236,11 +234,13 @@ std::vector<int> selectPixels(const std::vector<PixelSample>& geometry, int widt
         }
       }
       eligible[std::size_t(y) * width + x] = inside ? 1 : 0;
-      total += inside ? 1 : 0;
     }
   }
-  const int stride =
-      std::max(1, static_cast<int>(std::floor(std::sqrt(double(total) / std::max(count, 1)))));
+  return eligible;
+}
+
+std::vector<int> onGrid(const std::vector<char>& eligible, int width, int height, int stride)
+{
   std::vector<int> selected;
   for (int y = stride / 2; y < height; y += stride)
   {
@@ -253,6 +253,27 @@ std::vector<int> selectPixels(const std::vector<PixelSample>& geometry, int widt
     }
   }
   return selected;
+}
+} // namespace
+
+std::vector<int> selectPixels(const std::vector<PixelSample>& geometry, int width, int height,
+                              int count)
+{
+  const std::vector<char> eligible = eligiblePixels(geometry, width, height);
+  const auto total = std::count(eligible.begin(), eligible.end(), char(1));
+  const int stride =
+      std::max(1, static_cast<int>(std::floor(std::sqrt(double(total) / std::max(count, 1)))));
+  return onGrid(eligible, width, height, stride);
+}
+
+std::vector<int> selectPixelGrid(const std::vector<PixelSample>& geometry, int width, int height,
+                                 int stride)
+{
+  if (stride < 1)
+  {
+    throw errorAbout("reference", "the pixel stride must be at least 1");
+  }
+  return onGrid(eligiblePixels(geometry, width, height), width, height, stride);
 }
 
 ReferenceImage computeReference(const std::vector<PixelSample>& geometry, int width, int height,

@@ -60,6 +60,10 @@ struct ReferenceImage
 // stride s chosen so that about `count` pixels remain. Row-major indices into GEOMETRY.
 std::vector<int> selectPixels(const std::vector<PixelSample>& geometry, int width, int height,
                               int count);
+// The same pixels on a grid of the given STRIDE (>= 1): columns and rows stride / 2,
+// stride / 2 + stride, ... (a quarter of the eligible pixels at stride 2).
+std::vector<int> selectPixelGrid(const std::vector<PixelSample>& geometry, int width, int height,
+                                 int stride);
 
 // The reference at the selected pixels, from DIRECTORY's cache when present (an empty
 // directory disables the cache). Each pixel is integrated in the frame
