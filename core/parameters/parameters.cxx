@@ -297,8 +297,8 @@ std::vector<ParameterSpec> declare()
                        {ColorMap::Viridis, ColorMap::Cividis, ColorMap::CoolToWarm,
                         ColorMap::Grayscale},
                        ColorMap::Viridis,
-                       "colour map of the field (ParaView's presets: Viridis (matplotlib), "
-                       "Cividis, Cool to Warm, Grayscale), with its NaN colour"))),
+                       "colour map of the field, one of ParaView's presets (Viridis "
+                       "(matplotlib), Cividis, Cool to Warm, Grayscale) with its NaN colour"))),
       ofMaterial(affecting(A::Uniforms,
                 text("field-range", "Field range", "auto",
                      "the field's values mapped to the colour map's ends: auto (the finite "
