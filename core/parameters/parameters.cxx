@@ -281,7 +281,7 @@ std::vector<ParameterSpec> declare()
       // uniforms, so dragging them never recompiles nor re-uploads the mesh.
       ofMaterial(affecting(A::Uniforms | A::Variant | A::FrameCost,
                 text("field", "Field",  "none",
-                     "a data array that drives the material: none, NAME (a point or cell "
+                     "a data array that drives the material, none or NAME (a point or cell "
                      "array; a vector's magnitude), NAME:magnitude, NAME:x|y|z or NAME:N "
                      "(one component, from 0); cell values are averaged to the points"))),
       ofMaterial(affecting(A::Uniforms | A::Variant | A::FrameCost,
@@ -289,9 +289,9 @@ std::vector<ParameterSpec> declare()
                        {FieldTarget::Albedo, FieldTarget::F0, FieldTarget::Roughness,
                         FieldTarget::Anisotropy},
                        FieldTarget::Albedo,
-                       "what the field sets: albedo or f0 (through field-colormap), roughness "
+                       "what the field sets, albedo or f0 (through field-colormap), roughness "
                        "(n_u and n_v times field-low to field-high) or anisotropy (strength "
-                       "field-low to field-high: 0 isotropic, 1 the material's lobe)"))),
+                       "field-low to field-high, 0 isotropic, 1 the material's lobe)"))),
       ofMaterial(affecting(A::Uniforms,
                 choice("field-colormap", "Colour map",
                        {ColorMap::Viridis, ColorMap::Cividis, ColorMap::CoolToWarm,
@@ -301,16 +301,16 @@ std::vector<ParameterSpec> declare()
                        "(matplotlib), Cividis, Cool to Warm, Grayscale) with its NaN colour"))),
       ofMaterial(affecting(A::Uniforms,
                 text("field-range", "Field range", "auto",
-                     "the field's values mapped to the colour map's ends: auto (the finite "
+                     "the field's values mapped to the colour map's ends, auto (the finite "
                      "range over the parts that show the field) or MIN,MAX"))),
       ofMaterial(affecting(A::Uniforms,
                 number("field-low", "Field low", T::Real, 0.0, 0.0, 1000.0, 0.01, S::Linear, {},
-                       "roughness: the exponents' scale at the range's minimum; anisotropy: "
-                       "the strength there (clamped to [0, 1])"))),
+                       "for roughness the exponents' scale at the range's minimum, for "
+                       "anisotropy the strength there (clamped to [0, 1])"))),
       ofMaterial(affecting(A::Uniforms,
                 number("field-high", "Field high", T::Real, 1.0, 0.0, 1000.0, 0.01, S::Linear, {},
-                       "roughness: the exponents' scale at the range's maximum; anisotropy: "
-                       "the strength there (clamped to [0, 1])"))),
+                       "for roughness the exponents' scale at the range's maximum, for "
+                       "anisotropy the strength there (clamped to [0, 1])"))),
       // Illuminated lines (a file's polylines, vtkpasses/mesh/LineSet.h): their width, per
       // material, so that each line part has its own.
       ofMaterial(affecting(A::Uniforms | A::FrameCost | A::LitModels,
