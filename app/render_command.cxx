@@ -889,11 +889,18 @@ int runRender(const std::vector<std::string>& args, std::ostream& out, std::ostr
   const bool exr = lowercaseExtension(output) == ".exr";
   writeRendered(output, result, settings.display.background == BackgroundMode::Transparent);
   const int samples = settings.material.samples;
+  // A field that changes the lobe draws with half vectors from the shader, whatever was asked.
+  std::string halfVectors = parameters.text("half-vectors");
+  if (result.variant.field && spelling(result.variant.halfVectors) != halfVectors)
+  {
+    halfVectors =
+        std::string(spelling(result.variant.halfVectors)) + " (the field changes the lobe)";
+  }
   out << "render: wrote " << output << " (" << settings.width << "x" << settings.height << ", "
       << (exr ? "linear RGBA float, alpha = coverage" : "tone-mapped sRGB") << ") of " << source
       << ": " << settings.frames << " frame(s) x " << samples << " samples, "
       << parameters.text("method") << ", filtered " << parameters.text("filtered")
-      << ", half vectors from the " << parameters.text("half-vectors")
+      << ", half vectors from the " << halfVectors
       << ", environment sampling " << samplingSummary(parameters, environmentSources.get())
       << "; " << modelSummary(a) << "\n";
   if (a.has("--time"))

@@ -142,7 +142,8 @@ TEST(Parameters, FormatParseRoundTrip)
     {
       continue;
     }
-    for (const double n : {spec.maximum, spec.minimum, std::floor((spec.minimum + spec.maximum) / 2)})
+    for (const double n :
+         {spec.maximum, spec.minimum, std::floor((spec.minimum + spec.maximum) / 2)})
     {
       ParameterValue v;
       v.number.fill(n); // as the parser fills a number's value
@@ -150,9 +151,9 @@ TEST(Parameters, FormatParseRoundTrip)
       EXPECT_EQ(aniso::parseParameterValue(spec, text, "x"), v) << spec.name << " " << text;
     }
   }
-  EXPECT_EQ(aniso::formatParameterValue(aniso::parameterSpec("lut-samples"),
-                                        aniso::parseParameterValue(aniso::parameterSpec("lut-samples"),
-                                                                   "200000", "x")),
+  EXPECT_EQ(aniso::formatParameterValue(
+                aniso::parameterSpec("lut-samples"),
+                aniso::parseParameterValue(aniso::parameterSpec("lut-samples"), "200000", "x")),
             "200000");
 }
 
@@ -250,28 +251,62 @@ TEST(Parameters, RolesAreTheListedOnes)
 {
   using Names = std::set<std::string>;
   // line-width and its unit: the line parts' actors (vtkpasses/render/LineStyle.h).
-  const Names uniforms = {"nu",           "nv",         "f0",
-                          "albedo",       "samples",    "height-scale",
-                          "line-width",   "line-width-unit"};
+  // The field's keys: its values are a vertex attribute the material writes, the rest uniforms
+  // (core/fields/field_mapping.h).
+  const Names uniforms = {"nu",
+                          "nv",
+                          "f0",
+                          "albedo",
+                          "samples",
+                          "height-scale",
+                          "line-width",
+                          "line-width-unit",
+                          "field",
+                          "field-target",
+                          "field-colormap",
+                          "field-range",
+                          "field-low",
+                          "field-high"};
   // env-sampling is a variant too; the view applied the material for it beside its list.
-  const Names variant = {"method", "filtered", "env-sampling", "half-vectors", "bump"};
+  const Names variant = {"method", "filtered", "env-sampling", "half-vectors",
+                         "bump",   "field",    "field-target"};
   const Names luts = {"nu", "nv", "lut-size", "lut-samples"};
   // The view's material keys: uniforms, variant and the LUT inputs.
-  const Names material = {"nu",       "nv",           "f0",          "albedo",   "samples",
-                          "lut-size", "lut-samples",  "method",      "filtered", "half-vectors",
-                          "bump",     "height-scale", "env-sampling", "line-width",
-                          "line-width-unit"};
-  const Names display = {"exposure", "tone-mapping", "background", "background-color"};
-  const Names keepsFrameCost = {"nu",           "nv",           "f0",           "albedo",
-                                "samples",      "lut-size",     "lut-samples",  "target-samples",
-                                "env-rotation", "height-scale", "quality-mode", "error-target",
-                                "exposure",     "tone-mapping", "background",   "background-color"};
+  const Names material = {"nu",           "nv",           "f0",
+                          "albedo",       "samples",      "lut-size",
+                          "lut-samples",  "method",       "filtered",
+                          "half-vectors", "bump",         "height-scale",
+                          "env-sampling", "line-width",   "line-width-unit",
+                          "field",        "field-target", "field-colormap",
+                          "field-range",  "field-low",    "field-high"};
+  const Names display = {"exposure", "tone-mapping", "background", "background-color", "legend"};
+  const Names keepsFrameCost = {"nu",
+                                "nv",
+                                "f0",
+                                "albedo",
+                                "samples",
+                                "lut-size",
+                                "lut-samples",
+                                "target-samples",
+                                "env-rotation",
+                                "height-scale",
+                                "quality-mode",
+                                "error-target",
+                                "exposure",
+                                "tone-mapping",
+                                "background",
+                                "background-color",
+                                "field-colormap",
+                                "field-range",
+                                "field-low",
+                                "field-high",
+                                "legend"};
   // env-rotation turns the environment's sources, env-lights adds them (core/lights/env_lights.h).
-  const Names litModels = {"nu",        "nv",         "f0",           "albedo",
-                           "tangents",  "cad-deflection", "cad-angle", "env-rotation",
-                           "env-lights", "line-width", "line-width-unit"};
-  const Names surfaceModels = {"f0",        "albedo",    "tangents",
-                               "cad-deflection", "cad-angle", "env-lights"};
+  const Names litModels = {
+      "nu",        "nv",           "f0",         "albedo",     "tangents",       "cad-deflection",
+      "cad-angle", "env-rotation", "env-lights", "line-width", "line-width-unit"};
+  const Names surfaceModels = {"f0",        "albedo",    "tangents", "cad-deflection",
+                               "cad-angle", "env-lights"};
   // The tessellation of CAD files: their parts are read again.
   const Names meshes = {"cad-deflection", "cad-angle"};
   const Names none = {"target-samples", "quality-mode", "error-target"};

@@ -55,6 +55,14 @@ aniso::ParameterValue unusualValue(const aniso::SceneKey& key, const QDir& dir)
   {
     return aniso::textValue("around:0,0,1@0.5,0,0");
   }
+  if (name == "field")
+  {
+    return aniso::textValue("velocity:2");
+  }
+  if (name == "field-range")
+  {
+    return aniso::textValue("-1.5,2.25");
+  }
   if (name == "mesh")
   {
     return aniso::textValue("builtin:plate");
