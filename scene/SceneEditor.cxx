@@ -4,7 +4,11 @@
 
 #include <QUndoCommand>
 #include <QUndoStack>
+#include <algorithm>
+#include <functional>
+#include <string>
 #include <utility>
+#include <vector>
 
 namespace aniso
 {
@@ -36,6 +40,97 @@ bool touchesMaterials(const SceneModel::Values& values)
   return false;
 }
 
+// A change of the library, kept as the materials it touched (before and after) and, when it
+// added, removed or reordered materials, both orders of names: an undo step holds a few
+// materials instead of two copies of the whole library. Two copies cost 46 KiB a step with the
+// eight built-in metals alone, the bulk of the window's memory growth over 10 000 edits
+// (bench_soak, docs/RELIABILITY.md). Undo and redo run in the stack's order, so the library
+// they start from is the other side of the change, whose untouched materials are the same.
+class LibraryChange
+{
+public:
+  LibraryChange() = default;
+  LibraryChange(const MaterialLibrary& before, const MaterialLibrary& after)
+  {
+    touchedBefore_ = differing(before, after);
+    touchedAfter_ = differing(after, before);
+    if (names(before) != names(after))
+    {
+      orderBefore_ = names(before);
+      orderAfter_ = names(after);
+    }
+  }
+
+  // The library before the change, from CURRENT (the library after it), and the reverse.
+  MaterialLibrary before(const MaterialLibrary& current) const
+  {
+    return rebuilt(orderBefore_, touchedBefore_, current);
+  }
+  MaterialLibrary after(const MaterialLibrary& current) const
+  {
+    return rebuilt(orderAfter_, touchedAfter_, current);
+  }
+  bool empty() const { return touchedBefore_.empty() && touchedAfter_.empty(); }
+
+private:
+  static std::vector<std::string> names(const MaterialLibrary& library)
+  {
+    std::vector<std::string> out;
+    for (const Material& m : library.materials())
+    {
+      out.push_back(m.name);
+    }
+    return out;
+  }
+  // The materials of A that B lacks or holds otherwise.
+  static std::vector<Material> differing(const MaterialLibrary& a, const MaterialLibrary& b)
+  {
+    std::vector<Material> out;
+    for (const Material& m : a.materials())
+    {
+      const Material* other = b.find(m.name);
+      if (!other || *other != m)
+      {
+        out.push_back(m);
+      }
+    }
+    return out;
+  }
+  // CURRENT's materials in ORDER (empty: CURRENT's own), TOUCHED's where it has one.
+  static MaterialLibrary rebuilt(const std::vector<std::string>& order,
+                                 const std::vector<Material>& touched,
+                                 const MaterialLibrary& current)
+  {
+    MaterialLibrary library;
+    const auto add = [&](const std::string& name)
+    {
+      const auto it = std::find_if(touched.begin(), touched.end(),
+                                   [&](const Material& m) { return m.name == name; });
+      library.put(it != touched.end() ? *it : current.at(name));
+    };
+    if (order.empty())
+    {
+      for (const Material& m : current.materials())
+      {
+        add(m.name);
+      }
+    }
+    else
+    {
+      for (const std::string& name : order)
+      {
+        add(name);
+      }
+    }
+    return library;
+  }
+
+  std::vector<Material> touchedBefore_;
+  std::vector<Material> touchedAfter_;
+  std::vector<std::string> orderBefore_; // both empty when the names and their order stay
+  std::vector<std::string> orderAfter_;
+};
+
 // Applies a set of values; undo restores the values it replaced. Material keys were set in the
 // edited parts' materials: undo and redo restore the library as it was before and after, so they
 // reach the same materials whatever is selected by then.
@@ -60,19 +155,23 @@ public:
     }
   }
 
-  void undo() override { apply(before_, libraryBefore_); }
+  void undo() override { restore(before_, true); }
   void redo() override
   {
-    if (materials_ && !haveAfter_)
+    if (!haveAfter_)
     {
-      // The first redo sets the values as an edit (into the edited materials) and remembers the
-      // library that made.
-      apply(after_, MaterialLibrary{});
-      libraryAfter_ = editor_->model()->materials();
+      // The first redo sets the values as an edit (into the edited materials) and remembers
+      // what that changed in the library.
+      attempt([&] { editor_->model()->setValues(after_); });
+      if (materials_)
+      {
+        library_ = LibraryChange(libraryBefore_, editor_->model()->materials());
+        libraryBefore_ = MaterialLibrary{};
+      }
       haveAfter_ = true;
       return;
     }
-    apply(after_, libraryAfter_);
+    restore(after_, false);
   }
   int id() const override { return dragId_ == 0 ? -1 : 1; }
 
@@ -91,27 +190,43 @@ public:
       }
     }
     after_ = next->after_;
-    libraryAfter_ = next->libraryAfter_;
+    if (materials_)
+    {
+      // Merged just after NEXT was done: the model holds the library after both.
+      const MaterialLibrary& last = editor_->model()->materials();
+      library_ = LibraryChange(library_.before(next->library_.before(last)), last);
+    }
     // A drag that ends where it started changes nothing: the stack drops the command.
-    setObsolete(after_ == before_ && libraryAfter_ == libraryBefore_);
+    setObsolete(after_ == before_ && library_.empty());
     return true;
   }
 
 private:
-  void apply(const SceneModel::Values& values, const MaterialLibrary& library)
+  // VALUES, with the library of the side of the change they belong to (BEFORE or after).
+  void restore(const SceneModel::Values& values, bool before)
+  {
+    attempt(
+        [&]
+        {
+          SceneModel* model = editor_->model();
+          if (materials_)
+          {
+            const MaterialLibrary& current = model->materials();
+            model->setParts(model->parts(),
+                            before ? library_.before(current) : library_.after(current));
+            model->setValues(sceneScope(values));
+          }
+          else
+          {
+            model->setValues(values);
+          }
+        });
+  }
+  void attempt(const std::function<void()>& action)
   {
     try
     {
-      SceneModel* model = editor_->model();
-      if (materials_ && !library.empty())
-      {
-        model->setParts(model->parts(), library);
-        model->setValues(sceneScope(values));
-      }
-      else
-      {
-        model->setValues(values);
-      }
+      action();
     }
     catch (const Error& e)
     {
@@ -125,32 +240,34 @@ private:
   int dragId_;
   bool materials_;
   bool haveAfter_ = false;
-  MaterialLibrary libraryBefore_;
-  MaterialLibrary libraryAfter_;
+  MaterialLibrary libraryBefore_; // until the first redo
+  LibraryChange library_;
 };
 
 // Replaces the parts and the library; undo restores them.
 class ChangePartsCommand : public QUndoCommand
 {
 public:
-  ChangePartsCommand(SceneEditor* editor, std::vector<ScenePart> parts, MaterialLibrary library,
-                     const QString& text)
-      : editor_(editor), partsBefore_(editor->model()->parts()),
-        libraryBefore_(editor->model()->materials()), partsAfter_(std::move(parts)),
-        libraryAfter_(std::move(library))
+  ChangePartsCommand(SceneEditor* editor, std::vector<ScenePart> parts,
+                     const MaterialLibrary& library, const QString& text)
+      : editor_(editor), partsBefore_(editor->model()->parts()), partsAfter_(std::move(parts)),
+        library_(editor->model()->materials(), library)
   {
     setText(text);
   }
 
-  void undo() override { apply(partsBefore_, libraryBefore_); }
-  void redo() override { apply(partsAfter_, libraryAfter_); }
+  void undo() override { apply(partsBefore_, true); }
+  void redo() override { apply(partsAfter_, false); }
 
 private:
-  void apply(const std::vector<ScenePart>& parts, const MaterialLibrary& library)
+  // PARTS with the library of the side of the change they belong to (BEFORE or after).
+  void apply(const std::vector<ScenePart>& parts, bool before)
   {
     try
     {
-      editor_->model()->setParts(parts, library);
+      const MaterialLibrary& current = editor_->model()->materials();
+      editor_->model()->setParts(parts,
+                                 before ? library_.before(current) : library_.after(current));
     }
     catch (const Error& e)
     {
@@ -160,34 +277,37 @@ private:
 
   SceneEditor* editor_;
   std::vector<ScenePart> partsBefore_;
-  MaterialLibrary libraryBefore_;
   std::vector<ScenePart> partsAfter_;
-  MaterialLibrary libraryAfter_;
+  LibraryChange library_;
 };
 
 class ReplaceSceneCommand : public QUndoCommand
 {
 public:
   ReplaceSceneCommand(SceneEditor* editor, SceneModel::Values values, CameraState camera,
-                      std::vector<ScenePart> parts, MaterialLibrary library, const QString& text)
+                      std::vector<ScenePart> parts, const MaterialLibrary& library,
+                      const QString& text)
       : editor_(editor), beforeValues_(editor->model()->values()),
         beforeCamera_(editor->model()->camera()), beforeParts_(editor->model()->parts()),
-        beforeLibrary_(editor->model()->materials()), afterValues_(std::move(values)),
-        afterCamera_(camera), afterParts_(std::move(parts)), afterLibrary_(std::move(library))
+        afterValues_(std::move(values)), afterCamera_(camera), afterParts_(std::move(parts)),
+        library_(editor->model()->materials(), library)
   {
     setText(text);
   }
 
-  void undo() override { apply(beforeValues_, beforeCamera_, beforeParts_, beforeLibrary_); }
-  void redo() override { apply(afterValues_, afterCamera_, afterParts_, afterLibrary_); }
+  void undo() override { apply(beforeValues_, beforeCamera_, beforeParts_, true); }
+  void redo() override { apply(afterValues_, afterCamera_, afterParts_, false); }
 
 private:
+  // The values, camera and parts of one side of the change (BEFORE or after) with its library.
   void apply(const SceneModel::Values& values, const CameraState& camera,
-             const std::vector<ScenePart>& parts, const MaterialLibrary& library)
+             const std::vector<ScenePart>& parts, bool before)
   {
     try
     {
       SceneModel* model = editor_->model();
+      const MaterialLibrary library =
+          before ? library_.before(model->materials()) : library_.after(model->materials());
       if (parts.empty())
       {
         model->setValues(values); // a scene of one part (the mesh key's)
@@ -214,11 +334,10 @@ private:
   SceneModel::Values beforeValues_;
   CameraState beforeCamera_;
   std::vector<ScenePart> beforeParts_;
-  MaterialLibrary beforeLibrary_;
   SceneModel::Values afterValues_;
   CameraState afterCamera_;
   std::vector<ScenePart> afterParts_;
-  MaterialLibrary afterLibrary_;
+  LibraryChange library_;
 };
 } // namespace
 
@@ -302,7 +421,7 @@ void SceneEditor::editParts(std::vector<ScenePart> parts, MaterialLibrary librar
   }
   SceneModel probe;
   probe.setParts(parts, library); // throws the same errors, changing nothing of ours
-  stack_->push(new ChangePartsCommand(this, std::move(parts), std::move(library), text));
+  stack_->push(new ChangePartsCommand(this, std::move(parts), library, text));
 }
 
 void SceneEditor::makeUnique(const std::vector<int>& parts)
