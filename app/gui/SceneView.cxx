@@ -197,6 +197,11 @@ SceneView::SceneView(SceneModel* model, SceneAssets* assets, LutScheduler* luts,
     interactor->AddObserver(vtkCommand::LeftButtonReleaseEvent, clickObserver_, 1.0f);
   }
 
+  resizeObserver_->SetClientData(this);
+  resizeObserver_->SetCallback([](vtkObject*, unsigned long, void* self, void*)
+                               { static_cast<SceneView*>(self)->requestRender(); });
+  window_->AddObserver(vtkCommand::WindowResizeEvent, resizeObserver_);
+
   // Every frame the window draws is timed (progressive ones and the interactor's own); those
   // that drew the surface are what the frame budget learns from.
   renderTimer_ = std::make_unique<RenderTimer>(
@@ -290,6 +295,7 @@ SceneView::~SceneView()
     }
     interactor->RemoveObserver(clickObserver_);
   }
+  window_->RemoveObserver(resizeObserver_);
   renderTimer_.reset();
   parts_.clear();
   window_->RemoveRenderer(overlay_);

@@ -273,6 +273,9 @@ private:
   vtkNew<vtkAnisoAccumulationPass> pass_;
   vtkNew<vtkCallbackCommand> interactionObserver_;
   vtkNew<vtkCallbackCommand> clickObserver_;
+  // A new window size restarts the mean (the pass learns it as the widget draws): refinement
+  // resumes with a frame asked for.
+  vtkNew<vtkCallbackCommand> resizeObserver_;
   int pressAt_[2] = {0, 0};
   bool pressed_ = false;
   MaterialSettings full_; // the first drawn part's settings, LUT inputs held back until baked
