@@ -4,6 +4,8 @@
 #include "app/gui/CompareWindow.h"
 #include "app/gui/LitModelView.h"
 #include "app/gui/ProgressReporter.h"
+#include "app/gui/ReferenceDock.h"
+#include "app/gui/ReferenceView.h"
 #include "app/gui/SceneView.h"
 #include "app/gui/SurfaceModelView.h"
 #include "core/error.h"
@@ -105,7 +107,7 @@ MainWindow::MainWindow(QWidget* parent)
     : QMainWindow(parent), editor_(&model_), assets_(&model_),
       luts_(new LutScheduler(&model_, nullptr, this)), vtkWidget_(new QVTKOpenGLNativeWidget(this)),
       samplesLabel_(new QLabel(this)), lutLabel_(new QLabel(this)),
-      loader_(new BackgroundLoader(&assets_, this)),
+      referenceLabel_(new QLabel(this)), loader_(new BackgroundLoader(&assets_, this)),
       progress_(new ProgressReporter(statusBar(), this))
 {
   setWindowTitle(tr("aniso"));
@@ -196,6 +198,23 @@ MainWindow::MainWindow(QWidget* parent)
   samplesLabel_->setObjectName("samples");
   statusBar()->addPermanentWidget(lutLabel_);
   statusBar()->addPermanentWidget(samplesLabel_);
+  // The reference's words beside the predicted error: the error measured against it.
+  reference_ = new ReferenceView(&model_, view_, luts_, this);
+  referenceDock_ = new ReferenceDock(reference_, this);
+  // Under the view, as wide as it, in a tab beside the lights: the pictures about the view's size.
+  addDockWidget(Qt::BottomDockWidgetArea, referenceDock_);
+  tabifyDockWidget(lightsDock_, referenceDock_);
+  referenceDock_->hide();
+  referenceLabel_->setObjectName("reference");
+  // Its words change as the reference progresses: they never widen the window (a wider window
+  // is a new view size, and the view and its reference would start over).
+  referenceLabel_->setMinimumWidth(1);
+  referenceLabel_->hide();
+  statusBar()->addPermanentWidget(referenceLabel_);
+  connect(reference_, &ReferenceView::errorOccurred, this, toStatus);
+  connect(reference_, &ReferenceView::changed, this, &MainWindow::showReferenceState);
+  connect(reference_, &ReferenceView::unsupportedChanged, this, &MainWindow::showReferenceState);
+  connect(referenceDock_, &ReferenceDock::closed, this, [this] { showReference(false); });
   createMenus();
 
   // Most of the screen, without growing past a comfortable size on large screens.
@@ -215,6 +234,8 @@ MainWindow::MainWindow(QWidget* parent)
     QSettings settings;
     restoreGeometry(settings.value("window/geometry").toByteArray());
     restoreState(settings.value("window/state").toByteArray());
+    // The reference starts off whatever the last run left.
+    referenceDock_->hide();
   }
   connectProgress();
 }
@@ -223,6 +244,9 @@ MainWindow::~MainWindow()
 {
   // A load in flight delivers to this window: it ends first (its result is dropped).
   delete loader_;
+  // The reference's run ends (cancelled) before the view it follows goes.
+  delete referenceDock_;
+  delete reference_;
   // The comparison and the lit actor draw the view's mesh: they go before the view, which goes
   // before the widget whose window it draws into.
   delete compareWindow_;
@@ -368,6 +392,45 @@ void MainWindow::createMenus()
     action->setData(QString::fromStdString(preset.name));
   }
   viewMenu->addAction(tr("Compare &Models"), this, &MainWindow::showCompareWindow);
+  referenceAction_ = viewMenu->addAction(tr("R&eference"));
+  referenceAction_->setObjectName("referenceAction");
+  referenceAction_->setCheckable(true);
+  referenceAction_->setShortcut(QKeySequence(tr("Ctrl+Shift+R")));
+  connect(referenceAction_, &QAction::toggled, this, &MainWindow::showReference);
+  // Where the reference does not cover the view, the entry's tip says why.
+  viewMenu->setToolTipsVisible(true);
+  showReferenceState();
+}
+
+void MainWindow::showReference(bool on)
+{
+  if (referenceAction_->isChecked() != on)
+  {
+    referenceAction_->setChecked(on); // toggled comes back here
+    return;
+  }
+  reference_->setEnabled(on);
+  referenceDock_->setVisible(on);
+  if (on)
+  {
+    referenceDock_->raise();
+  }
+  referenceLabel_->setVisible(on);
+  showReferenceState();
+}
+
+void MainWindow::showReferenceState()
+{
+  const QString why = reference_->unsupported();
+  const QString tip =
+      why.isEmpty()
+          ? tr("The CPU reference of the view, beside it, and the view's error against it")
+          : tr("No reference: %1").arg(why);
+  referenceAction_->setEnabled(why.isEmpty());
+  referenceAction_->setToolTip(tip);
+  referenceAction_->setStatusTip(tip);
+  referenceLabel_->setText(reference_->summary());
+  referenceLabel_->setToolTip(referenceLabel_->text());
 }
 
 void MainWindow::showCompareWindow()

@@ -19,6 +19,7 @@
 #include <string>
 #include <vtkNew.h>
 
+class QAction;
 class QLabel;
 class QMenu;
 class QVTKOpenGLNativeWidget;
@@ -37,6 +38,8 @@ class LutScheduler;
 class MapsDock;
 class ProgressReporter;
 class MaterialDock;
+class ReferenceDock;
+class ReferenceView;
 class SceneDock;
 class SceneView;
 
@@ -69,6 +72,14 @@ public:
   LitModelView* litView() const { return litView_; }
   LightsDock* lightsDock() const { return lightsDock_; }
   SceneDock* sceneDock() const { return sceneDock_; }
+  // View > Reference (Ctrl+Shift+R): the view's CPU reference computed on a worker
+  // (ReferenceView), shown in the Reference dock beside the view (a wipe or the error map), the
+  // view's error against it in the status bar. The action is disabled, its tip saying why, where
+  // the reference does not cover the view (another model, maps, a data field, line parts).
+  ReferenceView* referenceView() const { return reference_; }
+  ReferenceDock* referenceDock() const { return referenceDock_; }
+  QAction* referenceAction() const { return referenceAction_; }
+  void showReference(bool on);
   // The comparison view (View > Compare models), made when first opened.
   CompareWindow* compareWindow() const { return compareWindow_; }
   void showCompareWindow();
@@ -172,6 +183,8 @@ private:
   void addRecent(const QString& path);
   void rebuildRecentMenu();
   void showSamples(int samples, int target);
+  // The Reference action's state and tips, the status bar's words, as the reference changes.
+  void showReferenceState();
   void setInteractiveResolution(bool interacting);
   void chooseAndExportScreenshot();
   void chooseAndExportTurntable();
@@ -220,6 +233,10 @@ private:
   QMenu* recentMenu_ = nullptr;
   QLabel* samplesLabel_;
   QLabel* lutLabel_;
+  ReferenceView* reference_ = nullptr;
+  ReferenceDock* referenceDock_ = nullptr;
+  QAction* referenceAction_ = nullptr;
+  QLabel* referenceLabel_;
   bool errorDialogs_ = true;
   Autosave* autosave_ = nullptr;
   // The background loads (the status bar says what loads), each kind's latest request winning.

@@ -4,13 +4,17 @@
 #include "app/gui/SceneAssets.h"
 #include "app/gui/ViewCamera.h"
 #include "core/error.h"
+#include "core/models/models.h"
 #include "core/parameters/choices.h"
 #include "scene/LutScheduler.h"
+#include "vtkpasses/mesh/LineSet.h"
 #include "vtkpasses/mesh/PartPlacement.h"
+#include "vtkpasses/mesh/TriangleArrays.h"
 #include "vtkpasses/render/AnisoMaterial.h"
 #include "vtkpasses/render/EnvironmentLighting.h"
 #include "vtkpasses/render/FieldValues.h"
 #include "vtkpasses/render/LineStyle.h"
+#include "vtkpasses/render/RendererMatrices.h"
 #include "vtkpasses/render/vtkAnisoAccumulationPass.h"
 
 #include <QStringList>
@@ -1361,5 +1365,122 @@ void SceneView::settle()
   }
   attempt([this] { applyMaterial(); });
   requestRender();
+}
+
+bool SceneView::ReferenceKey::operator==(const ReferenceKey& o) const
+{
+  const auto sameMaterial = [](const ReferenceMaterial& a, const ReferenceMaterial& b)
+  {
+    return a.lobe.nu == b.lobe.nu && a.lobe.nv == b.lobe.nv && a.f0 == b.f0 && a.albedo == b.albedo;
+  };
+  return width == o.width && height == o.height && clipToWorld == o.clipToWorld &&
+         worldToEnvironment == o.worldToEnvironment && environment == o.environment &&
+         unsupported == o.unsupported && parts.size() == o.parts.size() &&
+         std::equal(parts.begin(), parts.end(), o.parts.begin(),
+                    [&](const Part& a, const Part& b)
+                    {
+                      return a.surface == b.surface && a.time == b.time &&
+                             sameMaterial(a.material, b.material);
+                    });
+}
+
+std::string SceneView::referenceUnsupported() const
+{
+  if (!lighting())
+  {
+    return "no environment is loaded";
+  }
+  const std::string name = model_->text("model");
+  if (name != kEnvironmentModel)
+  {
+    const ShadingModelInfo* info = findShadingModel(name);
+    return "the reference is of the anisotropic environment material, not of " +
+           (info ? std::string(info->title) : name);
+  }
+  bool drawn = false;
+  for (const auto& part : parts_)
+  {
+    if (!part->inRenderer || !part->drawn)
+    {
+      continue;
+    }
+    drawn = true;
+    const std::string prefix = parts_.size() > 1 ? "part " + part->name + ": " : "";
+    if (isLineSet(part->drawn))
+    {
+      return prefix + "the reference does not cover line parts (illuminated lines)";
+    }
+    std::string why;
+    if (!referenceMaterialOf(part->full, why))
+    {
+      return prefix + why;
+    }
+  }
+  return drawn ? std::string() : "no part is drawn";
+}
+
+SceneView::ReferenceKey SceneView::referenceKey() const
+{
+  ReferenceKey key;
+  key.unsupported = referenceUnsupported();
+  const int* size = window_->GetSize();
+  key.width = size[0];
+  key.height = size[1];
+  // The camera as the mappers draw with it between frames: the pass jitters the window centre
+  // only while it draws a frame, and restores it after.
+  key.clipToWorld = clipToWorld(renderer_);
+  if (const std::shared_ptr<EnvironmentLighting>& light = lighting())
+  {
+    key.environment = &light->environment();
+    key.worldToEnvironment = light->worldToEnvironment();
+  }
+  if (!key.unsupported.empty())
+  {
+    return key;
+  }
+  for (const auto& part : parts_)
+  {
+    if (part->inRenderer && part->drawn)
+    {
+      std::string why;
+      key.parts.push_back({part->drawn, part->drawn->GetMTime(),
+                           referenceMaterialOf(part->full, why).value_or(ReferenceMaterial{})});
+    }
+  }
+  return key;
+}
+
+ReferenceInputs SceneView::referenceInputs() const
+{
+  const ReferenceKey key = referenceKey();
+  if (!key.unsupported.empty())
+  {
+    throw errorAbout("reference", key.unsupported);
+  }
+  ReferenceInputs inputs;
+  for (const auto& part : parts_)
+  {
+    if (part->inRenderer && part->drawn)
+    {
+      std::string why;
+      // The surface the actor draws, already in the drawing frame (as floats, as the GL has it).
+      appendTriangles(inputs.mesh, triangleMesh(part->drawn), int(inputs.materials.size()));
+      inputs.materials.push_back(*referenceMaterialOf(part->full, why));
+    }
+  }
+  inputs.clipToWorld = key.clipToWorld;
+  inputs.worldToEnvironment = key.worldToEnvironment;
+  // Shares the lighting's ownership: a new lighting on screen leaves this one's environment alive
+  // for the run that integrates it.
+  const std::shared_ptr<EnvironmentLighting>& light = lighting();
+  inputs.environment = std::shared_ptr<const Environment>(light, &light->environment());
+  inputs.width = key.width;
+  inputs.height = key.height;
+  return inputs;
+}
+
+Image SceneView::linearImage()
+{
+  return pass_->ReadAccumulation();
 }
 } // namespace aniso

@@ -20,6 +20,7 @@
 // it in a later one with a cheap frame (as while moving: the new shader variant compiles then),
 // and refinement under the frame budget follows once settled.
 #include "app/gui/LightingLoader.h"
+#include "app/gui/ProgressiveReference.h"
 #include "app/gui/RenderErrorOutput.h"
 #include "core/quality/adaptive_quality.h"
 #include "core/quality/frame_budget.h"
@@ -35,6 +36,8 @@
 #include <QObject>
 #include <QString>
 #include <functional>
+#include <glm/mat3x3.hpp>
+#include <glm/mat4x4.hpp>
 #include <memory>
 #include <string>
 #include <vector>
@@ -181,6 +184,41 @@ public:
   {
     return lightingLoader_->lighting();
   }
+
+  // The CPU reference of the view (View > Reference, app/gui/ReferenceView.h). Why it does not
+  // cover what the view draws now, or empty: another shading model than the anisotropic
+  // environment material, a drawn part with maps or a data field (referenceMaterialOf), a line
+  // part, or no part drawn.
+  std::string referenceUnsupported() const;
+  // What it integrates (ReferenceInputs): the drawn parts' surfaces as their actors draw them when
+  // still (in the drawing frame, never the stand-in), each triangle with its part's material as
+  // drawn, the camera without the accumulation's jitter (the pass restores it after each frame),
+  // the lighting's environment on screen (kept alive by the inputs) and its rotation, the window's
+  // size in pixels. Throws aniso::Error "reference: WHY" with referenceUnsupported()'s reason.
+  ReferenceInputs referenceInputs() const;
+  // What referenceInputs depends on, without copying a triangle: equal keys, equal inputs.
+  struct ReferenceKey
+  {
+    int width = 0;
+    int height = 0;
+    glm::dmat4 clipToWorld{1.0};
+    glm::dmat3 worldToEnvironment{1.0};
+    const Environment* environment = nullptr;
+    struct Part
+    {
+      const vtkPolyData* surface = nullptr;
+      vtkMTimeType time = 0;
+      ReferenceMaterial material;
+    };
+    std::vector<Part> parts;
+    std::string unsupported;
+    bool operator==(const ReferenceKey& o) const;
+    bool operator!=(const ReferenceKey& o) const { return !(*this == o); }
+  };
+  ReferenceKey referenceKey() const;
+  // The view's running mean (linear RGBA, row 0 at the top; the accumulation pass's
+  // ReadAccumulation), empty before the first frame.
+  Image linearImage();
 
 public slots:
   // One frame soon (several requests before it make one frame).

@@ -3,6 +3,8 @@
 #include "app/cli.h"
 #include "app/gui/MainWindow.h"
 #include "app/gui/OpenGlCheck.h"
+#include "app/gui/ReferenceDock.h"
+#include "app/gui/ReferenceView.h"
 #include "app/gui/SceneView.h"
 #include "core/error.h"
 #include "scene/LutScheduler.h"
@@ -31,13 +33,14 @@ struct GuiArguments
   std::string session;
   std::string screenshot;
   std::string windowScreenshot;
+  std::string referenceView; // "wipe" or "error": View > Reference on, the dock showing that
   bool quit = false;
 };
 
 bool isWindowOption(const std::string& arg)
 {
   return arg == "--session" || arg == "--screenshot" || arg == "--window-screenshot" ||
-         arg == "--quit";
+         arg == "--reference-view" || arg == "--quit";
 }
 
 // Session files are JSON (scene/Session.h); no mesh format the window reads is.
@@ -74,6 +77,14 @@ GuiArguments parse(const std::vector<std::string>& args)
     else if (arg == "--window-screenshot")
     {
       a.windowScreenshot = value();
+    }
+    else if (arg == "--reference-view")
+    {
+      a.referenceView = value();
+      if (a.referenceView != "wipe" && a.referenceView != "error")
+      {
+        throw cli::usageError(arg, "'" + a.referenceView + "' is not one of wipe, error");
+      }
     }
     else if (arg == "--quit")
     {
@@ -138,7 +149,8 @@ bool isGuiCommandLine(const std::vector<std::string>& args)
 
 std::string guiUsage()
 {
-  return "aniso [MESH...] [SESSION.json | --session FILE] [--screenshot FILE [--quit]]";
+  return "aniso [MESH...] [SESSION.json | --session FILE] [--reference-view wipe|error] "
+         "[--screenshot FILE | --window-screenshot FILE [--quit]]";
 }
 
 int runGui(const std::vector<std::string>& args)
@@ -217,6 +229,13 @@ int runGui(const std::vector<std::string>& args)
     throw Error(failure);
   }
 
+  if (!a.referenceView.empty())
+  {
+    window.referenceDock()->setMode(a.referenceView == "error" ? ReferenceCanvas::Mode::Error
+                                                               : ReferenceCanvas::Mode::Wipe);
+    window.showReference(true);
+  }
+
   int code = 0;
   if (!a.screenshot.empty())
   {
@@ -242,38 +261,58 @@ int runGui(const std::vector<std::string>& args)
   }
   if (!a.windowScreenshot.empty())
   {
-    // The whole window, once the view has refined to its quality.
+    // The whole window, once the view has refined to its quality (and with --reference-view,
+    // once the reference is complete and compared with it).
     auto grabbed = std::make_shared<bool>(false);
-    QObject::connect(window.view(), &SceneView::frameRendered, &window,
-                     [&, grabbed]
-                     {
-                       if (*grabbed || !window.view()->converged() || window.lutScheduler()->busy())
-                       {
-                         return;
-                       }
-                       *grabbed = true;
-                       // Let the status bar and docks lay themselves out with the final texts
-                       // first.
-                       QTimer::singleShot(
-                           300, &window,
-                           [&]
+    const auto grab = [&, grabbed]
+    {
+      if (*grabbed)
+      {
+        return;
+      }
+      ReferenceView* reference = window.referenceView();
+      const bool uncompared = reference->complete() && reference->pixelsTotal() == 0;
+      if (!a.referenceView.empty() && (!reference->unsupported().isEmpty() || uncompared))
+      {
+        *grabbed = true;
+        std::cerr << "aniso: --reference-view: "
+                  << (uncompared ? reference->progressText()
+                                 : "the view has no reference: " + reference->unsupported())
+                         .toStdString()
+                  << "\n";
+        code = 1;
+        QApplication::exit(code);
+        return;
+      }
+      if (!window.view()->converged() || window.lutScheduler()->busy() ||
+          (!a.referenceView.empty() && (!reference->complete() || !reference->error())))
+      {
+        return;
+      }
+      *grabbed = true;
+      // Let the status bar and docks lay themselves out with the final texts first.
+      QTimer::singleShot(300, &window,
+                         [&]
+                         {
+                           window.referenceDock()->refresh();
+                           const QString path = QString::fromStdString(a.windowScreenshot);
+                           if (window.grab().save(path))
                            {
-                             const QString path = QString::fromStdString(a.windowScreenshot);
-                             if (window.grab().save(path))
-                             {
-                               std::cout << "aniso: wrote " << a.windowScreenshot << "\n";
-                             }
-                             else
-                             {
-                               std::cerr << "aniso: " << a.windowScreenshot << ": cannot write\n";
-                               code = 1;
-                             }
-                             if (a.quit)
-                             {
-                               QApplication::exit(code);
-                             }
-                           });
-                     });
+                             std::cout << "aniso: wrote " << a.windowScreenshot << "\n";
+                           }
+                           else
+                           {
+                             std::cerr << "aniso: " << a.windowScreenshot << ": cannot write\n";
+                             code = 1;
+                           }
+                           if (a.quit)
+                           {
+                             QApplication::exit(code);
+                           }
+                         });
+    };
+    QObject::connect(window.view(), &SceneView::frameRendered, &window, grab);
+    QObject::connect(window.referenceView(), &ReferenceView::changed, &window, grab);
   }
   const int result = QApplication::exec();
   return code ? code : result;
