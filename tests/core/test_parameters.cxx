@@ -401,6 +401,11 @@ TEST(Parameters, ChoicesParseToDistinctEnumsAndBack)
   expectEnumChoices<OnOff>(covered, "self-shadow", onOff("self-shadow"), {"off", "on"}, "off");
   expectEnumChoices<MicroBrdf>(covered, "micro-brdf", parseMicroBrdf, {"ggx", "blinn-phong"},
                                "ggx");
+  expectEnumChoices<FieldTarget>(covered, "field-target", parseFieldTarget,
+                                 {"albedo", "f0", "roughness", "anisotropy"}, "albedo");
+  expectEnumChoices<ColorMap>(covered, "field-colormap", parseColorMap,
+                              {"viridis", "cividis", "cool-to-warm", "grayscale"}, "viridis");
+  expectEnumChoices<OnOff>(covered, "legend", onOff("legend"), {"on", "off"}, "on");
   for (const ParameterSpec& spec : parameterSpecs())
   {
     EXPECT_EQ(covered.count(std::string(spec.name)) == 1, !spec.choices.empty()) << spec.name;
