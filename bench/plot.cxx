@@ -76,16 +76,22 @@ struct Drawing
 
 struct Axis
 {
-  int lowDecade = 0;
-  int highDecade = 1;
-  double from = 0.0; // pixel of lowDecade
-  double to = 1.0;   // pixel of highDecade
+  bool log = true;
+  int lowDecade = 0;  // log
+  int highDecade = 1; // log
+  double low = 0.0;   // linear: the value at FROM
+  double high = 1.0;  // linear: the value at TO
+  double step = 1.0;  // linear: between labelled grid lines
+  double from = 0.0;  // pixel of lowDecade (log) or low (linear)
+  double to = 1.0;    // pixel of highDecade (log) or high (linear)
 
   double map(double value) const
   {
-    const double t = (std::log10(value) - lowDecade) / double(highDecade - lowDecade);
+    const double t = log ? (std::log10(value) - lowDecade) / double(highDecade - lowDecade)
+                         : (value - low) / (high - low);
     return from + t * (to - from);
   }
+  bool holds(double value) const { return std::isfinite(value) && (!log || value > 0.0); }
 };
 
 Axis axisFor(double lo, double hi, double from, double to)
@@ -107,6 +113,51 @@ Axis axisFor(double lo, double hi, double from, double to)
   return axis;
 }
 
+// About six labelled steps of 1, 2 or 5 times a power of ten, from a multiple of the step at or
+// below LO to one at or above HI.
+Axis linearAxisFor(double lo, double hi, double from, double to)
+{
+  Axis axis;
+  axis.log = false;
+  if (!std::isfinite(lo) || !std::isfinite(hi) || hi < lo)
+  {
+    lo = 0.0;
+    hi = 1.0;
+  }
+  if (hi - lo <= 1e-12 * std::max(1.0, std::abs(hi)))
+  {
+    const double pad = lo == 0.0 ? 1.0 : 0.1 * std::abs(lo);
+    lo -= pad;
+    hi += pad;
+  }
+  const double rough = (hi - lo) / 6.0;
+  const double power = std::pow(10.0, std::floor(std::log10(rough)));
+  const double fraction = rough / power;
+  axis.step = (fraction <= 1.0   ? 1.0
+               : fraction <= 2.0 ? 2.0
+               : fraction <= 5.0 ? 5.0
+                                 : 10.0) *
+              power;
+  axis.low = std::floor(lo / axis.step) * axis.step;
+  axis.high = std::ceil(hi / axis.step) * axis.step;
+  if (axis.high <= axis.low)
+  {
+    axis.high = axis.low + axis.step;
+  }
+  axis.from = from;
+  axis.to = to;
+  return axis;
+}
+
+// A linear axis' label at VALUE: as many decimals as the step needs.
+std::string stepLabel(double value, double step)
+{
+  const int decimals = std::max(0, -static_cast<int>(std::floor(std::log10(step) + 1e-9)));
+  char text[32];
+  std::snprintf(text, sizeof text, "%.*f", decimals, std::abs(value) < 0.5 * step ? 0.0 : value);
+  return text;
+}
+
 std::string decadeLabel(int decade)
 {
   if (decade >= -3 && decade <= 3)
@@ -126,14 +177,15 @@ void layoutPanel(const PlotPanel& panel, double x0, double y0, double width, dou
   const double top = y0 + kTop;
   const double bottom = y0 + height - kBottom;
   double xLo = std::numeric_limits<double>::infinity();
-  double xHi = 0.0;
+  double xHi = -std::numeric_limits<double>::infinity();
   double yLo = std::numeric_limits<double>::infinity();
-  double yHi = 0.0;
+  double yHi = -std::numeric_limits<double>::infinity();
+  const auto usable = [](double v, bool log) { return std::isfinite(v) && (!log || v > 0.0); };
   for (const PlotSeries& s : panel.series)
   {
     for (const glm::dvec2& p : s.points)
     {
-      if (p.x > 0.0 && p.y > 0.0 && std::isfinite(p.x) && std::isfinite(p.y))
+      if (usable(p.x, panel.logX) && usable(p.y, panel.logY))
       {
         xLo = std::min(xLo, p.x);
         xHi = std::max(xHi, p.x);
@@ -142,13 +194,48 @@ void layoutPanel(const PlotPanel& panel, double x0, double y0, double width, dou
       }
     }
   }
-  const Axis xAxis = axisFor(xLo, xHi, left, right);
-  const Axis yAxis = axisFor(yLo, yHi, bottom, top);
+  const Axis xAxis =
+      panel.logX ? axisFor(xLo, xHi, left, right) : linearAxisFor(xLo, xHi, left, right);
+  const Axis yAxis =
+      panel.logY ? axisFor(yLo, yHi, bottom, top) : linearAxisFor(yLo, yHi, bottom, top);
 
-  // Grid: minor lines at 2..9 of each decade, major lines and labels at the decades.
+  // Grid: on log axes minor lines at 2..9 of each decade, major lines and labels at the decades;
+  // on linear ones lines and labels at each step, minor lines halfway.
   for (const Axis* axis : {&xAxis, &yAxis})
   {
     const bool horizontal = axis == &xAxis;
+    if (!axis->log)
+    {
+      const int steps = static_cast<int>(std::lround((axis->high - axis->low) / axis->step));
+      for (int k = 0; k <= 2 * steps; ++k)
+      {
+        const double value = axis->low + 0.5 * k * axis->step;
+        const double at = axis->map(value);
+        const glm::dvec3 color = k % 2 == 0 ? kGrid : kMinorGrid;
+        if (horizontal)
+        {
+          d.lines.push_back({{at, top}, {at, bottom}, 1.0, color, 1.0});
+        }
+        else
+        {
+          d.lines.push_back({{left, at}, {right, at}, 1.0, color, 1.0});
+        }
+        if (k % 2 != 0)
+        {
+          continue;
+        }
+        const std::string label = stepLabel(value, axis->step);
+        if (horizontal)
+        {
+          d.texts.push_back({{at, bottom + 16.0}, label, kTickSize, Anchor::Middle, false, kBlack});
+        }
+        else
+        {
+          d.texts.push_back({{left - 5.0, at + 4.0}, label, kTickSize, Anchor::End, false, kBlack});
+        }
+      }
+      continue;
+    }
     for (int decade = axis->lowDecade; decade <= axis->highDecade; ++decade)
     {
       for (int m = 1; m <= 9 && (m == 1 || decade < axis->highDecade); ++m)
@@ -194,8 +281,7 @@ void layoutPanel(const PlotPanel& panel, double x0, double y0, double width, dou
   d.texts.push_back(
       {{x0 + 16.0, 0.5 * (top + bottom)}, panel.yLabel, kLabelSize, Anchor::Middle, true, kBlack});
 
-  auto inside = [&](const glm::dvec2& p)
-  { return p.x > 0.0 && p.y > 0.0 && std::isfinite(p.x) && std::isfinite(p.y); };
+  auto inside = [&](const glm::dvec2& p) { return xAxis.holds(p.x) && yAxis.holds(p.y); };
   for (const PlotSeries& s : panel.series)
   {
     std::vector<glm::dvec2> mapped;

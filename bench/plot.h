@@ -1,8 +1,9 @@
 #pragma once
-// Log-log scatter plots with lines (error against time, Pareto fronts), laid out once as a list
-// of drawing primitives, then written as SVG text or rasterised into an image for PNG files,
-// so both show the same picture. The rasteriser anti-aliases by exact pixel coverage and draws
-// text with a built-in 5x7 bitmap font (printable ASCII). GL-free, no dependencies.
+// Scatter plots with lines (error against time, Pareto fronts: log-log; a quantity over a run:
+// linear axes), laid out once as a list of drawing primitives, then written as SVG text or
+// rasterised into an image for PNG files, so both show the same picture. The rasteriser
+// anti-aliases by exact pixel coverage and draws text with a built-in 5x7 bitmap font (printable
+// ASCII). GL-free, no dependencies.
 #include "core/image/image.h"
 
 #include <glm/vec2.hpp>
@@ -37,6 +38,10 @@ struct PlotPanel
   std::string xLabel;
   std::string yLabel;
   std::vector<PlotSeries> series;
+  // Logarithmic axes span whole decades around the data (which must be > 0); linear ones span
+  // round steps (1, 2 or 5 times a power of ten) around it.
+  bool logX = true;
+  bool logY = true;
 };
 
 struct Figure
@@ -48,7 +53,7 @@ struct Figure
   int panelHeight = 360;
 };
 
-// Both axes logarithmic, each spanning whole decades around the panel's data.
+// Each panel's axes as it asks (logarithmic by default).
 std::string figureToSvg(const Figure& figure);
 // The same figure as an RGBA image (opaque white background).
 Image figureToImage(const Figure& figure);
