@@ -12,7 +12,12 @@ aniso_install_packages "${ANISO_PACKAGES[@]}"
 build="${ANISO_ASAN_BUILD_DIR:-$root/build-asan}"
 jobs="$(nproc 2>/dev/null || echo 2)"
 flags="-fsanitize=address,undefined -fno-sanitize-recover=undefined -fno-omit-frame-pointer"
-cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS="$flags" \
+# -O1 -g1 (line tables for the reports' stacks): the build takes a third less time than -O2 -g.
+# Warnings stay warnings here: the release build of ./test holds them to -Werror, and gcc's
+# warnings differ under the sanitizers' instrumentation (false "maybe-uninitialized" in <regex>).
+cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+  -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1 -DNDEBUG" -DCMAKE_C_FLAGS_RELWITHDEBINFO="-O1 -g1 -DNDEBUG" \
+  -DANISO_WARNINGS_AS_ERRORS=OFF -DCMAKE_CXX_FLAGS="$flags" \
   -DCMAKE_C_FLAGS="$flags" -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=address,undefined" >/dev/null
 cmake --build "$build" -j "$jobs"
 cd "$build"
