@@ -36,7 +36,7 @@
 //   xvfb-run -a -s "-screen 0 1920x1080x24 -noreset" bench_soak [--edits N] [--loads N]
 //     [--frame-every N] [--size WxH] [--target-samples N] [--undo-limit N] [--csv FILE]
 //     [--svg FILE]
-// --undo-limit caps the window's undo stack (a diagnosis: its history is unbounded otherwise).
+// --undo-limit caps the window's undo stack lower than its own limit (SceneEditor::kUndoLimit).
 // The run's caches, settings and state go to a temporary directory (XDG_CACHE_HOME,
 // XDG_CONFIG_HOME, XDG_STATE_HOME), so it starts cold and leaves the user's alone.
 // clang-format off
@@ -575,7 +575,7 @@ int main(int argc, char** argv)
     pumpUntil(idle, 120000);
     if (undoLimit > 0)
     {
-      // A diagnosis: the undo history capped, to tell its growth from the rest's.
+      // The undo history capped lower than the window does, to tell its growth from the rest's.
       editor->undoStack()->clear();
       editor->undoStack()->setUndoLimit(undoLimit);
     }

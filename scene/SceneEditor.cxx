@@ -344,6 +344,7 @@ private:
 SceneEditor::SceneEditor(SceneModel* model, QObject* parent)
     : QObject(parent), model_(model), stack_(new QUndoStack(this))
 {
+  stack_->setUndoLimit(kUndoLimit);
 }
 
 SceneEditor::~SceneEditor() = default;

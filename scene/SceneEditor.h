@@ -18,6 +18,11 @@ class SceneEditor : public QObject
   Q_OBJECT
 
 public:
+  // The steps the history keeps; the oldest goes when a new one would exceed it. A step holds
+  // what it changed (6.3 KiB a material edit, 17 KiB an opened file in the soak's mix,
+  // docs/RELIABILITY.md), so the history stays under about 20 MiB however long the session.
+  static constexpr int kUndoLimit = 1000;
+
   explicit SceneEditor(SceneModel* model, QObject* parent = nullptr);
   ~SceneEditor() override;
 

@@ -250,6 +250,28 @@ private slots:
     QCOMPARE(model.real("nu"), 10000.0);
   }
 
+  // The history keeps the last kUndoLimit steps: after kUndoLimit + 5 edits, undoing all it
+  // holds leaves the value of the fifth edit, the first five steps being gone.
+  void historyKeepsTheLastSteps()
+  {
+    SceneModel model;
+    aniso::SceneEditor editor(&model);
+    const int limit = aniso::SceneEditor::kUndoLimit;
+    QVERIFY(limit >= 100);
+    for (int i = 1; i <= limit + 5; ++i)
+    {
+      editor.edit("nu", numberValue(1000.0 + i));
+    }
+    QCOMPARE(editor.undoStack()->count(), limit);
+    while (editor.undoStack()->canUndo())
+    {
+      editor.undoStack()->undo();
+    }
+    QCOMPARE(model.real("nu"), 1005.0);
+    editor.undoStack()->setIndex(limit);
+    QCOMPARE(model.real("nu"), 1000.0 + limit + 5);
+  }
+
   // Replacing the whole scene (opening a session) is one step; undo restores values and camera.
   void replaceSceneIsOneStep()
   {
