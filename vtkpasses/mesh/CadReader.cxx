@@ -36,13 +36,17 @@
 #include <XCAFDoc_ShapeTool.hxx>
 #include <algorithm>
 #include <array>
+#include <cctype>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <gp_Trsf.hxx>
 #include <map>
 #include <optional>
+#include <set>
+#include <vector>
 #include <vtkCellArray.h>
 #include <vtkFloatArray.h>
 #include <vtkNew.h>
@@ -134,6 +138,94 @@ void checkComplete(const std::string& path, const std::string& ext)
   }
 }
 
+// A STEP file names each entity instance once (ISO 10303-21) and refers only to instances it
+// names. OpenCASCADE 7.6 takes the last of two instances of one name, and leaves a reference to
+// a name that is not there empty; its geometry translation checks neither the type nor the
+// presence of what a reference gives: a LINE whose point is a LINE, or an AXIS2_PLACEMENT_3D
+// whose point is missing, crashes it in StepToGeom::MakeCartesianPoint (fuzz_step;
+// tests/data/fuzz/step). So a file that names an instance twice, or refers to one it does not
+// name, is refused first. An instance's name is a "#N =" at the start of a line or after a ';';
+// any other "#N" is a reference, except inside comments (/* ... */) and strings ('...', taken
+// to end at the end of their line, so that a quote left open, which OpenCASCADE gets over, hides
+// no more than its line). A reference of the wrong type is not caught here: that crash is left
+// to the reader program's process (docs/RELIABILITY.md).
+void checkStepInstances(const std::string& path)
+{
+  std::ifstream in(path, std::ios::binary);
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  std::set<std::string> names;
+  std::vector<std::string> references;
+  bool statementStart = true;
+  size_t i = 0;
+  auto isDigit = [&text](size_t k)
+  { return k < text.size() && std::isdigit(static_cast<unsigned char>(text[k])); };
+  while (i < text.size())
+  {
+    const char c = text[i];
+    if (c == '/' && i + 1 < text.size() && text[i + 1] == '*')
+    {
+      const size_t close = text.find("*/", i + 2);
+      i = close == std::string::npos ? text.size() : close + 2;
+      continue;
+    }
+    if (c == ';' || c == '\n')
+    {
+      statementStart = true;
+      ++i;
+      continue;
+    }
+    if (std::isspace(static_cast<unsigned char>(c)))
+    {
+      ++i;
+      continue;
+    }
+    if (c == '\'')
+    {
+      const size_t close = text.find_first_of("'\n", i + 1); // '' reads as two strings
+      i = close == std::string::npos ? text.size() : text[close] == '\'' ? close + 1 : close;
+      statementStart = false;
+      continue;
+    }
+    if (c == '#' && isDigit(i + 1))
+    {
+      size_t end = i + 1;
+      while (isDigit(end))
+      {
+        ++end;
+      }
+      const std::string name = text.substr(i + 1, end - i - 1);
+      size_t equals = end;
+      while (equals < text.size() && std::isspace(static_cast<unsigned char>(text[equals])))
+      {
+        ++equals;
+      }
+      if (statementStart && equals < text.size() && text[equals] == '=')
+      {
+        if (!names.insert(name).second)
+        {
+          throw errorAbout(path, "the STEP file names entity #" + name + " twice");
+        }
+      }
+      else
+      {
+        references.push_back(name);
+      }
+      i = end;
+      statementStart = false;
+      continue;
+    }
+    statementStart = false;
+    ++i;
+  }
+  for (const std::string& name : references)
+  {
+    if (names.count(name) == 0)
+    {
+      throw errorAbout(path, "the STEP file refers to entity #" + name + ", which it does not name");
+    }
+  }
+}
+
 const char* statusText(IFSelect_ReturnStatus status)
 {
   switch (status)
@@ -152,11 +244,38 @@ const char* statusText(IFSelect_ReturnStatus status)
   return "could not be read";
 }
 
-Handle(TDocStd_Document) readDocument(const std::string& path, const std::string& ext)
+// An XCAF document of the application's, closed when this goes: its labels and attributes hold
+// handles to each other, so a document left open is never freed (a leak per file read, which
+// fuzz_step and fuzz_iges found; the reader program reads one file, a harness many).
+class OpenDocument
 {
-  Handle(XCAFApp_Application) application = XCAFApp_Application::GetApplication();
-  Handle(TDocStd_Document) document;
-  application->NewDocument("MDTV-XCAF", document);
+public:
+  OpenDocument()
+  {
+    XCAFApp_Application::GetApplication()->NewDocument("MDTV-XCAF", document_);
+  }
+  ~OpenDocument()
+  {
+    try
+    {
+      XCAFApp_Application::GetApplication()->Close(document_);
+    }
+    catch (const Standard_Failure&)
+    {
+    }
+  }
+  OpenDocument(const OpenDocument&) = delete;
+  OpenDocument& operator=(const OpenDocument&) = delete;
+  const Handle(TDocStd_Document)& get() const { return document_; }
+
+private:
+  Handle(TDocStd_Document) document_;
+};
+
+// Reads the file into DOCUMENT.
+void readDocument(Handle(TDocStd_Document) document, const std::string& path,
+                  const std::string& ext)
+{
   const std::string kind = isStep(ext) ? "STEP" : "IGES";
   IFSelect_ReturnStatus status = IFSelect_RetFail;
   bool transferred = false;
@@ -186,7 +305,6 @@ Handle(TDocStd_Document) readDocument(const std::string& path, const std::string
   {
     throw errorAbout(path, "no shape of the " + kind + " file could be transferred");
   }
-  return document;
 }
 
 struct Leaf
@@ -498,7 +616,13 @@ std::vector<ReaderBlock> readBlocks(const std::string& path, const std::string& 
                                     std::vector<std::string>& warnings)
 {
   checkComplete(path, ext);
-  const Handle(TDocStd_Document) document = readDocument(path, ext);
+  if (isStep(ext))
+  {
+    checkStepInstances(path);
+  }
+  const OpenDocument open;
+  const Handle(TDocStd_Document)& document = open.get();
+  readDocument(document, path, ext);
   const Handle(XCAFDoc_ShapeTool) shapes = XCAFDoc_DocumentTool::ShapeTool(document->Main());
   const Handle(XCAFDoc_ColorTool) colours = XCAFDoc_DocumentTool::ColorTool(document->Main());
   TDF_LabelSequence roots;

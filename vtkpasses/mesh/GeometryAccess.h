@@ -11,6 +11,8 @@
 #include <vtkCellArray.h>
 #include <vtkCellArrayIterator.h>
 #include <vtkDataArray.h>
+#include <vtkIdList.h>
+#include <vtkNew.h>
 #include <vtkPoints.h>
 #include <vtkSmartPointer.h>
 
@@ -35,12 +37,36 @@ inline glm::dvec3 tupleAt(vtkDataArray* array, vtkIdType id)
   return v;
 }
 
-// Calls f(count, ids) for every cell.
+// Calls f(count, ids) for every cell. A cell array whose offsets do not fit its connectivity
+// (out of order, past its end: a hostile file's, which VTK's readers and the reader program's
+// XML pass on as they are) is walked cell by cell, and a cell whose ids lie outside the
+// connectivity is passed as f(0, nullptr), so that callers count it and never read past the
+// array (fuzz_vtk; tests/data/fuzz/vtk).
 template <typename F>
 void forEachCell(vtkCellArray* cells, F&& f)
 {
   if (!cells)
   {
+    return;
+  }
+  if (!cells->IsValid())
+  {
+    vtkDataArray* offsets = cells->GetOffsetsArray();
+    const vtkIdType size = cells->GetNumberOfConnectivityIds();
+    const vtkIdType n = offsets ? offsets->GetNumberOfTuples() - 1 : 0;
+    vtkNew<vtkIdList> cell;
+    for (vtkIdType i = 0; i < n; ++i)
+    {
+      const double start = offsets->GetComponent(i, 0);
+      const double end = offsets->GetComponent(i + 1, 0);
+      if (!(start >= 0.0 && start <= end && end <= double(size)))
+      {
+        f(vtkIdType(0), static_cast<const vtkIdType*>(nullptr));
+        continue;
+      }
+      cells->GetCellAtId(i, cell);
+      f(cell->GetNumberOfIds(), static_cast<const vtkIdType*>(cell->GetPointer(0)));
+    }
     return;
   }
   auto it = vtk::TakeSmartPointer(cells->NewIterator());

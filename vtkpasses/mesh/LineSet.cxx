@@ -1,6 +1,7 @@
 #include "vtkpasses/mesh/LineSet.h"
 
 #include "core/error.h"
+#include "vtkpasses/mesh/GeometryAccess.h"
 
 #include <cmath>
 #include <glm/geometric.hpp>
@@ -104,12 +105,9 @@ vtkSmartPointer<vtkPolyData> sanitizeLines(vtkPolyData* input, const std::string
   vtkCellArray* lines = input->GetLines();
   if (lines && pointCount > 0)
   {
-    auto it = vtk::TakeSmartPointer(lines->NewIterator());
-    for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell())
+    // forEachCell: a malformed cell array's cells outside its connectivity come as (0, null).
+    geometry::forEachCell(lines, [&](vtkIdType n, const vtkIdType* ids)
     {
-      vtkIdType n = 0;
-      const vtkIdType* ids = nullptr;
-      it->GetCurrentCell(n, ids);
       bool inRange = n >= 2;
       for (vtkIdType k = 0; k < n && inRange; ++k)
       {
@@ -118,7 +116,7 @@ vtkSmartPointer<vtkPolyData> sanitizeLines(vtkPolyData* input, const std::string
       if (!inRange)
       {
         ++report.invalidCellsDropped;
-        continue;
+        return;
       }
       std::vector<glm::dvec3> run;
       for (vtkIdType k = 0; k < n; ++k)
@@ -137,7 +135,7 @@ vtkSmartPointer<vtkPolyData> sanitizeLines(vtkPolyData* input, const std::string
         run.push_back(p);
       }
       close(run);
-    }
+    });
   }
   else if (lines)
   {

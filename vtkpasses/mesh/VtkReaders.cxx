@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <array>
 #include <cctype>
+#include <cerrno>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -145,8 +146,168 @@ std::optional<std::string> objWithMarkedVertices(const std::string& path)
   return text;
 }
 
+// vtkOBJReader (VTK 9.1) indexes its texture coordinates while it parses a face, its normals
+// and, once it has to duplicate vertices (a face's texture or normal indices differ from its
+// vertex indices), its vertices afterwards, all without a range check; and it copies a usemtl
+// name into a buffer of 100 bytes. "f 1/1 2/1 3/1" in a file without "vt" statements, or a
+// normal index past the last "vn", crashes it (fuzz_obj; tests/data/fuzz/obj). So the file is
+// read here first as that reader reads it (lines cut at a NUL byte, a face's corners parsed
+// with its sscanf patterns from each word on, a lone "\\" at the end of a line continuing the
+// face on the next line; a negative index counts back from the statements of its kind read so
+// far) and refused when a face indexes a texture coordinate or a normal that is not there, when
+// a face's vertex is not there in a file whose faces index texture coordinates or normals, or
+// when a usemtl name is too long. Faces of vertices alone keep their bad indices, which the
+// reader passes through for sanitizeSurface to drop. Where the reader itself stops (a corner it
+// cannot parse), so does this.
+void checkObjIndices(const std::string& path)
+{
+  std::ifstream in(path, std::ios::binary);
+  // Statements in the whole file: the reader's vertex, texture coordinate and normal arrays.
+  long long totals[3] = {0, 0, 0};
+  std::vector<std::string> lines;
+  std::string line;
+  auto isSpace = [](char c) { return std::isspace(static_cast<unsigned char>(c)) != 0; };
+  auto command = [&](const std::string& text, size_t& at)
+  {
+    at = 0;
+    while (at < text.size() && isSpace(text[at]))
+    {
+      ++at;
+    }
+    const size_t start = at;
+    while (at < text.size() && !isSpace(text[at]))
+    {
+      ++at;
+    }
+    return text.substr(start, at - start);
+  };
+  while (std::getline(in, line))
+  {
+    line = line.c_str(); // the reader's C string ends at a NUL byte
+    lines.push_back(line);
+    size_t at = 0;
+    const std::string word = command(line, at);
+    if (word == "v" || word == "vt" || word == "vn")
+    {
+      ++totals[word.size() == 1 ? 0 : word[1] == 't' ? 1 : 2];
+    }
+  }
+  const char* const kinds[3] = {"vertex", "texture coordinate", "normal"};
+  long long seen[3] = {0, 0, 0}; // statements before the current line
+  bool attributes = false;       // some face indexes a texture coordinate or a normal
+  int badVertexLine = 0;         // the first face with a vertex that is not there
+  long long badVertex = 0;
+  bool stopped = false; // where the reader stops reading the file
+  for (size_t n = 0; n < lines.size() && !stopped; ++n)
+  {
+    size_t at = 0;
+    const std::string word = command(lines[n], at);
+    if (word == "v" || word == "vt" || word == "vn")
+    {
+      ++seen[word.size() == 1 ? 0 : word[1] == 't' ? 1 : 2];
+      continue;
+    }
+    if (word == "usemtl")
+    {
+      std::istringstream rest(lines[n].substr(at));
+      std::string name;
+      if (rest >> name && name.size() >= 100)
+      {
+        throw errorAbout(path, "line " + std::to_string(n + 1) +
+                                   ": a material name longer than 99 characters");
+      }
+      continue;
+    }
+    if (word != "f")
+    {
+      continue;
+    }
+    // An index of KIND as the reader turns it into a place in its array, or refused.
+    auto check = [&](int kind, int index, size_t where)
+    {
+      const long long place = index < 0 ? seen[kind] + index : static_cast<long long>(index) - 1;
+      if (place >= 0 && place < totals[kind])
+      {
+        return;
+      }
+      if (kind == 0)
+      {
+        if (badVertexLine == 0)
+        {
+          badVertexLine = static_cast<int>(where + 1);
+          badVertex = index;
+        }
+        return;
+      }
+      throw errorAbout(path, "line " + std::to_string(where + 1) + ": a face refers to " +
+                                 kinds[kind] + " " + std::to_string(index) +
+                                 ", but the file has " + std::to_string(totals[kind]));
+    };
+    const std::string* text = &lines[n];
+    while (!stopped)
+    {
+      while (at < text->size() && isSpace((*text)[at]))
+      {
+        ++at;
+      }
+      if (at >= text->size())
+      {
+        break;
+      }
+      const char* corner = text->c_str() + at;
+      int v = 0;
+      int t = 0;
+      int normal = 0;
+      if (std::sscanf(corner, "%d/%d/%d", &v, &t, &normal) == 3)
+      {
+        check(0, v, n);
+        check(1, t, n);
+        check(2, normal, n);
+        attributes = true;
+      }
+      else if (std::sscanf(corner, "%d//%d", &v, &normal) == 2)
+      {
+        check(0, v, n);
+        check(2, normal, n);
+        attributes = true;
+      }
+      else if (std::sscanf(corner, "%d/%d", &v, &t) == 2)
+      {
+        check(0, v, n);
+        check(1, t, n);
+        attributes = true;
+      }
+      else if (std::sscanf(corner, "%d", &v) == 1)
+      {
+        check(0, v, n);
+      }
+      else if (std::string(corner) == "\\" && n + 1 < lines.size())
+      {
+        text = &lines[++n];
+        at = 0;
+        continue;
+      }
+      else
+      {
+        stopped = true; // a corner the reader cannot parse
+      }
+      while (at < text->size() && !isSpace((*text)[at]))
+      {
+        ++at;
+      }
+    }
+  }
+  if (attributes && badVertexLine != 0)
+  {
+    throw errorAbout(path, "line " + std::to_string(badVertexLine) + ": a face refers to vertex " +
+                               std::to_string(badVertex) + ", but the file has " +
+                               std::to_string(totals[0]));
+  }
+}
+
 vtkSmartPointer<vtkPolyData> readObj(const std::string& path, const VtkMessageCapture& capture)
 {
+  checkObjIndices(path);
   const std::optional<std::string> marked = objWithMarkedVertices(path);
   const std::filesystem::path copy = std::filesystem::temp_directory_path() /
                                      ("aniso_obj_vertices_" + std::to_string(::getpid()) + ".obj");
