@@ -40,8 +40,8 @@ inline glm::dvec3 tupleAt(vtkDataArray* array, vtkIdType id)
 // Calls f(count, ids) for every cell. A cell array whose offsets do not fit its connectivity
 // (out of order, past its end: a hostile file's, which VTK's readers and the reader program's
 // XML pass on as they are) is walked cell by cell, and a cell whose ids lie outside the
-// connectivity is passed as f(0, nullptr), so that callers count it and never read past the
-// array (fuzz_vtk; tests/data/fuzz/vtk).
+// connectivity is passed as an empty cell (count 0), so that callers count it and never read
+// past the array (fuzz_vtk; tests/data/fuzz/vtk).
 template <typename F>
 void forEachCell(vtkCellArray* cells, F&& f)
 {
@@ -61,7 +61,8 @@ void forEachCell(vtkCellArray* cells, F&& f)
       const double end = offsets->GetComponent(i + 1, 0);
       if (!(start >= 0.0 && start <= end && end <= double(size)))
       {
-        f(vtkIdType(0), static_cast<const vtkIdType*>(nullptr));
+        static const vtkIdType none = 0;
+        f(vtkIdType(0), &none);
         continue;
       }
       cells->GetCellAtId(i, cell);

@@ -105,7 +105,7 @@ vtkSmartPointer<vtkPolyData> sanitizeLines(vtkPolyData* input, const std::string
   vtkCellArray* lines = input->GetLines();
   if (lines && pointCount > 0)
   {
-    // forEachCell: a malformed cell array's cells outside its connectivity come as (0, null).
+    // forEachCell: a malformed cell array's cells outside its connectivity come empty.
     geometry::forEachCell(lines, [&](vtkIdType n, const vtkIdType* ids)
     {
       bool inRange = n >= 2;
