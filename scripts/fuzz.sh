@@ -18,8 +18,11 @@ seconds="${1:-20}"
 shift || true
 harnesses=("$@")
 if [ ${#harnesses[@]} -eq 0 ]; then
+  # fuzz_step and fuzz_iges are run by name: OpenCASCADE 7.6 crashes on entities it cannot read
+  # within seconds of mutation (docs/RELIABILITY.md, Fuzzing), which the reader program's process
+  # contains but a smoke would report every time.
   harnesses=(fuzz_ply fuzz_stl fuzz_off fuzz_obj fuzz_vtk fuzz_vtp fuzz_vtm fuzz_gltf fuzz_glb
-    fuzz_step fuzz_iges fuzz_text_values fuzz_session fuzz_image fuzz_material_library fuzz_mtl)
+    fuzz_text_values fuzz_session fuzz_image fuzz_material_library fuzz_mtl)
 fi
 build="${ANISO_FUZZ_BUILD_DIR:-$root/build-fuzz}"
 out="${ANISO_FUZZ_OUT:-$root/out/fuzz}"
