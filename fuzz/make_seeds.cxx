@@ -239,7 +239,8 @@ int main(int argc, char** argv)
   }
   const fs::path dir = argv[1];
   for (const char* sub : {"ply", "stl", "off", "obj", "vtk", "vtp", "vtm", "gltf", "glb", "step",
-                          "iges", "session", "text_values", "image", "material_library", "mtl"})
+                          "iges", "session", "text_values", "image", "material_library", "mtl",
+                          "command_line"})
   {
     fs::create_directories(dir / sub);
   }
@@ -405,6 +406,44 @@ int main(int argc, char** argv)
                       std::ios::binary);
     out.put(static_cast<char>(specs.size()));
     out << brushing;
+  }
+  // Command lines of `aniso render` (arguments separated by NUL bytes): each declared parameter
+  // as an option with its default spelt by formatParameterValue, and the README's examples.
+  const auto writeCommandLine = [&dir](const std::string& name, const std::vector<std::string>& args)
+  {
+    std::ofstream out(dir / "command_line" / (name + ".args"), std::ios::binary);
+    for (std::size_t i = 0; i < args.size(); ++i)
+    {
+      if (i > 0)
+      {
+        out.put('\0');
+      }
+      out << args[i];
+    }
+  };
+  for (const aniso::ParameterSpec& spec : specs)
+  {
+    writeCommandLine("option-" + std::string(spec.name),
+                     {"--builtin", "sphere", "--" + std::string(spec.name),
+                      aniso::formatParameterValue(spec, aniso::defaultParameterValue(spec)), "-o",
+                      "out.png"});
+  }
+  const std::vector<std::vector<std::string>> examples = {
+      {"--builtin", "sphere", "--nu", "20000", "--nv", "70", "-o", "sphere.png"},
+      {"--builtin", "torus", "--model", "ward", "--light", "dir:0,-1,1:3", "-o", "ward.png"},
+      {"--builtin", "plate", "--tpr", "circular", "--view", "+z", "--time", "-o", "disc.png"},
+      {"--builtin", "sphere", "--part", "*=spun aluminium", "--exposure", "-1", "-o", "a.png"},
+      {"--builtin", "disk", "--model", "microstructure", "--structure", "grooves", "--grid", "4",
+       "--f0", "0.95,0.93,0.88", "--light", "point:0,0.6,1.5:3", "--size", "384", "-o", "m.png"},
+      {"--builtin", "sphere", "--env", "builtin:sunsky", "--env-sampling", "mis", "--azimuth",
+       "20", "--elevation", "55", "--ortho", "-o", "s.exr"},
+      {"blade.vtp", "--field", "T:magnitude", "--field-target", "roughness", "--field-range",
+       "0,1", "--legend", "off", "-o", "f.png"},
+      {"--builtin", "sphere", "--reference", "--reference-step", "4", "--size", "64x64", "-o",
+       "r.png"}};
+  for (std::size_t i = 0; i < examples.size(); ++i)
+  {
+    writeCommandLine("example-" + std::to_string(i), examples[i]);
   }
   // Images through OpenImageIO's writers (writeImage), the first byte naming the extension as
   // fuzz_image reads it; small, with a gradient so that compressed formats have content.

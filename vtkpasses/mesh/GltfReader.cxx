@@ -43,10 +43,33 @@ namespace fs = std::filesystem;
 const glm::dmat4 kYUpToZUp(1, 0, 0, 0, 0, 0, 1, 0, 0, -1, 0, 0, 0, 0, 0, 1); // columns
 
 // Images: tinygltf hands over the bytes as they are (no decoding in tinygltf; OpenImageIO decodes
-// them later, from the cache file).
-bool keepImageBytes(tinygltf::Image* image, const int, std::string*, std::string*, int, int,
-                    const unsigned char* bytes, int size, void*)
+// them later, from the cache file). MODEL is the model being read: tinygltf 2.5 hands over an
+// image's buffer view without checking that it lies within its buffer (fuzz_glb read past a
+// GLB's buffer that way), so the view is checked here first.
+bool keepImageBytes(tinygltf::Image* image, const int index, std::string* error, std::string*,
+                    int, int, const unsigned char* bytes, int size, void* model)
 {
+  if (image->bufferView >= 0 && model)
+  {
+    const tinygltf::Model& m = *static_cast<const tinygltf::Model*>(model);
+    const auto view = static_cast<std::size_t>(image->bufferView);
+    const bool inside =
+        view < m.bufferViews.size() && m.bufferViews[view].buffer >= 0 &&
+        static_cast<std::size_t>(m.bufferViews[view].buffer) < m.buffers.size() &&
+        m.bufferViews[view].byteOffset <= m.buffers[std::size_t(m.bufferViews[view].buffer)].data.size() &&
+        m.bufferViews[view].byteLength <=
+            m.buffers[std::size_t(m.bufferViews[view].buffer)].data.size() -
+                m.bufferViews[view].byteOffset;
+    if (!inside)
+    {
+      if (error)
+      {
+        *error += "image " + std::to_string(index) + ": its buffer view " +
+                  std::to_string(image->bufferView) + " runs past its buffer";
+      }
+      return false;
+    }
+  }
   image->image.assign(bytes, bytes + std::max(size, 0));
   image->as_is = true;
   return true;
@@ -1149,7 +1172,7 @@ void Reader::addNode(int node, const glm::dmat4& parent, int depth, bool placeIn
 std::vector<ReaderBlock> Reader::read(bool placeInGeometry)
 {
   tinygltf::TinyGLTF loader;
-  loader.SetImageLoader(keepImageBytes, nullptr);
+  loader.SetImageLoader(keepImageBytes, &model_);
   std::string error;
   std::string warning;
   const std::string ext = fs::path(path_).extension().string();
