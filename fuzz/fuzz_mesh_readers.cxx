@@ -5,6 +5,7 @@
 // hang, another exception) is a finding.
 #include "core/error.h"
 #include "fuzz/fuzz_input.h"
+#include "fuzz/fuzz_surface.h"
 #include "vtkpasses/mesh/BrushingModel.h"
 #include "vtkpasses/mesh/MeshValidation.h"
 #include "vtkpasses/mesh/OffReader.h"
@@ -41,24 +42,6 @@ vtkSmartPointer<vtkPolyData> readFormat(const std::string& path)
   }
   return aniso::readOff(path);
 }
-
-void checkFinite(vtkPolyData* surface)
-{
-  vtkPoints* points = surface ? surface->GetPoints() : nullptr;
-  if (!points)
-  {
-    return;
-  }
-  for (vtkIdType i = 0; i < points->GetNumberOfPoints(); ++i)
-  {
-    double p[3];
-    points->GetPoint(i, p);
-    if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2]))
-    {
-      std::abort(); // sanitizeSurface promises finite points
-    }
-  }
-}
 } // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
@@ -70,12 +53,12 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
     vtkSmartPointer<vtkPolyData> read = readFormat(path);
     aniso::MeshReport report;
     vtkSmartPointer<vtkPolyData> clean = aniso::sanitizeSurface(read, path, report);
-    checkFinite(clean);
+    aniso::fuzz::checkFinite(clean);
     aniso::SurfaceOptions options;
     options.recomputeNormals = size % 2 == 0;
     options.brushing = aniso::parseBrushingModel("around:0,0,1");
     aniso::PreparedSurface prepared = aniso::prepareSurface(clean, options, path);
-    checkFinite(prepared.polyData);
+    aniso::fuzz::checkFinite(prepared.polyData);
   }
   catch (const aniso::Error&)
   {

@@ -33,6 +33,7 @@
 // inputs stay below the largest seed anyway (scripts/fuzz.sh sets no -max_len).
 #include "core/error.h"
 #include "fuzz/fuzz_input.h"
+#include "fuzz/fuzz_surface.h"
 #include "fuzz/vtm_fixture.h"
 #include "vtkpasses/mesh/CadReader.h"
 #include "vtkpasses/mesh/MeshValidation.h"
@@ -69,24 +70,6 @@ constexpr size_t kCadMaxBytes = 32 * 1024;
 
 std::string gltfCache;
 
-void checkFinite(vtkPolyData* surface)
-{
-  vtkPoints* points = surface ? surface->GetPoints() : nullptr;
-  if (!points)
-  {
-    return;
-  }
-  for (vtkIdType i = 0; i < points->GetNumberOfPoints(); ++i)
-  {
-    double p[3];
-    points->GetPoint(i, p);
-    if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2]))
-    {
-      std::abort(); // sanitizeSurface promises finite points
-    }
-  }
-}
-
 // What the application does with each surface the program sends: an empty part is the
 // loader's to report (sanitizeSurface's aniso::Error), not the reader's.
 void sanitize(vtkPolyData* surface, const std::string& path)
@@ -94,7 +77,7 @@ void sanitize(vtkPolyData* surface, const std::string& path)
   try
   {
     aniso::MeshReport report;
-    checkFinite(aniso::sanitizeSurface(surface, path, report));
+    aniso::fuzz::checkFinite(aniso::sanitizeSurface(surface, path, report));
   }
   catch (const aniso::Error&)
   {
