@@ -57,27 +57,30 @@ export LSAN_OPTIONS="suppressions=$root/fuzz/lsan.supp"
 export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
 # The harnesses of what the reader program runs (fuzz/fuzz_reader_program.cxx).
 reader_harnesses="fuzz_obj fuzz_vtk fuzz_vtp fuzz_vtm fuzz_gltf fuzz_glb fuzz_step fuzz_iges"
-passed=0
-failed=0
-for h in "${harnesses[@]}"; do
-  corpus="$out/corpus/$h"
-  limit=()
+# One harness: its run, then one line of outcome in $out/$h.result (and the finding's report
+# after it); fails on a finding.
+fuzz_one() {
+  local h="$1"
+  local corpus="$out/corpus/$h"
+  local result="$out/$h.result"
+  local limit=()
   if [ "$smoke" -eq 1 ]; then
+    local runs
     runs=$(awk -v h="$h" '$1 == h { print $2 }' "$root/scripts/fuzz_smoke_runs")
     if [ -z "$runs" ]; then
-      echo "fuzz: $h has no line in scripts/fuzz_smoke_runs" >&2
-      exit 1
+      echo "fuzz: $h has no line in scripts/fuzz_smoke_runs" >"$result"
+      return 1
     fi
     limit=(-runs="$runs")
     rm -rf "$corpus"
   fi
   mkdir -p "$corpus" "$out/findings/$h"
-  seed_dir="$seeds/${h#fuzz_}"
-  regressions="$root/tests/data/fuzz/${h#fuzz_}"
-  extra=()
+  local seed_dir="$seeds/${h#fuzz_}"
+  local regressions="$root/tests/data/fuzz/${h#fuzz_}"
+  local extra=()
   [ -d "$regressions" ] && extra+=("$regressions")
-  log="$out/$h.log"
-  memory=(-rss_limit_mb=2048)
+  local log="$out/$h.log"
+  local memory=(-rss_limit_mb=2048)
   if [[ " $reader_harnesses " == *" $h "* ]]; then
     # The reader program gives its reader max(512 MiB, 64 x the file's size) of address space
     # (limitChildMemory, vtkpasses/mesh/MeshReaderProcess.cxx); the inputs here are small, so
@@ -91,24 +94,50 @@ for h in "${harnesses[@]}"; do
   if "$build/fuzz/$h" -seed=1 -max_total_time="$seconds" "${limit[@]}" -timeout=30 "${memory[@]}" \
       -artifact_prefix="$out/findings/$h/" -print_final_stats=1 \
       "$corpus" "$seed_dir" "${extra[@]}" >"$log" 2>&1; then
-    runs=$(grep -o 'stat::number_of_executed_units: *[0-9]*' "$log" | grep -o '[0-9]*$' || echo "?")
+    local executed cov time
+    executed=$(grep -o 'stat::number_of_executed_units: *[0-9]*' "$log" | grep -o '[0-9]*$' || echo "?")
     cov=$(grep -o 'cov: [0-9]*' "$log" | tail -1 | grep -o '[0-9]*' || echo "?")
     time=$(grep -o 'Done [0-9]* runs in [0-9]* second' "$log" | grep -o 'in [0-9]*' | grep -o '[0-9]*' || echo "$seconds")
-    echo "fuzz: $h: ${runs} inputs in ${time} s, coverage ${cov} edges, no finding"
-    passed=$((passed + 1))
+    echo "fuzz: $h: ${executed} inputs in ${time} s, coverage ${cov} edges, no finding" >"$result"
   elif [[ " $reader_harnesses " == *" $h "* ]] &&
        grep -q 'ERROR: libFuzzer: out-of-memory' "$log" &&
        ! grep -q 'ERROR: AddressSanitizer\|runtime error' "$log"; then
     # VTK's, tinygltf's and OpenCASCADE's readers allocate what a file claims; in the
     # application they run in the reader program under its memory limit, which refuses such a
-    # file ("PATH: the reader ran out of memory"), so this is no finding of the harness's own.
-    # The run stops there; the input is kept for tests/data/fuzz/open/ (test_fuzz_findings).
+    # file ("PATH: the reader ran out of memory", or the reader's own allocation error), so this
+    # is no finding of the harness's own. The run stops there; the input is kept for
+    # tests/data/fuzz/open/ or past-memory/ (test_fuzz_findings).
     echo "fuzz: $h: an input past the memory limit, which the reader program's limit refuses" \
-      "(input in $out/findings/$h/), no other finding"
+      "(input in $out/findings/$h/), no other finding" >"$result"
+  else
+    {
+      echo "fuzz: $h: FINDING (log $log, input in $out/findings/$h/)"
+      # The report from its first line (the top of the stack), then the summary.
+      sed -n '/ERROR: \|ALARM: \|==WARNING: \|runtime error/,$p' "$log" | head -60
+      tail -8 "$log"
+    } >"$result"
+    return 1
+  fi
+}
+
+# The harnesses run side by side, one a core (each is one process of one thread); their
+# outcomes are printed in the list's order.
+for h in "${harnesses[@]}"; do
+  while [ "$(jobs -rp | wc -l)" -ge "$jobs" ]; do
+    wait -n || true
+  done
+  rm -f "$out/$h.result" "$out/$h.passed"
+  { fuzz_one "$h" && touch "$out/$h.passed"; } &
+done
+wait || true
+passed=0
+failed=0
+for h in "${harnesses[@]}"; do
+  if [ -f "$out/$h.passed" ]; then
+    cat "$out/$h.result"
     passed=$((passed + 1))
   else
-    echo "fuzz: $h: FINDING (log $log, input in $out/findings/$h/)" >&2
-    tail -40 "$log" >&2
+    cat "$out/$h.result" >&2 2>/dev/null || echo "fuzz: $h: ended without an outcome" >&2
     failed=$((failed + 1))
   fi
 done
