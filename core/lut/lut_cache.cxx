@@ -391,22 +391,6 @@ enum class Source
 };
 } // namespace
 
-std::string defaultCacheDirectory()
-{
-  // XDG: a relative XDG_CACHE_HOME is invalid and must be ignored.
-  const char* xdg = std::getenv("XDG_CACHE_HOME");
-  if (xdg && xdg[0] == '/')
-  {
-    return (fs::path(xdg) / "aniso").string();
-  }
-  const char* home = std::getenv("HOME");
-  if (home && home[0] == '/')
-  {
-    return (fs::path(home) / ".cache" / "aniso").string();
-  }
-  return {};
-}
-
 struct LutCache::Impl
 {
   std::string directory;

@@ -2,6 +2,7 @@
 // Memory + disk cache of baked LUTs keyed by their inputs. Disk: $XDG_CACHE_HOME/aniso
 // (or ~/.cache/aniso), EXR files written atomically; a corrupt or foreign file is ignored and
 // re-baked. Thread-safe. Asking twice for the same inputs costs a map lookup.
+#include "core/cache_directory.h"
 #include "core/lut/lut.h"
 
 #include <cstddef>
@@ -14,11 +15,6 @@ namespace aniso
 // Part of every cache key and file: a change of what a LUT holds (encoding, definition,
 // layout) bumps it, so files written by older builds are never mistaken for current ones.
 constexpr int kLutFormatVersion = 1;
-
-// The project's cache directory: $XDG_CACHE_HOME/aniso if XDG_CACHE_HOME is an absolute path,
-// else $HOME/.cache/aniso, else empty (no cache on disk). The LUT cache keeps its files there;
-// so do the glTF reader's images (under "gltf/"). Not created here.
-std::string defaultCacheDirectory();
 
 struct LutCacheStats
 {

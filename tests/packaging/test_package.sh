@@ -30,6 +30,7 @@ dpkg-deb -c "$deb" | awk '{print $NF}' | sed 's|^\./|/|' >"$tmp/contents"
 expected=(
   /usr/bin/aniso
   /usr/libexec/aniso/aniso-mesh-reader
+  /usr/libexec/aniso/aniso-image-io.so
   /usr/share/applications/org.aniso.Aniso.desktop
   /usr/share/metainfo/org.aniso.Aniso.metainfo.xml
   /usr/share/mime/packages/org.aniso.Aniso.xml
@@ -143,6 +144,23 @@ else
   [ "${header:0:16}" == "89504e470d0a1a0a" ] || fail "the thumbnail is not a PNG ($header)"
   [ "$((16#${header:32:8}))x$((16#${header:40:8}))" == "48x48" ] \
     || fail "the thumbnail is $((16#${header:32:8}))x$((16#${header:40:8})), not 48x48"
+  # A textured glTF: the installed reader program loads its image module (aniso-image-io.so,
+  # beside it in libexec/aniso) for the texture, which is then no warning of a left-out texture.
+  # The buffer: a triangle's positions and texture coordinates as little-endian floats.
+  printf '\0\0\0\0\0\0\0\0\0\0\0\0\0\0\200\77\0\0\0\0\0\0\0\0\0\0\0\0\0\0\200\77\0\0\0\0\0\0\0\0\0\0\0\0\0\0\200\77\0\0\0\0\0\0\0\0\0\0\200\77' >"$tmp/t.bin"
+  cp "$root/usr/share/icons/hicolor/16x16/apps/aniso.png" "$tmp/t.png"
+  printf '{"asset":{"version":"2.0"},"scene":0,"scenes":[{"nodes":[0]}],"nodes":[{"mesh":0}],%s%s%s%s\n' \
+    '"meshes":[{"primitives":[{"attributes":{"POSITION":0,"TEXCOORD_0":1},"material":0}]}],' \
+    '"materials":[{"pbrMetallicRoughness":{"baseColorTexture":{"index":0}}}],"textures":[{"source":0}],' \
+    '"images":[{"uri":"t.png"}],"buffers":[{"byteLength":60,"uri":"t.bin"}],"bufferViews":[{"buffer":0,"byteLength":36},{"buffer":0,"byteOffset":36,"byteLength":24}],' \
+    '"accessors":[{"bufferView":0,"componentType":5126,"count":3,"type":"VEC3","min":[0,0,0],"max":[1,1,0]},{"bufferView":1,"componentType":5126,"count":3,"type":"VEC2"}]}' \
+    >"$tmp/t.gltf"
+  "$root/usr/bin/aniso" render "$tmp/t.gltf" --size 32x32 --frames 1 --samples 1 \
+    -o "$tmp/gltf.png" >"$tmp/gltf.log" 2>&1 || { cat "$tmp/gltf.log"; fail "the installed aniso does not render a glTF"; }
+  grep -q "baseColorTexture tints" "$tmp/gltf.log" || { cat "$tmp/gltf.log"; fail "the glTF's texture was not read"; }
+  if grep -q "does not decode" "$tmp/gltf.log"; then
+    cat "$tmp/gltf.log"; fail "the installed reader program could not decode the glTF's texture"
+  fi
   # The window of the installed tree opens a session file given as its argument (the desktop
   # entry's `aniso %F`): a session naming a missing mesh fails naming that mesh, where a mesh
   # argument would have failed on the .json file itself.

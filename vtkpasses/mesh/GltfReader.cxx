@@ -1,8 +1,8 @@
 #include "vtkpasses/mesh/GltfReader.h"
 
+#include "core/cache_directory.h"
 #include "core/error.h"
 #include "core/image/image.h"
-#include "core/lut/lut_cache.h"
 #include "core/models/gltf_material.h"
 #include "core/parameters/material_library.h"
 

@@ -10,10 +10,12 @@
 #include "tests/vtkpasses/mesh/mesh_test_helpers.h"
 #include "vtkpasses/mesh/GltfWriter.h"
 #include "vtkpasses/mesh/MeshLoader.h"
+#include "vtkpasses/mesh/MeshReaderProcess.h"
 #include "vtkpasses/mesh/PartPlacement.h"
 
 #include <array>
 #include <cmath>
+#include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -349,6 +351,51 @@ TEST_F(GltfReaderTest, TexturesBecomeMapsAndAMissingOneIsAWarningNamingIt)
   EXPECT_NEAR(albedo.data[0], 0.21404, 2e-3);
   ASSERT_FALSE(m.value("ao-map").text.empty());
   EXPECT_NEAR(readImage(m.value("ao-map").text).data[0], 0.5, 3e-3);
+}
+
+TEST_F(GltfReaderTest, WithoutTheImageModuleTexturesAreLeftOutNamingWhy)
+{
+  // Checks: the reader program loads the image module (core/image/image_module.h) only for an
+  // image; a copy of the program without the module beside it still reads the mesh and its
+  // factors, and each texture is a warning naming it and the module, not a crash or a refusal.
+  // Reference: the same file read by the program in the build tree has the albedo map.
+  this->write("triangle.bin", triangleBuffer());
+  this->writeTexture("grey.png", 1, 1, 3, {0.5f, 0.5f, 0.5f});
+  const std::string file = this->write(
+      "albedo.gltf",
+      triangleJson(R"("materials":[{"name":"painted","pbrMetallicRoughness":)"
+                   R"({"metallicFactor":0,"baseColorTexture":{"index":0}}}],)",
+                   R"("textures":[{"source":0}],"images":[{"uri":"grey.png"}],)"));
+  const LoadedBlocks withModule = loadMeshBlocks(file);
+  ASSERT_EQ(withModule.blocks.size(), 1u);
+  ASSERT_TRUE(withModule.blocks[0].material);
+  EXPECT_FALSE(withModule.blocks[0].material->value("albedo-map").text.empty());
+
+  const std::filesystem::path alone = this->Dir / "alone";
+  std::filesystem::create_directories(alone);
+  const std::filesystem::path program = alone / "aniso-mesh-reader";
+  std::filesystem::copy_file(meshReaderProgram(), program);
+  ASSERT_EQ(::setenv("ANISO_MESH_READER", program.c_str(), 1), 0);
+  std::string refused;
+  LoadedBlocks withoutModule;
+  try
+  {
+    withoutModule = loadMeshBlocks(file);
+  }
+  catch (const Error& e)
+  {
+    refused = e.what();
+  }
+  ::unsetenv("ANISO_MESH_READER");
+  ASSERT_EQ(refused, "");
+  ASSERT_EQ(withoutModule.blocks.size(), 1u);
+  ASSERT_TRUE(withoutModule.blocks[0].material);
+  EXPECT_EQ(withoutModule.blocks[0].material->value("albedo-map").text, "");
+  EXPECT_EQ(withoutModule.blocks[0].mesh.polyData->GetNumberOfCells(),
+            withModule.blocks[0].mesh.polyData->GetNumberOfCells());
+  const std::vector<std::string>& warnings = withoutModule.blocks[0].mesh.report.readerWarnings;
+  EXPECT_TRUE(mentions(warnings, "grey.png", "the image module does not load"))
+      << ::testing::PrintToString(warnings);
 }
 
 // A square of the part's frame (z = 0, [0, 1]^2) with normals, tangents along +X, UVs.
