@@ -23,4 +23,10 @@ struct ImageModule
 constexpr int kImageModuleVersion = 1;
 constexpr const char* kImageModuleFile = "aniso-image-io.so";
 constexpr const char* kImageModuleEntry = "aniso_image_module";
+
+// Loads the module now, for a program that bounds its address space afterwards (the mesh reader
+// program, for glTF files): the module's libraries then count as what the program had at its
+// start, not against the file's budget. A failure is kept and reported by the first readImage or
+// writeImage, as without this call. Only in the programs that compile image_on_demand.cxx.
+void loadImageModule();
 } // namespace aniso

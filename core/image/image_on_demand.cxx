@@ -43,12 +43,15 @@ const ImageModule* loadModule(std::string& failure)
   return module;
 }
 
+std::once_flag loadOnce;
+const ImageModule* loadedModule = nullptr;
+std::string loadFailure;
+
 const ImageModule& imageModule(const std::string& path)
 {
-  static std::once_flag once;
-  static const ImageModule* module = nullptr;
-  static std::string failure;
-  std::call_once(once, [] { module = loadModule(failure); });
+  loadImageModule();
+  const ImageModule* module = loadedModule;
+  const std::string& failure = loadFailure;
   if (!module)
   {
     throw errorAbout(path, failure);
@@ -56,6 +59,11 @@ const ImageModule& imageModule(const std::string& path)
   return *module;
 }
 } // namespace
+
+void loadImageModule()
+{
+  std::call_once(loadOnce, [] { loadedModule = loadModule(loadFailure); });
+}
 
 Image readImage(const std::string& path, ImageInfo* info)
 {

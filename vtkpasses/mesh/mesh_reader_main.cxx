@@ -3,6 +3,7 @@
 // the KEY=VALUE arguments), for the application (MeshReaderProcess.h), the result on standard
 // output in the records it expects.
 #include "core/error.h"
+#include "core/image/image_module.h"
 #include "vtkpasses/mesh/CadReader.h"
 #include "vtkpasses/mesh/MeshReaderProcess.h"
 #include "vtkpasses/mesh/VtkReaders.h"
@@ -34,6 +35,12 @@ int main(int argc, char** argv)
   const uintmax_t fileSize = std::strtoull(argv[3], nullptr, 10);
   const std::string path = argv[1];
   const std::string ext = argv[2];
+  if (ext == ".gltf" || ext == ".glb")
+  {
+    // glTF textures are decoded through the image module: loaded before runMeshReader bounds
+    // the address space, as its libraries were when the program linked them.
+    aniso::loadImageModule();
+  }
   if (aniso::isCadExtension(ext))
   {
     auto options = [&readArguments] { return aniso::parseCadArguments(readArguments); };
