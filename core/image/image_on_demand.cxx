@@ -50,13 +50,11 @@ std::string loadFailure;
 const ImageModule& imageModule(const std::string& path)
 {
   loadImageModule();
-  const ImageModule* module = loadedModule;
-  const std::string& failure = loadFailure;
-  if (!module)
+  if (!loadedModule)
   {
-    throw errorAbout(path, failure);
+    throw errorAbout(path, loadFailure);
   }
-  return *module;
+  return *loadedModule;
 }
 } // namespace
 
