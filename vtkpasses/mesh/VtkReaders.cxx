@@ -20,6 +20,7 @@
 #include <fstream>
 #include <limits>
 #include <list>
+#include <locale>
 #include <map>
 #include <memory>
 #include <optional>
@@ -38,6 +39,15 @@
 #include <vtkDataSetReader.h>
 #include <vtkDataSetSurfaceFilter.h>
 #include <vtkInformation.h>
+#include <vtkInformationDoubleKey.h>
+#include <vtkInformationDoubleVectorKey.h>
+#include <vtkInformationIdTypeKey.h>
+#include <vtkInformationIntegerKey.h>
+#include <vtkInformationIntegerVectorKey.h>
+#include <vtkInformationKeyLookup.h>
+#include <vtkInformationStringKey.h>
+#include <vtkInformationStringVectorKey.h>
+#include <vtkInformationUnsignedLongKey.h>
 #include <vtkMultiBlockDataSet.h>
 #include <vtkNew.h>
 #include <vtkOBJReader.h>
@@ -81,8 +91,195 @@ vtkSmartPointer<vtkPolyData> surfaceOf(vtkDataSet* data, const std::string& path
   return output;
 }
 
+// vtkDataReader::ReadInformation (VTK 9.1) reads an array's INFORMATION block of N keys with
+// stream extractions and never clears the stream's failure: a key whose DATA does not read (a
+// value that is no number, fewer values than its count says) leaves the stream failed but not
+// at its end, and the next key's search for a non-empty line then never ends (found by fuzz_vtk:
+// the reader program spun until its 120 s limit). So before VTK reads a legacy file, each
+// "INFORMATION N" line is followed here as VTK follows it, for the keys VTK knows
+// (vtkInformationKeyLookup, as it looks them up): a numeric key's DATA line must hold its values
+// (a vector key: its count, then that many), each a whole number as the stream reads it; a
+// string vector key's count must be a count. Blocks of other shapes that VTK reads without an
+// extraction (unknown keys, string keys, lines that are no NAME) pass.
+void checkLegacyInformation(const std::string& path)
+{
+  std::ifstream in(path, std::ios::binary);
+  std::string line;
+  int number = 0;
+  auto nextLine = [&]() -> bool
+  {
+    if (!std::getline(in, line))
+    {
+      return false;
+    }
+    ++number;
+    line = line.c_str(); // VTK's line is a C string
+    if (!line.empty() && line.back() == '\r')
+    {
+      line.pop_back();
+    }
+    return true;
+  };
+  auto refuse = [&](const std::string& why)
+  {
+    throw errorAbout(path, "line " + std::to_string(number) + ": " + why +
+                               " (VTK's legacy reader does not recover from it)");
+  };
+  // The tokens of a text, split at white space.
+  auto tokensOf = [](const std::string& text)
+  {
+    std::istringstream words(text);
+    std::vector<std::string> tokens;
+    for (std::string word; words >> word;)
+    {
+      tokens.push_back(word);
+    }
+    return tokens;
+  };
+  // Whether a token reads whole as a T through a stream (as VTK's Read(T*) reads it).
+  auto readsAs = [](const std::string& token, auto value)
+  {
+    std::istringstream stream(token);
+    stream.imbue(std::locale::classic());
+    stream >> value;
+    return !stream.fail() && stream.eof();
+  };
+  while (nextLine())
+  {
+    if (line.rfind("INFORMATION ", 0) != 0)
+    {
+      continue;
+    }
+    long long keys = 0;
+    if (std::sscanf(line.c_str(), "INFORMATION %lld", &keys) != 1 || keys <= 0)
+    {
+      continue; // VTK does not read a block here
+    }
+    for (long long k = 0; k < keys; ++k)
+    {
+      bool more = nextLine();
+      while (more && line.empty())
+      {
+        more = nextLine();
+      }
+      if (!more)
+      {
+        break; // VTK stops at the end of the file with an error
+      }
+      char name[256];
+      char location[256];
+      if (line.rfind("NAME ", 0) != 0 ||
+          std::sscanf(line.c_str(), "NAME %255s LOCATION %255s", name, location) != 2)
+      {
+        continue; // a line VTK skips
+      }
+      vtkInformationKey* key = vtkInformationKeyLookup::Find(name, location);
+      // The kinds VTK reads with extractions: a value (double, id, integer, unsigned long), a
+      // count and that many values (double and integer vectors), a count of lines (strings).
+      enum class Kind
+      {
+        Double,
+        Integer,
+        Unsigned,
+        DoubleVector,
+        IntegerVector,
+        StringVector,
+        Unread
+      };
+      Kind kind = Kind::Unread;
+      if (vtkInformationDoubleKey::SafeDownCast(key))
+      {
+        kind = Kind::Double;
+      }
+      else if (vtkInformationIdTypeKey::SafeDownCast(key) ||
+               vtkInformationIntegerKey::SafeDownCast(key))
+      {
+        kind = Kind::Integer;
+      }
+      else if (vtkInformationUnsignedLongKey::SafeDownCast(key))
+      {
+        kind = Kind::Unsigned;
+      }
+      else if (vtkInformationDoubleVectorKey::SafeDownCast(key))
+      {
+        kind = Kind::DoubleVector;
+      }
+      else if (vtkInformationIntegerVectorKey::SafeDownCast(key))
+      {
+        kind = Kind::IntegerVector;
+      }
+      else if (vtkInformationStringVectorKey::SafeDownCast(key))
+      {
+        kind = Kind::StringVector;
+      }
+      if (kind == Kind::Unread)
+      {
+        continue; // unknown keys, string keys (read as a line) and kinds VTK does not read
+      }
+      const std::string what = std::string("key ") + location + "::" + name;
+      if (!nextLine())
+      {
+        break; // VTK stops at the end of the file with an error
+      }
+      const std::vector<std::string> tokens = tokensOf(line);
+      if (tokens.size() < 2 || tokens[0].compare(0, 4, "DATA") != 0)
+      {
+        refuse(what + ": its DATA line is not \"DATA VALUES\"");
+      }
+      auto isValue = [&](const std::string& token, Kind of)
+      {
+        switch (of)
+        {
+        case Kind::Double:
+        case Kind::DoubleVector:
+          return readsAs(token, 0.0);
+        case Kind::Unsigned:
+          return readsAs(token, 0UL);
+        case Kind::IntegerVector:
+          return readsAs(token, 0);
+        default:
+          return readsAs(token, 0LL);
+        }
+      };
+      if (kind == Kind::Double || kind == Kind::Integer || kind == Kind::Unsigned)
+      {
+        if (tokens.size() != 2 || !isValue(tokens[1], kind))
+        {
+          refuse(what + ": its value is not one number");
+        }
+        continue;
+      }
+      int count = 0;
+      if (!readsAs(tokens[1], 0) || std::sscanf(tokens[1].c_str(), "%d", &count) != 1 || count < 0)
+      {
+        refuse(what + ": its count \"" + tokens[1] + "\" is not a count");
+      }
+      if (kind == Kind::StringVector)
+      {
+        for (int i = 0; i < count && nextLine(); ++i)
+        {
+        }
+        continue;
+      }
+      if (tokens.size() != 2 + static_cast<size_t>(count))
+      {
+        refuse(what + ": " + std::to_string(count) + " values declared, " +
+               std::to_string(tokens.size() - 2) + " on its DATA line");
+      }
+      for (size_t i = 2; i < tokens.size(); ++i)
+      {
+        if (!isValue(tokens[i], kind))
+        {
+          refuse(what + ": \"" + tokens[i] + "\" is not a number");
+        }
+      }
+    }
+  }
+}
+
 vtkSmartPointer<vtkPolyData> readLegacy(const std::string& path, const VtkMessageCapture& capture)
 {
+  checkLegacyInformation(path);
   vtkNew<vtkDataSetReader> reader;
   reader->SetFileName(path.c_str());
   reader->Update();

@@ -16,15 +16,20 @@
 
 #include <algorithm>
 #include <cmath>
+#include <fstream>
 #include <gtest/gtest.h>
+#include <iterator>
 #include <limits>
 #include <string>
+#include <utility>
 #include <vtkCellArray.h>
 #include <vtkCellData.h>
 #include <vtkDoubleArray.h>
 #include <vtkFloatArray.h>
 #include <vtkHexahedron.h>
 #include <vtkInformation.h>
+#include <vtkInformationDoubleVectorKey.h>
+#include <vtkInformationStringKey.h>
 #include <vtkMultiBlockDataSet.h>
 #include <vtkNew.h>
 #include <vtkPointData.h>
@@ -207,6 +212,70 @@ void expectHexahedraSurface(vtkPolyData* mesh)
     const double expected = highest <= 1.0 ? 0.0 : 1.0;
     EXPECT_TRUE(highest <= 1.0 || lowest >= 1.0) << "cell " << c;
     EXPECT_EQ(pressure->GetComponent(c, 0), expected) << "cell " << c;
+  }
+}
+
+// VTK's legacy writer stores an array's information keys in INFORMATION blocks (here the L2
+// norm range the array caches once asked, a component range key of VTK's and a units label):
+// such files read, ASCII and binary, with their arrays. The same file with a key's value turned
+// into no number, or one value short, is refused naming the line and the key, before VTK's
+// reader, which never ends on it (tests/data/fuzz/vtk/information-value-not-a-number.vtk).
+TEST_F(MeshFieldsTest, LegacyInformationBlocksReadAndMalformedOnesAreRefused)
+{
+  vtkSmartPointer<vtkPolyData> plate = plateWithFields();
+  vtkDataArray* flow = plate->GetPointData()->GetArray("flow");
+  double range[2];
+  flow->GetRange(range, -1); // caches vtkDataArray::L2_NORM_RANGE in the array's information
+  flow->GetInformation()->Set(vtkDataArray::UNITS_LABEL(), "m/s");
+  const double componentRange[2] = {-1.0, 2.5};
+  flow->GetInformation()->Set(vtkDataArray::COMPONENT_RANGE(), componentRange, 2);
+  for (const int type : {VTK_ASCII, VTK_BINARY})
+  {
+    const std::string name = type == VTK_ASCII ? "ascii.vtk" : "binary.vtk";
+    SCOPED_TRACE(name);
+    vtkNew<vtkPolyDataWriter> writer;
+    writer->SetInputData(plate);
+    writer->SetFileType(type);
+    writer->SetFileName(this->path(name).c_str());
+    ASSERT_EQ(writer->Write(), 1);
+    std::ifstream in(this->path(name), std::ios::binary);
+    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const size_t rangeKey = text.find("NAME L2_NORM_RANGE LOCATION vtkDataArray");
+    ASSERT_NE(rangeKey, std::string::npos) << "VTK's writer wrote no INFORMATION block";
+    ASSERT_NE(text.find("NAME UNITS_LABEL LOCATION vtkDataArray"), std::string::npos);
+    const LoadedMesh mesh = loadMesh(this->path(name));
+    expectFlow(mesh.polyData);
+    expectPressure(mesh.polyData);
+
+    // The L2 norm range's DATA line ("DATA 2 LOW HIGH"): its first value made no number, then
+    // its second value left out.
+    const size_t data = text.find("DATA 2 ", rangeKey);
+    ASSERT_NE(data, std::string::npos);
+    const size_t end = text.find('\n', data);
+    const size_t firstValue = data + 7;
+    const size_t secondValue = text.find(' ', firstValue) + 1;
+    const std::string notANumber =
+        text.substr(0, firstValue) + "1ETA" + text.substr(text.find(' ', firstValue));
+    const std::string oneShort = text.substr(0, secondValue - 1) + text.substr(end);
+    for (const auto& [bad, why] : {std::pair{notANumber, std::string("is not a number")},
+                                  std::pair{oneShort, std::string("2 values declared, 1 on its")}})
+    {
+      const std::string badPath = this->path("bad-" + name);
+      std::ofstream(badPath, std::ios::binary | std::ios::trunc) << bad;
+      try
+      {
+        loadMesh(badPath);
+        ADD_FAILURE() << "read: " << why;
+      }
+      catch (const Error& e)
+      {
+        const std::string what = e.what();
+        EXPECT_NE(what.find("bad-" + name), std::string::npos) << what;
+        EXPECT_NE(what.find("vtkDataArray::L2_NORM_RANGE"), std::string::npos) << what;
+        EXPECT_NE(what.find(why), std::string::npos) << what;
+        EXPECT_NE(what.find("line "), std::string::npos) << what;
+      }
+    }
   }
 }
 
