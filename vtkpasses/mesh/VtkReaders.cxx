@@ -56,6 +56,8 @@
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtkUnstructuredGrid.h>
+#include <vtkXMLDataElement.h>
+#include <vtkXMLDataParser.h>
 #include <vtkXMLMultiBlockDataReader.h>
 #include <vtkXMLPolyDataReader.h>
 #include <vtkXMLUnstructuredGridReader.h>
@@ -1080,8 +1082,29 @@ void collectLeaves(vtkDataObject* tree, const std::string& prefix, const std::st
   }
 }
 
+// vtkXMLMultiBlockDataReader (VTK 9.1) goes on to read the tree of a file whose VTKFile element
+// holds no vtkMultiBlockDataSet element, through the null pointer its superclass left for it
+// (RequestInformation, FillMetaData; found by fuzz_vtm). Such a file is refused first. A file
+// that does not parse is left to VTK's reader, which stops on it with its own message.
+void checkVtmPrimaryElement(const std::string& path)
+{
+  vtkNew<vtkXMLDataParser> parser;
+  parser->SetFileName(path.c_str());
+  if (!parser->Parse())
+  {
+    return;
+  }
+  vtkXMLDataElement* root = parser->GetRootElement();
+  if (root && root->GetName() && std::strcmp(root->GetName(), "VTKFile") == 0 &&
+      !root->FindNestedElementWithName("vtkMultiBlockDataSet"))
+  {
+    throw errorAbout(path, "its VTKFile element holds no vtkMultiBlockDataSet element");
+  }
+}
+
 std::vector<ReaderBlock> readVtmBlocks(const std::string& path, const VtkMessageCapture& capture)
 {
+  checkVtmPrimaryElement(path);
   vtkNew<vtkXMLMultiBlockDataReader> reader;
   reader->SetFileName(path.c_str());
   reader->Update();
