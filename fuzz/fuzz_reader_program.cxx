@@ -6,7 +6,8 @@
 // odd-sized one as the merged surface, as the program does with and without "blocks"; each part
 // then goes through sanitizeSurface, as the application does with what the program sends.
 // Accepted outcomes: parts (never a null surface) or a surface, whose sanitised points are all
-// finite, or an aniso::Error naming the file. Anything else (a crash, a sanitizer report, a hang,
+// finite, or an aniso::Error naming the file, or std::bad_alloc (an allocation past the memory
+// limit, which the program reports by the file's name). Anything else (a crash, a sanitizer report, a hang,
 // another exception) is a finding. The program runs these readers in a process of their own
 // because they are not hardened (docs/RELIABILITY.md): a crash found here inside VTK,
 // tinygltf or OpenCASCADE is contained in the application, and is recorded there.
@@ -48,6 +49,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <map>
+#include <new>
 #include <regex>
 #include <string>
 #include <system_error>
@@ -237,6 +239,12 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
   }
   catch (const aniso::Error&)
   {
+  }
+  catch (const std::bad_alloc&)
+  {
+    // An allocation past the memory limit (scripts/fuzz.sh: ASan's max_allocation_size_mb, the
+    // reader program's address-space limit in the application): the program sends "PATH: the
+    // reader ran out of memory" (MeshReaderProcess.cxx), a refusal by name.
   }
   if (!gltfCache.empty())
   {

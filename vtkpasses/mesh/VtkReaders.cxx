@@ -2,6 +2,7 @@
 
 #include "core/error.h"
 #include "core/formats/mtl.h"
+#include "core/formats/vtk_xml_headers.h"
 #include "core/formats/mtl_material.h"
 #include "core/parameters/material_library.h"
 #include "vtkpasses/mesh/GeometryAccess.h"
@@ -1082,6 +1083,35 @@ void collectLeaves(vtkDataObject* tree, const std::string& prefix, const std::st
   }
 }
 
+// The compression headers of the pieces a multiblock file names (file="..." of its DataSet
+// elements, relative to its folder), checked as a .vtp's are (checkVtkXmlHeaders): VTK's
+// multiblock reader reads them with the same XML readers. Pieces that are not there are left to
+// VTK's reader.
+void checkVtmPieceHeaders(const std::string& path, vtkXMLDataElement* element, int depth = 0)
+{
+  if (depth > 64)
+  {
+    return;
+  }
+  const char* file = element->GetAttribute("file");
+  if (file && *file && element->GetName() && std::strcmp(element->GetName(), "DataSet") == 0)
+  {
+    const std::filesystem::path piece = std::filesystem::path(path).parent_path() / file;
+    std::error_code ec;
+    if (std::filesystem::is_regular_file(piece, ec))
+    {
+      if (std::optional<std::string> problem = vtkXmlHeaderProblem(piece.string()))
+      {
+        throw errorAbout(path, "piece " + std::string(file) + ": " + *problem);
+      }
+    }
+  }
+  for (int i = 0; i < element->GetNumberOfNestedElements(); ++i)
+  {
+    checkVtmPieceHeaders(path, element->GetNestedElement(i), depth + 1);
+  }
+}
+
 // vtkXMLMultiBlockDataReader (VTK 9.1) goes on to read the tree of a file whose VTKFile element
 // holds no vtkMultiBlockDataSet element, through the null pointer its superclass left for it
 // (RequestInformation, FillMetaData; found by fuzz_vtm). Such a file is refused first. A file
@@ -1099,6 +1129,10 @@ void checkVtmPrimaryElement(const std::string& path)
       !root->FindNestedElementWithName("vtkMultiBlockDataSet"))
   {
     throw errorAbout(path, "its VTKFile element holds no vtkMultiBlockDataSet element");
+  }
+  if (root)
+  {
+    checkVtmPieceHeaders(path, root);
   }
 }
 
@@ -1158,6 +1192,7 @@ vtkSmartPointer<vtkPolyData> readWithVtk(const std::string& path, const std::str
   }
   if (ext == ".vtp")
   {
+    checkVtkXmlHeaders(path);
     return readPolyData<vtkXMLPolyDataReader>(path, capture);
   }
   if (ext == ".vtk")
@@ -1166,6 +1201,7 @@ vtkSmartPointer<vtkPolyData> readWithVtk(const std::string& path, const std::str
   }
   if (ext == ".vtu")
   {
+    checkVtkXmlHeaders(path);
     vtkNew<vtkXMLUnstructuredGridReader> reader;
     reader->SetFileName(path.c_str());
     reader->Update();

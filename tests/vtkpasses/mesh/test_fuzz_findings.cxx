@@ -117,7 +117,7 @@ void expectSafe(const std::string& path, Outcome outcome)
 TEST(FuzzFindings, FixedInTheProjectAreRefusedOrRead)
 {
   int files = 0;
-  for (const char* folder : {"obj", "vtk", "vtm", "glb", "step"})
+  for (const char* folder : {"obj", "vtk", "vtp", "vtm", "glb", "step"})
   {
     for (const std::string& path : findings(folder))
     {
