@@ -33,12 +33,15 @@
 #include <vtkAppendPolyData.h>
 #include <vtkCellArray.h>
 #include <vtkCellData.h>
+#include <vtkCellType.h>
 #include <vtkCompositeDataSet.h>
 #include <vtkDataArray.h>
 #include <vtkDataObjectTreeIterator.h>
 #include <vtkDataSet.h>
 #include <vtkDataSetReader.h>
 #include <vtkDataSetSurfaceFilter.h>
+#include <vtkIdList.h>
+#include <vtkIdTypeArray.h>
 #include <vtkInformation.h>
 #include <vtkInformationDoubleKey.h>
 #include <vtkInformationDoubleVectorKey.h>
@@ -56,6 +59,7 @@
 #include <vtkPointData.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
+#include <vtkUnsignedCharArray.h>
 #include <vtkUnstructuredGrid.h>
 #include <vtkXMLDataElement.h>
 #include <vtkXMLDataParser.h>
@@ -78,6 +82,155 @@ vtkSmartPointer<vtkPolyData> readPolyData(const std::string& path, const VtkMess
   return output;
 }
 
+// The number of points a cell of a fixed-size type has; for the types whose cells list as many
+// as they have, the least they need, negated; 0 for a type VTK 9.1 does not know.
+int cellTypePoints(int type)
+{
+  switch (type)
+  {
+    case VTK_EMPTY_CELL: return -0x10000; // no points needed; told apart from 0 below
+    case VTK_VERTEX: return 1;
+    case VTK_POLY_VERTEX: return -1;
+    case VTK_LINE: return 2;
+    case VTK_POLY_LINE: return -2;
+    case VTK_TRIANGLE: return 3;
+    case VTK_TRIANGLE_STRIP: return -3;
+    case VTK_POLYGON: return -3;
+    case VTK_PIXEL: return 4;
+    case VTK_QUAD: return 4;
+    case VTK_TETRA: return 4;
+    case VTK_VOXEL: return 8;
+    case VTK_HEXAHEDRON: return 8;
+    case VTK_WEDGE: return 6;
+    case VTK_PYRAMID: return 5;
+    case VTK_PENTAGONAL_PRISM: return 10;
+    case VTK_HEXAGONAL_PRISM: return 12;
+    case VTK_QUADRATIC_EDGE: return 3;
+    case VTK_QUADRATIC_TRIANGLE: return 6;
+    case VTK_QUADRATIC_QUAD: return 8;
+    case VTK_QUADRATIC_POLYGON: return -6;
+    case VTK_QUADRATIC_TETRA: return 10;
+    case VTK_QUADRATIC_HEXAHEDRON: return 20;
+    case VTK_QUADRATIC_WEDGE: return 15;
+    case VTK_QUADRATIC_PYRAMID: return 13;
+    case VTK_BIQUADRATIC_QUAD: return 9;
+    case VTK_TRIQUADRATIC_HEXAHEDRON: return 27;
+    case VTK_TRIQUADRATIC_PYRAMID: return 19;
+    case VTK_QUADRATIC_LINEAR_QUAD: return 6;
+    case VTK_QUADRATIC_LINEAR_WEDGE: return 12;
+    case VTK_BIQUADRATIC_QUADRATIC_WEDGE: return 18;
+    case VTK_BIQUADRATIC_QUADRATIC_HEXAHEDRON: return 24;
+    case VTK_BIQUADRATIC_TRIANGLE: return 7;
+    case VTK_CUBIC_LINE: return 4;
+    case VTK_CONVEX_POINT_SET: return -4;
+    case VTK_POLYHEDRON: return -4;
+    case VTK_LAGRANGE_CURVE: case VTK_BEZIER_CURVE: return -2;
+    case VTK_LAGRANGE_TRIANGLE: case VTK_BEZIER_TRIANGLE: return -3;
+    case VTK_LAGRANGE_QUADRILATERAL: case VTK_BEZIER_QUADRILATERAL: return -4;
+    case VTK_LAGRANGE_TETRAHEDRON: case VTK_BEZIER_TETRAHEDRON: return -4;
+    case VTK_LAGRANGE_HEXAHEDRON: case VTK_BEZIER_HEXAHEDRON: return -8;
+    case VTK_LAGRANGE_WEDGE: case VTK_BEZIER_WEDGE: return -6;
+    case VTK_LAGRANGE_PYRAMID: case VTK_BEZIER_PYRAMID: return -5;
+    default: return 0;
+  }
+}
+
+// VTK 9.1's surface filter takes an unstructured grid's cells as they are: a cell of a type
+// with fewer points than the type has, a point id outside the points, offsets that do not add up
+// or fewer cell types than cells make it read and write past its arrays (found by fuzz_vtk: a
+// legacy grid of "CELLS 23 8" with two offsets, SEGV in
+// vtkUnstructuredGridCellIterator::FetchPointIds). Such a grid is refused before the filter
+// runs, naming the first cell at fault; a polyhedron's face stream is walked the same way.
+void checkGridCells(vtkUnstructuredGrid* grid, const std::string& path)
+{
+  vtkCellArray* cells = grid->GetCells();
+  const vtkIdType count = cells ? cells->GetNumberOfCells() : 0;
+  if (count == 0)
+  {
+    return;
+  }
+  if (!cells->IsValid())
+  {
+    throw errorAbout(path, "its cells' offsets do not add up to their point ids");
+  }
+  vtkUnsignedCharArray* types = grid->GetCellTypesArray();
+  if (!types || types->GetNumberOfValues() != count)
+  {
+    throw errorAbout(path, std::to_string(count) + " cells but " +
+                               std::to_string(types ? types->GetNumberOfValues() : 0) +
+                               " cell types");
+  }
+  const vtkIdType points = grid->GetNumberOfPoints();
+  vtkIdTypeArray* faces = grid->GetFaces();
+  vtkIdTypeArray* faceLocations = grid->GetFaceLocations();
+  auto at = [&](vtkIdType cell, const std::string& reason) {
+    return errorAbout(path, "cell " + std::to_string(cell) + ": " + reason);
+  };
+  vtkNew<vtkIdList> ids;
+  for (vtkIdType c = 0; c < count; ++c)
+  {
+    const int type = types->GetValue(c);
+    const int need = cellTypePoints(type);
+    if (need == 0)
+    {
+      throw at(c, "cell type " + std::to_string(type) + " is not one VTK knows");
+    }
+    cells->GetCellAtId(c, ids);
+    const vtkIdType n = ids->GetNumberOfIds();
+    if ((need > 0 && n != need) || (need < 0 && need != -0x10000 && n < -need))
+    {
+      throw at(c, "cell type " + std::to_string(type) + " with " + std::to_string(n) +
+                      " points");
+    }
+    for (vtkIdType i = 0; i < n; ++i)
+    {
+      const vtkIdType id = ids->GetId(i);
+      if (id < 0 || id >= points)
+      {
+        throw at(c, "point id " + std::to_string(id) + " of " + std::to_string(points) +
+                        " points");
+      }
+    }
+    if (type != VTK_POLYHEDRON)
+    {
+      continue;
+    }
+    // The face stream: at the cell's location, the number of faces, then each face's number of
+    // points and their ids.
+    const vtkIdType location = faceLocations && c < faceLocations->GetNumberOfValues()
+                                   ? faceLocations->GetValue(c)
+                                   : -1;
+    const vtkIdType size = faces ? faces->GetNumberOfValues() : 0;
+    if (location < 0 || location >= size)
+    {
+      throw at(c, "a polyhedron without its faces");
+    }
+    vtkIdType p = location;
+    const vtkIdType faceCount = faces->GetValue(p++);
+    if (faceCount < 1 || faceCount > size)
+    {
+      throw at(c, "a polyhedron of " + std::to_string(faceCount) + " faces");
+    }
+    for (vtkIdType f = 0; f < faceCount; ++f)
+    {
+      const vtkIdType facePoints = p < size ? faces->GetValue(p++) : -1;
+      if (facePoints < 3 || facePoints > size - p)
+      {
+        throw at(c, "a polyhedron face that runs past the face stream");
+      }
+      for (vtkIdType i = 0; i < facePoints; ++i)
+      {
+        const vtkIdType id = faces->GetValue(p++);
+        if (id < 0 || id >= points)
+        {
+          throw at(c, "point id " + std::to_string(id) + " of " + std::to_string(points) +
+                          " points in a polyhedron face");
+        }
+      }
+    }
+  }
+}
+
 // Polydata as it is; volumes and grids are shown by their outer surface.
 vtkSmartPointer<vtkPolyData> surfaceOf(vtkDataSet* data, const std::string& path,
                                        const VtkMessageCapture& capture)
@@ -85,6 +238,10 @@ vtkSmartPointer<vtkPolyData> surfaceOf(vtkDataSet* data, const std::string& path
   if (auto* polyData = vtkPolyData::SafeDownCast(data))
   {
     return polyData;
+  }
+  if (auto* grid = vtkUnstructuredGrid::SafeDownCast(data))
+  {
+    checkGridCells(grid, path);
   }
   vtkNew<vtkDataSetSurfaceFilter> surface;
   surface->SetInputData(data);
