@@ -128,9 +128,9 @@ TEST(FuzzFindings, FixedInTheProjectAreRefusedOrRead)
   EXPECT_GE(files, 10);
 }
 
-// Crashes left inside VTK's legacy reader and OpenCASCADE, and VTPs that make VTK's XML reader
-// allocate 7.8 GB (a compression header) or 1.5e19 bytes (a last cell offset): the reader
-// program dies (or meets its memory limit), the application reports it with the file's name.
+// Crashes left inside VTK's legacy reader and OpenCASCADE, and a VTP that makes VTK's XML
+// reader allocate 1.5e19 bytes (a last cell offset): the reader program dies (or meets its
+// memory limit), the application reports it with the file's name.
 TEST(FuzzFindings, OpenOnesEndTheReaderNotTheApplication)
 {
   int files = 0;
