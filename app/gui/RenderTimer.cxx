@@ -43,6 +43,11 @@ void RenderTimer::setMappers(const std::vector<vtkMapper*>& mappers)
 
 void RenderTimer::event(vtkObject* caller, unsigned long event)
 {
+  if (ignoring_)
+  {
+    startNs_ = -1;
+    return;
+  }
   if (caller == window_ && event == vtkCommand::StartEvent)
   {
     startNs_ = clock_.nsecsElapsed();

@@ -29,6 +29,8 @@ public:
   // the planner learns from.
   void setMappers(const std::vector<vtkMapper*>& mappers);
   ~RenderTimer();
+  // Renders while IGNORING is set are not timed (a part pick's id renders: not frames).
+  void setIgnoring(bool ignoring) { ignoring_ = ignoring; }
   RenderTimer(const RenderTimer&) = delete;
   RenderTimer& operator=(const RenderTimer&) = delete;
 
@@ -45,6 +47,7 @@ private:
   QElapsedTimer clock_;
   qint64 startNs_ = -1;
   bool drewSurface_ = false;
+  bool ignoring_ = false;
   MeasuredRender drawn_; // what the surface's draw of the render in progress draws
 };
 } // namespace aniso

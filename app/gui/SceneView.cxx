@@ -25,7 +25,8 @@
 #include <vtkActor.h>
 #include <vtkAppendPolyData.h>
 #include <vtkCallbackCommand.h>
-#include <vtkCellPicker.h>
+#include <vtkDataObject.h>
+#include <vtkHardwareSelector.h>
 #include <vtkCommand.h>
 #include <vtkInteractorObserver.h>
 #include <vtkOpenGLPolyDataMapper.h>
@@ -761,27 +762,54 @@ ParameterSet SceneView::partParameters(int part) const
 
 int SceneView::partAt(int x, int y)
 {
-  // A ray cast through the parts' triangles (vtkCellPicker): nothing is rendered, so a
-  // converged image stays as it is. (VTK's hardware picker, vtkPropPicker, renders a selection
-  // pass, and under the accumulation pass finds nothing.)
-  vtkNew<vtkCellPicker> picker;
-  picker->SetTolerance(0.0);
-  picker->PickFromListOn();
-  for (const auto& part : parts_)
-  {
-    if (part->inRenderer && part->actor->GetVisibility())
-    {
-      picker->AddPickList(part->actor);
-    }
-  }
-  if (!picker->Pick(x, y, 0.0, renderer_))
+  // VTK's hardware selector: the renderer draws each visible part's id into the window's back
+  // buffer (one render, the props' pass only) and the pixel under (x, y) names the part. The
+  // selector's renders go through the renderer's own drawing, which a render pass replaces, so
+  // the accumulation pass steps aside for them; it keeps its mean, and the window shows that mean
+  // again (nothing added to it: the view did not change). The overlay (the selection's outline)
+  // is not drawn into the ids, and the renders are not timed (the planner learns frames only).
+  if (x < 0 || y < 0 || !renderer_->GetRenderWindow())
   {
     return -1;
   }
-  vtkActor* actor = picker->GetActor();
+  bool anyShown = false;
+  for (const auto& part : parts_)
+  {
+    anyShown = anyShown || (part->inRenderer && part->actor->GetVisibility());
+  }
+  if (!anyShown)
+  {
+    return -1;
+  }
+  vtkNew<vtkHardwareSelector> selector;
+  selector->SetRenderer(renderer_);
+  selector->SetFieldAssociation(vtkDataObject::FIELD_ASSOCIATION_CELLS);
+  selector->SetActorPassOnly(true);
+  const unsigned int at[2] = {static_cast<unsigned int>(x), static_cast<unsigned int>(y)};
+  selector->SetArea(at[0], at[1], at[0], at[1]);
+  const int overlayDrawn = overlay_->GetDraw();
+  overlay_->DrawOff();
+  renderer_->SetPass(nullptr);
+  renderTimer_->setIgnoring(true);
+  const bool captured = selector->CaptureBuffers();
+  renderTimer_->setIgnoring(false);
+  renderer_->SetPass(pass_);
+  overlay_->SetDraw(overlayDrawn);
+  const vtkHardwareSelector::PixelInformation info =
+      captured ? selector->GetPixelInformation(at) : vtkHardwareSelector::PixelInformation{};
+  vtkProp* prop = captured && info.Valid ? info.Prop : nullptr;
+  selector->ClearBuffers();
+  // The ids are in the back buffer: the mean again, unchanged.
+  renderTimer_->setIgnoring(true);
+  window_->Render();
+  renderTimer_->setIgnoring(false);
+  if (!prop)
+  {
+    return -1;
+  }
   for (std::size_t i = 0; i < parts_.size(); ++i)
   {
-    if (parts_[i]->actor.Get() == actor)
+    if (parts_[i]->actor.Get() == prop)
     {
       return int(i);
     }

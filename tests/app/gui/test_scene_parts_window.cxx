@@ -173,6 +173,7 @@ private slots:
     const auto rightAt = displayOf(view, {1.5, 0.0, 0.0});
     const auto leftBefore = meanAround(view, leftAt);
     const auto rightBefore = meanAround(view, rightAt);
+    const int samplesBefore = view->accumulatedSamples();
     const std::array<int, 2> viewSize{view->renderer()->GetRenderWindow()->GetSize()[0],
                                       view->renderer()->GetRenderWindow()->GetSize()[1]};
     QVERIFY2(leftBefore[0] + leftBefore[1] > 20.0, "the left sphere is not drawn");
@@ -186,6 +187,28 @@ private slots:
     // A click beside both clears it.
     view->clickedAt(5, 5, false);
     QVERIFY(model->selection().empty());
+    // Picking draws the parts' ids into the window (VTK's hardware selector) and shows the mean
+    // again at once: the mean keeps the samples it had (nothing started over), and the window's
+    // pixels are those it had before.
+    QTRY_VERIFY_WITH_TIMEOUT(settled(window), 60000);
+    QCOMPARE(view->partAt(leftAt[0], leftAt[1]), 0);
+    QCOMPARE(view->partAt(rightAt[0], rightAt[1]), 1);
+    QCOMPARE(view->partAt(5, 5), -1);
+    QCOMPARE(view->accumulatedSamples(), samplesBefore);
+    const auto leftPicked = meanAround(view, leftAt);
+    const auto rightPicked = meanAround(view, rightAt);
+    for (std::size_t c = 0; c < 3; ++c)
+    {
+      QVERIFY2(std::abs(leftPicked[c] - leftBefore[c]) < 0.5 &&
+                   std::abs(rightPicked[c] - rightBefore[c]) < 0.5,
+               qPrintable(QString("channel %1 after picking: left %2 (before %3), right %4 "
+                                  "(before %5)")
+                              .arg(c)
+                              .arg(leftPicked[c])
+                              .arg(leftBefore[c])
+                              .arg(rightPicked[c])
+                              .arg(rightBefore[c])));
+    }
     view->clickedAt(rightAt[0], rightAt[1], false);
 
     // Another material (copper) for the right part leaves the left part's pixels exactly as they
