@@ -4,9 +4,10 @@
 // is switched to mis, (e) a large mesh is opened in the background as the File menu opens it,
 // (f) the same opened synchronously, for comparison, (g) the orbit of (a) around that mesh and its
 // refinement once still, (h) a scene of 200 parts opened in the background, (i) one part
-// selected by a click, (j) its n_u edited, (k) a library material assigned to it. Prints, per phase, the
-// largest and the 99th-percentile gap, the frames drawn (window renders: a frame drawn in bands
-// counts once per band), the samples per pixel accumulated and the samples per pixel and second.
+// selected by a click, (j) its n_u edited, (k) a library material assigned to it. Prints, per
+// phase, the largest and the 99th-percentile gap, the frames drawn (window renders: a frame drawn
+// in bands counts once per band), the samples per pixel accumulated and the samples per pixel and
+// second.
 // Run (X server needed): xvfb-run -a -s "-screen 0 1920x1080x24" bench_ui_latency [WxH]
 //   [--frame-budget MS] (0: one frame per model sample count, the behaviour without the
 //   frame-time budget) [--trace MS] (prints every event whose handling on the UI thread took

@@ -25,9 +25,9 @@
 #include <vtkActor.h>
 #include <vtkAppendPolyData.h>
 #include <vtkCallbackCommand.h>
+#include <vtkCommand.h>
 #include <vtkDataObject.h>
 #include <vtkHardwareSelector.h>
-#include <vtkCommand.h>
 #include <vtkInteractorObserver.h>
 #include <vtkOpenGLPolyDataMapper.h>
 #include <vtkOpenGLRenderWindow.h>
@@ -767,7 +767,7 @@ int SceneView::partAt(int x, int y)
   // selector's renders go through the renderer's own drawing, which a render pass replaces, so
   // the accumulation pass steps aside for them; it keeps its mean, and the window shows that mean
   // again (nothing added to it: the view did not change). The overlay (the selection's outline)
-  // is not drawn into the ids, and the renders are not timed (the planner learns frames only).
+  // is not drawn into the ids, and the id renders are not timed (the planner learns frames only).
   if (x < 0 || y < 0 || !renderer_->GetRenderWindow())
   {
     return -1;
@@ -799,10 +799,9 @@ int SceneView::partAt(int x, int y)
       captured ? selector->GetPixelInformation(at) : vtkHardwareSelector::PixelInformation{};
   vtkProp* prop = captured && info.Valid ? info.Prop : nullptr;
   selector->ClearBuffers();
-  // The ids are in the back buffer: the mean again, unchanged.
-  renderTimer_->setIgnoring(true);
+  // The ids are in the back buffer: the mean again (timed as any render: a still view that is
+  // refining draws its next frame here, a converged one only shows its mean).
   window_->Render();
-  renderTimer_->setIgnoring(false);
   if (!prop)
   {
     return -1;
