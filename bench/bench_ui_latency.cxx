@@ -23,6 +23,7 @@
 #include <QEventLoop>
 #include <QFile>
 #include <QMouseEvent>
+#include <QPointer>
 #include <QSlider>
 #include <QSurfaceFormat>
 #include <QTemporaryDir>
@@ -86,6 +87,9 @@ public:
       return QApplication::notify(receiver, event);
     }
     const int type = event->type();
+    // A delivery may delete its receiver (a single-shot timer's own object): it is described
+    // only if it still exists.
+    const QPointer<QObject> alive(receiver);
     QElapsedTimer t;
     t.start();
     ++depth_;
@@ -94,10 +98,11 @@ public:
     const double ms = double(t.nsecsElapsed()) * 1e-6;
     if (ms > traceMs)
     {
-      const QObject* parent = receiver ? receiver->parent() : nullptr;
+      const QObject* object = alive.data();
+      const QObject* parent = object ? object->parent() : nullptr;
       std::fprintf(stderr, "trace: %-16s %7.1f ms  event %d  receiver %s \"%s\" (parent %s)\n",
-                   phase, ms, type, receiver ? receiver->metaObject()->className() : "-",
-                   receiver ? qPrintable(receiver->objectName()) : "",
+                   phase, ms, type, object ? object->metaObject()->className() : "(deleted)",
+                   object ? qPrintable(object->objectName()) : "",
                    parent ? parent->metaObject()->className() : "-");
     }
     return result;

@@ -1,5 +1,6 @@
 #include "scene/LutScheduler.h"
 
+#include "core/background_priority.h"
 #include "core/error.h"
 #include "core/lut/lut_cache.h"
 
@@ -225,6 +226,7 @@ void LutScheduler::requestNow()
       pool_,
       [cache, request, id, cancel]
       {
+        lowerThreadPriority();
         Outcome outcome;
         outcome.result.id = id;
         outcome.result.request = request;

@@ -2,6 +2,7 @@
 
 #include "app/gui/Failure.h"
 #include "app/gui/SceneAssets.h"
+#include "core/background_priority.h"
 
 #include <QThreadPool>
 #include <memory>
@@ -57,6 +58,7 @@ void BackgroundLoader::load(const std::string& kind, const QString& name, const 
   pool_->start(
       [this, kind, id, name, staged, load, deliver, prefetch]
       {
+        lowerThreadPriority(); // the window's renders first (background_priority.h)
         const QString error = failureOf([&] { load(*staged); },
                                         tr("%1: too large for the memory available").arg(name));
         // Delivered on the UI thread (the loader waits for its workers before it goes).

@@ -3,6 +3,7 @@
 #include "app/gui/Failure.h"
 #include "app/gui/RenderErrorOutput.h"
 #include "app/gui/SceneAssets.h"
+#include "core/background_priority.h"
 #include "core/error.h"
 #include "core/parameters/choices.h"
 #include "scene/SceneModel.h"
@@ -99,6 +100,7 @@ void LightingLoader::startBake()
   pool_->start(
       [this, id, environment, cubeSize, sampling, analysed, base]
       {
+        lowerThreadPriority(); // the window's renders first (background_priority.h)
         std::shared_ptr<EnvironmentLighting> lighting = base;
         const QString message = failureOf(
             [&]

@@ -1531,6 +1531,18 @@ void MainWindow::showSamples(int samples, int target)
                              .arg(100.0 * view_->quality().predictedError, 0, 'g', 2));
 }
 
+bool MainWindow::event(QEvent* event)
+{
+  if (event->type() != QEvent::UpdateRequest || !view_)
+  {
+    return QMainWindow::event(event);
+  }
+  view_->beginWindowRepaint();
+  const bool handled = QMainWindow::event(event);
+  view_->endWindowRepaint();
+  return handled;
+}
+
 void MainWindow::closeEvent(QCloseEvent* event)
 {
   QSettings settings;

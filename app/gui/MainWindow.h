@@ -171,6 +171,9 @@ signals:
   void errorReported(const QString& message);
 
 protected:
+  // Times the window's repaints (QEvent::UpdateRequest: the widgets painted and the window
+  // composed with the view's picture) for the view's frame planning (SceneView::windowRepainted).
+  bool event(QEvent* event) override;
   void closeEvent(QCloseEvent* event) override;
   void dragEnterEvent(QDragEnterEvent* event) override;
   void dropEvent(QDropEvent* event) override;

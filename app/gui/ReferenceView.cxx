@@ -1,5 +1,6 @@
 #include "app/gui/ReferenceView.h"
 
+#include "core/background_priority.h"
 #include "core/error.h"
 #include "scene/LutScheduler.h"
 #include "scene/SceneModel.h"
@@ -11,11 +12,6 @@
 #include <chrono>
 #include <cmath>
 #include <glm/geometric.hpp>
-#ifdef __linux__
-#include <sys/resource.h>
-#include <sys/syscall.h>
-#include <unistd.h>
-#endif
 
 namespace aniso
 {
@@ -25,18 +21,6 @@ namespace
 // pixel takes a few milliseconds (`aniso render --reference`: 3959 pixels of n = 100 in 19 s on
 // two threads), so the window hears of the progress several times a second.
 constexpr int kChunkPerThread = 32;
-
-// The worker's niceness (Linux; the threads it starts inherit it): the window's own work, its
-// renders above all (a CPU rasteriser draws on the same cores), comes first; the reference takes
-// what is left, all of it once the view has converged.
-constexpr int kWorkerNice = 10;
-
-void yieldToTheWindow()
-{
-#ifdef __linux__
-  setpriority(PRIO_PROCESS, static_cast<id_t>(syscall(SYS_gettid)), kWorkerNice);
-#endif
-}
 
 QString percent(double value)
 {
@@ -232,7 +216,10 @@ void ReferenceView::start(const SceneView::ReferenceKey& key)
   pool_->start(
       [this, id, inputs, cancel, stride, options, chunk]
       {
-        yieldToTheWindow();
+        // The window's own work, its renders above all (a CPU rasteriser draws on the same
+        // cores), comes first; the reference takes what is left, all of it once the view has
+        // converged.
+        lowerThreadPriority();
         Run run;
         QString failure;
         try

@@ -78,6 +78,7 @@ void RenderTimer::event(vtkObject* caller, unsigned long event)
   }
   const double seconds = double(clock_.nsecsElapsed() - startNs_) * 1e-9;
   startNs_ = -1;
+  renderedSeconds_ += seconds;
   if (!drewSurface_)
   {
     return; // a converged view shown again, or nothing to draw

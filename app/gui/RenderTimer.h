@@ -31,6 +31,9 @@ public:
   ~RenderTimer();
   // Renders while IGNORING is set are not timed (a part pick's id renders: not frames).
   void setIgnoring(bool ignoring) { ignoring_ = ignoring; }
+  // Seconds of every render timed so far, whether it drew the surface or not: what renders took
+  // of a longer stretch of the UI thread's work (a repaint of the window that rendered).
+  double renderedSeconds() const { return renderedSeconds_; }
   RenderTimer(const RenderTimer&) = delete;
   RenderTimer& operator=(const RenderTimer&) = delete;
 
@@ -48,6 +51,7 @@ private:
   qint64 startNs_ = -1;
   bool drewSurface_ = false;
   bool ignoring_ = false;
+  double renderedSeconds_ = 0.0;
   MeasuredRender drawn_; // what the surface's draw of the render in progress draws
 };
 } // namespace aniso

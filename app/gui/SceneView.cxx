@@ -14,6 +14,7 @@
 #include "vtkpasses/render/EnvironmentLighting.h"
 #include "vtkpasses/render/FieldValues.h"
 #include "vtkpasses/render/LineStyle.h"
+#include "vtkpasses/render/PickCuller.h"
 #include "vtkpasses/render/RendererMatrices.h"
 #include "vtkpasses/render/vtkAnisoAccumulationPass.h"
 
@@ -121,6 +122,12 @@ SceneView::SceneView(SceneModel* model, SceneAssets* assets, LutScheduler* luts,
           }),
       lightingLoader_(new LightingLoader(model, assets, window, &errors_, this))
 {
+  // No multisampled framebuffer: the accumulation pass draws into targets of its own and
+  // antialiases by its jittered samples, so the window's samples (8 as VTK's Qt widget sets them)
+  // would only multiply what showing a frame costs, and the hardware selector, which draws ids
+  // without them, would make the window's framebuffers anew at every pick and again after it
+  // (some 20-60 ms each on llvmpipe).
+  window_->SetMultiSamples(0);
   pass_->SetDelegatePass(steps_);
   renderer_->SetPass(pass_);
   window_->AddRenderer(renderer_);
@@ -332,6 +339,29 @@ vtkRenderer* SceneView::overlay() const
 void SceneView::setSettleMs(int ms)
 {
   settle_->setInterval(ms);
+}
+
+void SceneView::beginWindowRepaint()
+{
+  repaintClock_.start();
+  renderedAtRepaint_ = renderTimer_->renderedSeconds();
+}
+
+void SceneView::endWindowRepaint()
+{
+  if (!repaintClock_.isValid())
+  {
+    return;
+  }
+  // A repaint may render the view (the widget's paint, when VTK asks for a render): that is a
+  // render, timed and planned as such, not the repaint's own cost.
+  const double seconds = double(repaintClock_.nsecsElapsed()) * 1e-9 -
+                         (renderTimer_->renderedSeconds() - renderedAtRepaint_);
+  repaintClock_.invalidate();
+  // The larger of this repaint and the earlier ones decayed by a tenth a repaint: one slow
+  // repaint holds for some tens of them, and a window made smaller is planned for within as many.
+  repaintSeconds_ = std::max(std::max(seconds, 0.0), 0.9 * repaintSeconds_);
+  planner_.setOverheadSeconds(overheadSeconds_ + repaintSeconds_);
 }
 
 void SceneView::setFrameBudgetMs(int ms)
@@ -787,6 +817,12 @@ int SceneView::partAt(int x, int y)
   selector->SetActorPassOnly(true);
   const unsigned int at[2] = {static_cast<unsigned int>(x), static_cast<unsigned int>(y)};
   selector->SetArea(at[0], at[1], at[0], at[1]);
+  // Only the parts whose screen rectangles hold the pixel draw their ids: the id render costs
+  // what those few cost, and only their mappers switch to their picking shaders (and back at the
+  // next frame) instead of every part's.
+  vtkNew<PickCuller> culler;
+  culler->SetPixel(x, y);
+  renderer_->AddCuller(culler);
   const int overlayDrawn = overlay_->GetDraw();
   overlay_->DrawOff();
   renderer_->SetPass(nullptr);
@@ -795,6 +831,7 @@ int SceneView::partAt(int x, int y)
   renderTimer_->setIgnoring(false);
   renderer_->SetPass(pass_);
   overlay_->SetDraw(overlayDrawn);
+  renderer_->RemoveCuller(culler);
   const vtkHardwareSelector::PixelInformation info =
       captured ? selector->GetPixelInformation(at) : vtkHardwareSelector::PixelInformation{};
   vtkProp* prop = captured && info.Valid ? info.Prop : nullptr;
@@ -1332,11 +1369,12 @@ void SceneView::renderNow()
     requestRender();
   }
   // What this pass cost besides the render (errors checked, the plan, the signals' receivers):
-  // the renders are planned for the budget less its running mean, so the pass keeps within it.
+  // the renders are planned for the budget less its running mean and the window's repaint
+  // (endWindowRepaint), so the pass keeps within it.
   const double overhead = double(pass.nsecsElapsed() - renderNs) * 1e-9;
   overheadSeconds_ =
       overheadSeconds_ > 0.0 ? 0.8 * overheadSeconds_ + 0.2 * overhead : overhead;
-  planner_.setOverheadSeconds(overheadSeconds_);
+  planner_.setOverheadSeconds(overheadSeconds_ + repaintSeconds_);
 }
 
 void SceneView::presentFrame()

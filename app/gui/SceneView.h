@@ -167,6 +167,14 @@ public:
   // unchanged. 0: frames of the material's samples whatever they cost.
   void setFrameBudgetMs(int ms);
   int frameBudgetMs() const { return planner_.budgetMs(); }
+  // A repaint of the window around the view begins and ends (its widgets painted and the window
+  // composed with the view's picture: on a software rasteriser some 10-20 ms for a large window).
+  // A repaint may fall in the same pass of the event loop as a refinement render, so renders are
+  // planned for the budget less what repaints cost (repaintSeconds: the latest repaint's time
+  // less the view's renders during it, or the previous ones', decayed, when larger).
+  void beginWindowRepaint();
+  void endWindowRepaint();
+  double repaintSeconds() const { return repaintSeconds_; }
   // Samples per pixel of each frame of the current refinement run.
   int frameSamples() const;
   // Bands each frame of the current refinement run is drawn in (1 while things move).
@@ -332,6 +340,9 @@ private:
   // Frame costs learnt, the cost model, the load margin and the run's plan.
   RefinementPlanner planner_{kDefaultFrameBudgetMs};
   double overheadSeconds_ = 0.0; // a pass of renderNow besides its render, running mean
+  double repaintSeconds_ = 0.0;  // the window's repaints (endWindowRepaint)
+  QElapsedTimer repaintClock_;   // since the repaint in progress began
+  double renderedAtRepaint_ = 0.0; // renderTimer_'s renderedSeconds then
   // Times the window's renders for the planner.
   std::unique_ptr<RenderTimer> renderTimer_;
   QElapsedTimer presentClock_;  // since a frame last reached the screen
