@@ -170,6 +170,11 @@ std::vector<vtkProp*> propsInRows(const vtkRenderState* s, const glm::dmat4& cli
 void allocateColor(vtkTextureObject* texture, vtkOpenGLRenderWindow* window, int width, int height)
 {
   texture->SetContext(window);
+  if (texture->GetHandle() && int(texture->GetWidth()) == width &&
+      int(texture->GetHeight()) == height)
+  {
+    return; // made at this size already
+  }
   if (!texture->GetHandle())
   {
     texture->SetInternalFormat(GL_RGBA32F);
@@ -203,7 +208,8 @@ vtkAnisoAccumulationPass::~vtkAnisoAccumulationPass()
     this->AccumulationBuffer->Delete();
   }
   for (vtkTextureObject* texture :
-       {this->FrameColor, this->FrameDepth, this->AccumulationColor, this->PreviousColor})
+       {this->FrameColor, this->FrameDepth, this->AccumulationColor, this->SpareFrameColor,
+        this->SpareFrameDepth, this->PreviousColor})
   {
     if (texture)
     {
@@ -360,10 +366,11 @@ void vtkAnisoAccumulationPass::Render(const vtkRenderState* s)
     // shows the reduced picture scaled up there, not an empty framebuffer's rows.
     this->PreviousShown = this->AccumulatedFrames > 0 && this->AccumulationColor &&
                           this->AccumulationColor->GetHandle() != 0;
-    if (this->PreviousShown)
-    {
-      std::swap(this->AccumulationColor, this->PreviousColor);
-    }
+    // The old size's targets become the spare ones, the spare ones (made at the size before, as
+    // often as not the new one) the current ones: PrepareTargets resizes only what differs.
+    std::swap(this->AccumulationColor, this->PreviousColor);
+    std::swap(this->FrameColor, this->SpareFrameColor);
+    std::swap(this->FrameDepth, this->SpareFrameDepth);
   }
   // Taken whether or not the size changed: the first taking reads every prop's state (and may
   // make what a prop makes on demand), which must not count as a change at the next band.
@@ -537,7 +544,8 @@ void vtkAnisoAccumulationPass::PrepareTargets(vtkOpenGLRenderWindow* window, int
     this->FrameDepth->AllocateDepth(static_cast<unsigned int>(width),
                                     static_cast<unsigned int>(height), vtkTextureObject::Float32);
   }
-  else
+  else if (int(this->FrameDepth->GetWidth()) != width ||
+           int(this->FrameDepth->GetHeight()) != height)
   {
     this->FrameDepth->Resize(static_cast<unsigned int>(width), static_cast<unsigned int>(height));
   }
@@ -886,7 +894,8 @@ void vtkAnisoAccumulationPass::ReleaseGraphicsResources(vtkWindow* w)
     this->AccumulationBuffer = nullptr;
   }
   for (vtkTextureObject* texture :
-       {this->FrameColor, this->FrameDepth, this->AccumulationColor, this->PreviousColor})
+       {this->FrameColor, this->FrameDepth, this->AccumulationColor, this->SpareFrameColor,
+        this->SpareFrameDepth, this->PreviousColor})
   {
     if (texture)
     {

@@ -173,8 +173,13 @@ private:
   vtkTextureObject* FrameColor = nullptr;
   vtkTextureObject* FrameDepth = nullptr;
   vtkTextureObject* AccumulationColor = nullptr;
-  // The mean before the last change of size, shown under the rows the new size's first frame has
-  // not drawn yet (while PreviousShown).
+  // The targets of the size before the last change of size, kept: a view that switches between
+  // its own resolution and a reduced one while things move finds the other size's targets made
+  // (making them anew costs some 20-40 ms a switch on a software rasteriser, which clears every
+  // new texture). PreviousColor is that size's mean, shown under the rows the new size's first
+  // frame has not drawn yet (while PreviousShown).
+  vtkTextureObject* SpareFrameColor = nullptr;
+  vtkTextureObject* SpareFrameDepth = nullptr;
   vtkTextureObject* PreviousColor = nullptr;
   bool PreviousShown = false;
   vtkOpenGLFramebufferObject* FrameBuffer = nullptr;
