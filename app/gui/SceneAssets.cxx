@@ -253,7 +253,30 @@ std::shared_ptr<const SceneAssets::Surface> SceneAssets::surfaceEntry(const std:
         }
         entry->prepared = prepareSurface(loaded->polyData, surfaceOptions(tangents),
                                          block.empty() ? mesh : mesh + ": part " + block);
-        entry->interactive = interactiveLevelOfDetail(entry->prepared.polyData);
+        const vtkIdType triangles = entry->prepared.polyData->GetNumberOfPolys();
+        if (block.empty())
+        {
+          entry->interactive = interactiveLevelOfDetail(entry->prepared.polyData);
+        }
+        else
+        {
+          // A part of a file: its share of the stand-in triangles of the file's parts together
+          // (their triangles as loaded and sanitised).
+          vtkIdType fileTriangles = 0;
+          for (const MeshBlock& b : blocks(mesh)->blocks)
+          {
+            if (!b.lines && b.mesh.polyData)
+            {
+              fileTriangles += b.mesh.polyData->GetNumberOfPolys();
+            }
+          }
+          const vtkIdType share = partStandInTriangles(triangles, fileTriangles);
+          if (share > 0)
+          {
+            entry->interactive =
+                interactiveLevelOfDetail(entry->prepared.polyData, share, share);
+          }
+        }
         entry->notes = loaded->report.notes();
         for (const std::string& note : entry->prepared.report.notes())
         {

@@ -99,6 +99,10 @@ struct SceneView::PartView
   bool inRenderer = false;
   vtkNew<vtkActor> actor;
   vtkNew<vtkOpenGLPolyDataMapper> mapper;
+  // Draws the stand-in while things move, swapped in on the actor: each mapper keeps its own
+  // buffers and shader programs, so the swap rebuilds nothing (a new input would rebuild both,
+  // for every part of a scene).
+  vtkNew<vtkOpenGLPolyDataMapper> standInMapper;
   std::unique_ptr<AnisoMaterial> shading;
   MaterialSettings full;
   vtkSmartPointer<vtkPolyData> surface;          // in the mesh's coordinates
@@ -224,7 +228,7 @@ SceneView::SceneView(SceneModel* model, SceneAssets* assets, LutScheduler* luts,
         for (const auto& part : parts_)
         {
           drawn.standIn = drawn.standIn || (part->drawnInteractive && part->inRenderer &&
-                                            part->mapper->GetInput() == part->drawnInteractive);
+                                            part->actor->GetMapper() == part->standInMapper);
         }
         // The samples each part draws in this frame (every part the same: the run's).
         drawn.samples = 1;
@@ -523,6 +527,7 @@ bool SceneView::syncParts()
   {
     auto part = std::make_unique<PartView>();
     part->mapper->ScalarVisibilityOff();
+    part->standInMapper->ScalarVisibilityOff();
     part->actor->SetMapper(part->mapper);
     parts_.push_back(std::move(part));
   }
@@ -661,6 +666,7 @@ void SceneView::applySurfaces()
       {
         part.shading = std::make_unique<AnisoMaterial>(lighting(), part.full);
         part.shading->apply(part.actor, renderer_);
+        part.shading->addMapper(part.standInMapper);
       }
       drawn.push_back(part.drawn);
       interactive.push_back(part.drawnInteractive ? part.drawnInteractive.Get() : part.drawn.Get());
@@ -693,6 +699,7 @@ void SceneView::applySurfaces()
     if (part->inRenderer)
     {
       mappers.push_back(part->mapper);
+      mappers.push_back(part->standInMapper);
     }
   }
   renderTimer_->setMappers(mappers);
@@ -721,13 +728,22 @@ void SceneView::showDrawnSurface()
     {
       continue;
     }
-    vtkPolyData* drawn =
-        interacting_ && part->drawnInteractive ? part->drawnInteractive.Get() : part->drawn.Get();
-    if (drawn && part->mapper->GetInput() != drawn)
+    // Each mapper keeps its input (a new input: buffers built in the next render), and the actor
+    // draws with the stand-in's while things move.
+    if (part->drawn && part->mapper->GetInput() != part->drawn)
     {
-      // A new input: the mapper builds its buffers for it in the next render (a few ms even for
-      // the largest surfaces; both stay in memory, so swapping reads nothing).
-      part->mapper->SetInputData(drawn);
+      part->mapper->SetInputData(part->drawn);
+    }
+    if (part->drawnInteractive && part->standInMapper->GetInput() != part->drawnInteractive)
+    {
+      part->standInMapper->SetInputData(part->drawnInteractive);
+    }
+    vtkMapper* wanted = interacting_ && part->drawnInteractive
+                            ? static_cast<vtkMapper*>(part->standInMapper)
+                            : static_cast<vtkMapper*>(part->mapper);
+    if (part->drawn && part->actor->GetMapper() != wanted)
+    {
+      part->actor->SetMapper(wanted);
     }
   }
 }
@@ -742,7 +758,8 @@ long long SceneView::drawnTriangles() const
   long long triangles = 0;
   for (const auto& part : parts_)
   {
-    vtkPolyData* drawn = vtkPolyData::SafeDownCast(part->mapper->GetInput());
+    vtkMapper* mapper = part->actor->GetMapper();
+    vtkPolyData* drawn = mapper ? vtkPolyData::SafeDownCast(mapper->GetInputDataObject(0, 0)) : nullptr;
     triangles += part->inRenderer && drawn ? drawn->GetNumberOfPolys() : 0;
   }
   return triangles;

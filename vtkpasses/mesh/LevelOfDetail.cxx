@@ -91,6 +91,18 @@ vtkSmartPointer<vtkPolyData> cluster(vtkPolyData* surface, const int divisions[3
 }
 } // namespace
 
+vtkIdType partStandInTriangles(vtkIdType partTriangles, vtkIdType sceneTriangles, vtkIdType limit,
+                               vtkIdType maxTriangles)
+{
+  const vtkIdType scene = std::max(sceneTriangles, partTriangles);
+  if (partTriangles <= 0 || scene <= limit || maxTriangles < 1)
+  {
+    return 0;
+  }
+  const double share = double(maxTriangles) * double(partTriangles) / double(scene);
+  return std::max(kInteractivePartTriangles, static_cast<vtkIdType>(share));
+}
+
 vtkSmartPointer<vtkPolyData> interactiveLevelOfDetail(vtkPolyData* surface, vtkIdType limit,
                                                       vtkIdType maxTriangles)
 {

@@ -22,6 +22,18 @@ constexpr vtkIdType kInteractiveTriangleLimit = 100000;
 // The stand-in's triangles at most.
 constexpr vtkIdType kInteractiveTriangles = 40000;
 
+// A part's stand-in in a file of many parts: the parts are drawn together, so a scene of many
+// small parts is as slow to draw while moving as one large surface of their triangles. When the
+// file's parts have more than LIMIT triangles together (SCENETRIANGLES), each part of
+// PARTTRIANGLES gets its share of MAXTRIANGLES in proportion to its triangles (at least
+// kInteractivePartTriangles): what interactiveLevelOfDetail is then asked for, a part at or under
+// its share drawn as it is. 0 when the parts together are within LIMIT (no stand-in for any).
+// One part alone is the single-surface rule: its stand-in when it is over LIMIT.
+constexpr vtkIdType kInteractivePartTriangles = 16;
+vtkIdType partStandInTriangles(vtkIdType partTriangles, vtkIdType sceneTriangles,
+                               vtkIdType limit = kInteractiveTriangleLimit,
+                               vtkIdType maxTriangles = kInteractiveTriangles);
+
 // The stand-in of SURFACE (triangles, as prepareSurface returns them) with at most
 // MAXTRIANGLES triangles, or null when the surface has no more than LIMIT triangles (it is drawn
 // as it is).

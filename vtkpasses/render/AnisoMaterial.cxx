@@ -647,6 +647,11 @@ void AnisoMaterial::apply(vtkActor* actor, vtkRenderer* renderer)
   impl_->hook.attach(actor, renderer, impl_.get());
 }
 
+void AnisoMaterial::addMapper(vtkMapper* mapper)
+{
+  impl_->hook.addMapper(mapper);
+}
+
 void AnisoMaterial::detach()
 {
   impl_->hook.detach();

@@ -12,6 +12,7 @@
 #include <memory>
 
 class vtkActor;
+class vtkMapper;
 class vtkRenderer;
 
 namespace aniso
@@ -34,6 +35,10 @@ public:
   // The actor's mapper must be set and be an OpenGL polydata mapper; aniso::Error otherwise.
   // A material serves one actor: applying it again moves it.
   void apply(vtkActor* actor, vtkRenderer* renderer);
+  // Another mapper the actor may draw with, swapped in on it (its stand-in's while the view
+  // moves): the material shades what it draws as well, and swapping rebuilds nothing
+  // (ShaderHook::addMapper). After apply(); applying again or detaching forgets it.
+  void addMapper(vtkMapper* mapper);
   // Takes the material off its actor (the actor draws with VTK's own shading again).
   void detach();
 

@@ -103,6 +103,14 @@ public:
   unsigned long updateShaderTag = 0;
   unsigned long mapperEndTag = 0;
   unsigned long rendererEndTag = 0;
+  // Further mappers the actor may draw with (addMapper), with their observers' tags.
+  struct Extra
+  {
+    vtkWeakPointer<vtkOpenGLPolyDataMapper> mapper;
+    unsigned long updateShaderTag = 0;
+    unsigned long mapperEndTag = 0;
+  };
+  std::vector<Extra> extras;
   bool installed = false;
   ShaderCode code;                                      // what is installed
   std::vector<vtkWeakPointer<vtkTextureObject>> active; // activated for the current draw
@@ -181,20 +189,41 @@ public:
       }
       actor->Modified();
     }
-    if (mapper)
+    for (vtkOpenGLPolyDataMapper* m : allMappers())
     {
       for (const auto& [attribute, array] : code.attributes)
       {
-        mapper->RemoveVertexAttributeMapping(attribute.c_str());
+        m->RemoveVertexAttributeMapping(attribute.c_str());
       }
     }
     code = ShaderCode{};
     installed = false;
   }
 
-  void onMapperEnd(vtkObject*, unsigned long, void*)
+  // The actor's first mapper and the further ones that still exist.
+  std::vector<vtkOpenGLPolyDataMapper*> allMappers() const
   {
-    vtkPolyData* poly = mapper ? mapper->GetInput() : nullptr;
+    std::vector<vtkOpenGLPolyDataMapper*> all;
+    if (mapper)
+    {
+      all.push_back(mapper);
+    }
+    for (const Extra& extra : extras)
+    {
+      if (extra.mapper)
+      {
+        all.push_back(extra.mapper);
+      }
+    }
+    return all;
+  }
+
+  void onMapperEnd(vtkObject* caller, unsigned long, void*)
+  {
+    // The mapper that drew (at attach, called without one: the first).
+    auto* drew = vtkOpenGLPolyDataMapper::SafeDownCast(caller);
+    vtkOpenGLPolyDataMapper* from = drew ? drew : mapper.GetPointer();
+    vtkPolyData* poly = from ? from->GetInput() : nullptr;
     if (poly && onMesh)
     {
       onMesh(poly);
@@ -283,11 +312,56 @@ void ShaderHook::detach()
     d.mapper->RemoveObserver(d.updateShaderTag);
     d.mapper->RemoveObserver(d.mapperEndTag);
   }
+  for (const Impl::Extra& extra : d.extras)
+  {
+    if (extra.mapper)
+    {
+      extra.mapper->RemoveObserver(extra.updateShaderTag);
+      extra.mapper->RemoveObserver(extra.mapperEndTag);
+    }
+  }
+  d.extras.clear();
   d.mapper = nullptr;
   d.actor = nullptr;
   d.renderer = nullptr;
   d.onMesh = nullptr;
   d.onShader = nullptr;
+}
+
+void ShaderHook::addMapper(vtkMapper* added)
+{
+  Impl& d = *impl_;
+  auto* mapper = vtkOpenGLPolyDataMapper::SafeDownCast(added);
+  if (!mapper || !d.actor)
+  {
+    throw errorAbout(d.subject, mapper ? "a further mapper needs an attached actor"
+                                       : "a further mapper is not an OpenGL polydata mapper");
+  }
+  if (mapper == d.mapper)
+  {
+    return;
+  }
+  for (const Impl::Extra& extra : d.extras)
+  {
+    if (extra.mapper == mapper)
+    {
+      return;
+    }
+  }
+  Impl::Extra extra;
+  extra.mapper = mapper;
+  extra.updateShaderTag =
+      mapper->AddObserver(vtkCommand::UpdateShaderEvent, &d, &Impl::onUpdateShader);
+  extra.mapperEndTag = mapper->AddObserver(vtkCommand::EndEvent, &d, &Impl::onMapperEnd);
+  d.extras.push_back(extra);
+  if (d.installed)
+  {
+    for (const auto& [attribute, array] : d.code.attributes)
+    {
+      mapper->MapDataArrayToVertexAttribute(attribute.c_str(), array.c_str(),
+                                            vtkDataObject::FIELD_ASSOCIATION_POINTS, -1);
+    }
+  }
 }
 
 void ShaderHook::bindTexture(vtkShaderProgram* program, const char* sampler,
@@ -341,10 +415,13 @@ void ShaderHook::install(const ShaderCode& code)
   {
     sp->AddGeometryShaderReplacement(tag, true, tag + "\n" + text, false);
   }
-  for (const auto& [attribute, array] : code.attributes)
+  for (vtkOpenGLPolyDataMapper* m : d.allMappers())
   {
-    d.mapper->MapDataArrayToVertexAttribute(attribute.c_str(), array.c_str(),
-                                            vtkDataObject::FIELD_ASSOCIATION_POINTS, -1);
+    for (const auto& [attribute, array] : code.attributes)
+    {
+      m->MapDataArrayToVertexAttribute(attribute.c_str(), array.c_str(),
+                                       vtkDataObject::FIELD_ASSOCIATION_POINTS, -1);
+    }
   }
   d.code = code;
   d.installed = true;

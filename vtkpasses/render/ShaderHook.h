@@ -11,6 +11,7 @@
 #include <vector>
 
 class vtkActor;
+class vtkMapper;
 class vtkOpenGLRenderWindow;
 class vtkPolyData;
 class vtkRenderer;
@@ -100,6 +101,12 @@ public:
         { owner->onShader(program, window); });
   }
   void detach();
+  // Another mapper the attached actor may draw with (a stand-in's, swapped in on the actor while
+  // the view moves): observed as the actor's own and given the installed code's attribute
+  // mappings, so that swapping mappers on the actor rebuilds nothing (each mapper keeps its
+  // buffers and shader programs). The actor's mapper at attach() is the first; detach() forgets
+  // them all. Not an OpenGL polydata mapper, or nothing attached: aniso::Error.
+  void addMapper(vtkMapper* mapper);
 
   // Activates TEXTURE for the coming draw and points SAMPLER at its unit (call from the shader
   // callback). The unit is freed once the actor has drawn (when the next hooked actor of the

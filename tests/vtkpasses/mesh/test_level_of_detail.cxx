@@ -126,5 +126,37 @@ TEST(LevelOfDetail, ALargeTorusKeepsItsShapeAttributesAndFacing)
                         });
   EXPECT_EQ(flipped, 0) << "of " << triangles;
 }
+// A part of a file of many parts (partStandInTriangles): nothing while the parts together are
+// within the limit; over it, each part its share of the stand-in triangles in proportion to its
+// own (so the shares add up to at most the stand-in's total), never under the floor; one part
+// alone is the single-surface rule. A small torus (960 triangles) cut to its share of a scene
+// of 200 such parts keeps its size: bounds within a cell of the clustering grid.
+TEST(LevelOfDetail, APartOfAManyPartSceneGetsItsShare)
+{
+  EXPECT_EQ(partStandInTriangles(960, 200 * 960, 200000, 40000), 0);
+  EXPECT_EQ(partStandInTriangles(960, 200 * 960), 200);
+  EXPECT_EQ(partStandInTriangles(960, 200 * 960) * 200, kInteractiveTriangles);
+  EXPECT_EQ(partStandInTriangles(10, 200 * 960), kInteractivePartTriangles);
+  EXPECT_EQ(partStandInTriangles(300000, 300000), kInteractiveTriangles);
+  EXPECT_EQ(partStandInTriangles(50000, 50000), 0);
+  EXPECT_EQ(partStandInTriangles(0, 200 * 960), 0);
+
+  vtkSmartPointer<vtkPolyData> part =
+      prepareSurface(makeTorus(24, 20, kMajor, kMinor), SurfaceOptions{}, "torus").polyData;
+  ASSERT_EQ(part->GetNumberOfPolys(), 960);
+  const vtkIdType share = partStandInTriangles(960, 200 * 960);
+  vtkSmartPointer<vtkPolyData> coarse = interactiveLevelOfDetail(part, share, share);
+  ASSERT_NE(coarse, nullptr);
+  EXPECT_LE(coarse->GetNumberOfPolys(), share);
+  EXPECT_GT(coarse->GetNumberOfPolys(), share / 4);
+  double a[6], b[6];
+  part->GetBounds(a);
+  coarse->GetBounds(b);
+  const double cell = std::sqrt(2.0 * test::surfaceArea(part) / double(share));
+  for (int i = 0; i < 6; ++i)
+  {
+    EXPECT_NEAR(b[i], a[i], 2.0 * cell) << "bound " << i;
+  }
+}
 } // namespace
 } // namespace aniso
