@@ -15,6 +15,7 @@
 //    row costs (worked out by hand), equal rows without them.
 //  - Moving slider values (n_u, F0, albedo, samples, exposure) keeps the compiled shader
 //    program; changing the specular method builds another one.
+#include "core/error.h"
 #include "tests/vtkpasses/render/render_test_helpers.h"
 #include "vtkpasses/mesh/BuiltinMeshes.h"
 #include "vtkpasses/render/AnisoMaterial.h"
@@ -30,6 +31,7 @@
 #include <vtkActor.h>
 #include <vtkCamera.h>
 #include <vtkCommand.h>
+#include <vtkDataSetMapper.h>
 #include <vtkNew.h>
 #include <vtkOpenGLPolyDataMapper.h>
 #include <vtkOpenGLRenderWindow.h>
@@ -633,6 +635,54 @@ TEST(RenderAccumulation, SliderValuesNeverRebuildTheShader)
   scene.material->setSettings(settings);
   scene.render();
   EXPECT_NE(scene.lastProgram, first);
+}
+// A second mapper the material serves (AnisoMaterial::addMapper, as a part's stand-in mapper is):
+// swapped in on the actor, it draws the same geometry to the same converged mean as the first
+// mapper (an identity: identical values), shaded by the material (VTK's own shading, with the
+// material detached, gives another picture); swapped back, the first mapper draws its picture
+// again. A mapper that is not an OpenGL polydata mapper, or one given before the material is on
+// an actor, is refused.
+TEST(RenderAccumulation, ASecondMapperSwappedInIsShadedAlike)
+{
+  ANISO_REQUIRE_DISPLAY();
+  Scene first;
+  for (int frame = 1; frame <= 3; ++frame)
+  {
+    ASSERT_EQ(first.render(), frame);
+  }
+  const Image expected = first.pass->ReadAccumulation();
+  ASSERT_FALSE(expected.data.empty());
+
+  Scene swapped;
+  vtkNew<vtkOpenGLPolyDataMapper> other;
+  other->SetInputData(makeSphere(32, 16));
+  swapped.material->addMapper(other);
+  swapped.actor->SetMapper(other);
+  for (int frame = 1; frame <= 3; ++frame)
+  {
+    ASSERT_EQ(swapped.render(), frame);
+  }
+  EXPECT_EQ(largestDifference(swapped.pass->ReadAccumulation(), expected), 0.0);
+
+  swapped.actor->SetMapper(swapped.mapper);
+  for (int frame = 1; frame <= 3; ++frame)
+  {
+    ASSERT_EQ(swapped.render(), frame);
+  }
+  EXPECT_EQ(largestDifference(swapped.pass->ReadAccumulation(), expected), 0.0);
+
+  Scene unshaded;
+  unshaded.material->detach();
+  for (int frame = 1; frame <= 3; ++frame)
+  {
+    ASSERT_EQ(unshaded.render(), frame);
+  }
+  EXPECT_GT(largestDifference(unshaded.pass->ReadAccumulation(), expected), 0.01);
+
+  vtkNew<vtkDataSetMapper> notOpenGl;
+  EXPECT_THROW(swapped.material->addMapper(notOpenGl), Error);
+  AnisoMaterial loose(swapped.lighting);
+  EXPECT_THROW(loose.addMapper(other), Error);
 }
 } // namespace
 } // namespace aniso::test
