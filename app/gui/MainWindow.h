@@ -172,7 +172,8 @@ signals:
 
 protected:
   // Times the window's repaints (QEvent::UpdateRequest: the widgets painted and the window
-  // composed with the view's picture) for the view's frame planning (SceneView::windowRepainted).
+  // composed with the view's picture) for the view's frame planning
+  // (SceneView::beginWindowRepaint, endWindowRepaint).
   bool event(QEvent* event) override;
   void closeEvent(QCloseEvent* event) override;
   void dragEnterEvent(QDragEnterEvent* event) override;

@@ -23,9 +23,6 @@ public:
 
   double Cull(vtkRenderer* renderer, vtkProp** props, int& count, int& initialized) override;
 
-  // Whether PROP's screen rectangle in RENDERER holds the pixel (as Cull decides).
-  bool MayCover(vtkRenderer* renderer, vtkProp* prop) const;
-
   vtkTypeMacro(PickCuller, vtkCuller)
 
 protected:

@@ -97,20 +97,18 @@ public:
   std::string subject;
   vtkWeakPointer<vtkActor> actor;
   vtkWeakPointer<vtkRenderer> renderer;
-  vtkWeakPointer<vtkOpenGLPolyDataMapper> mapper;
   MeshCallback onMesh;
   ShaderCallback onShader;
-  unsigned long updateShaderTag = 0;
-  unsigned long mapperEndTag = 0;
   unsigned long rendererEndTag = 0;
-  // Further mappers the actor may draw with (addMapper), with their observers' tags.
-  struct Extra
+  // The mappers the actor may draw with, observed: the actor's at attach first, then those of
+  // addMapper.
+  struct Observed
   {
     vtkWeakPointer<vtkOpenGLPolyDataMapper> mapper;
     unsigned long updateShaderTag = 0;
     unsigned long mapperEndTag = 0;
   };
-  std::vector<Extra> extras;
+  std::vector<Observed> observed;
   bool installed = false;
   ShaderCode code;                                      // what is installed
   std::vector<vtkWeakPointer<vtkTextureObject>> active; // activated for the current draw
@@ -200,29 +198,49 @@ public:
     installed = false;
   }
 
-  // The actor's first mapper and the further ones that still exist.
+  // The observed mappers that still exist.
   std::vector<vtkOpenGLPolyDataMapper*> allMappers() const
   {
     std::vector<vtkOpenGLPolyDataMapper*> all;
-    if (mapper)
+    for (const Observed& o : observed)
     {
-      all.push_back(mapper);
-    }
-    for (const Extra& extra : extras)
-    {
-      if (extra.mapper)
+      if (o.mapper)
       {
-        all.push_back(extra.mapper);
+        all.push_back(o.mapper);
       }
     }
     return all;
   }
 
+  // Observes MAPPER (draws and shader updates) and gives it the installed attribute mappings.
+  void observe(vtkOpenGLPolyDataMapper* mapper)
+  {
+    Observed o;
+    o.mapper = mapper;
+    o.updateShaderTag = mapper->AddObserver(vtkCommand::UpdateShaderEvent, this, &Impl::onUpdateShader);
+    o.mapperEndTag = mapper->AddObserver(vtkCommand::EndEvent, this, &Impl::onMapperEnd);
+    observed.push_back(o);
+    if (installed)
+    {
+      mapAttributes(mapper);
+    }
+  }
+
+  void mapAttributes(vtkOpenGLPolyDataMapper* mapper) const
+  {
+    for (const auto& [attribute, array] : code.attributes)
+    {
+      mapper->MapDataArrayToVertexAttribute(attribute.c_str(), array.c_str(),
+                                            vtkDataObject::FIELD_ASSOCIATION_POINTS, -1);
+    }
+  }
+
   void onMapperEnd(vtkObject* caller, unsigned long, void*)
   {
-    // The mapper that drew (at attach, called without one: the first).
+    // The mapper that drew (at attach, called without one: the actor's own).
     auto* drew = vtkOpenGLPolyDataMapper::SafeDownCast(caller);
-    vtkOpenGLPolyDataMapper* from = drew ? drew : mapper.GetPointer();
+    vtkOpenGLPolyDataMapper* from =
+        drew ? drew : (observed.empty() ? nullptr : observed.front().mapper.GetPointer());
     vtkPolyData* poly = from ? from->GetInput() : nullptr;
     if (poly && onMesh)
     {
@@ -281,11 +299,9 @@ void ShaderHook::attach(vtkActor* actor, vtkRenderer* renderer, MeshCallback onM
   Impl& d = *impl_;
   d.actor = actor;
   d.renderer = renderer;
-  d.mapper = mapper;
   d.onMesh = std::move(onMesh);
   d.onShader = std::move(onShader);
-  d.updateShaderTag = mapper->AddObserver(vtkCommand::UpdateShaderEvent, &d, &Impl::onUpdateShader);
-  d.mapperEndTag = mapper->AddObserver(vtkCommand::EndEvent, &d, &Impl::onMapperEnd);
+  d.observe(mapper);
   d.rendererEndTag = renderer->AddObserver(vtkCommand::EndEvent, &d, &Impl::onRendererEnd);
   // If the mesh is already there, the variant is known now; otherwise the first draw tells.
   if (vtkPolyData* poly = mapper->GetInput())
@@ -307,21 +323,15 @@ void ShaderHook::detach()
   {
     d.renderer->RemoveObserver(d.rendererEndTag);
   }
-  if (d.mapper)
+  for (const Impl::Observed& o : d.observed)
   {
-    d.mapper->RemoveObserver(d.updateShaderTag);
-    d.mapper->RemoveObserver(d.mapperEndTag);
-  }
-  for (const Impl::Extra& extra : d.extras)
-  {
-    if (extra.mapper)
+    if (o.mapper)
     {
-      extra.mapper->RemoveObserver(extra.updateShaderTag);
-      extra.mapper->RemoveObserver(extra.mapperEndTag);
+      o.mapper->RemoveObserver(o.updateShaderTag);
+      o.mapper->RemoveObserver(o.mapperEndTag);
     }
   }
-  d.extras.clear();
-  d.mapper = nullptr;
+  d.observed.clear();
   d.actor = nullptr;
   d.renderer = nullptr;
   d.onMesh = nullptr;
@@ -337,30 +347,10 @@ void ShaderHook::addMapper(vtkMapper* added)
     throw errorAbout(d.subject, mapper ? "a further mapper needs an attached actor"
                                        : "a further mapper is not an OpenGL polydata mapper");
   }
-  if (mapper == d.mapper)
+  const std::vector<vtkOpenGLPolyDataMapper*> all = d.allMappers();
+  if (std::find(all.begin(), all.end(), mapper) == all.end())
   {
-    return;
-  }
-  for (const Impl::Extra& extra : d.extras)
-  {
-    if (extra.mapper == mapper)
-    {
-      return;
-    }
-  }
-  Impl::Extra extra;
-  extra.mapper = mapper;
-  extra.updateShaderTag =
-      mapper->AddObserver(vtkCommand::UpdateShaderEvent, &d, &Impl::onUpdateShader);
-  extra.mapperEndTag = mapper->AddObserver(vtkCommand::EndEvent, &d, &Impl::onMapperEnd);
-  d.extras.push_back(extra);
-  if (d.installed)
-  {
-    for (const auto& [attribute, array] : d.code.attributes)
-    {
-      mapper->MapDataArrayToVertexAttribute(attribute.c_str(), array.c_str(),
-                                            vtkDataObject::FIELD_ASSOCIATION_POINTS, -1);
-    }
+    d.observe(mapper);
   }
 }
 
@@ -397,7 +387,7 @@ void ShaderHook::setTransforms(vtkShaderProgram* program, const std::string& pre
 void ShaderHook::install(const ShaderCode& code)
 {
   Impl& d = *impl_;
-  if (!d.actor || !d.mapper)
+  if (!d.actor || d.allMappers().empty())
   {
     return;
   }
@@ -415,15 +405,11 @@ void ShaderHook::install(const ShaderCode& code)
   {
     sp->AddGeometryShaderReplacement(tag, true, tag + "\n" + text, false);
   }
+  d.code = code;
   for (vtkOpenGLPolyDataMapper* m : d.allMappers())
   {
-    for (const auto& [attribute, array] : code.attributes)
-    {
-      m->MapDataArrayToVertexAttribute(attribute.c_str(), array.c_str(),
-                                       vtkDataObject::FIELD_ASSOCIATION_POINTS, -1);
-    }
+    d.mapAttributes(m);
   }
-  d.code = code;
   d.installed = true;
   d.actor->Modified();
 }
