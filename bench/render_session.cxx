@@ -137,6 +137,9 @@ public:
   uint64_t environmentBakes = 0;
   uint64_t uploadsAtStart = 0;
   uint64_t bakesAtStart = 0;
+  bool vtkPasses = false;
+  bool stageTiming = false;
+  std::vector<FrameStages> stages;
 
   void onUpdateShader(vtkObject*, unsigned long, void* program)
   {
@@ -157,6 +160,21 @@ public:
       const auto end = std::chrono::steady_clock::now();
       seconds.push_back(
           {std::chrono::duration<double>(end - start).count(), processCpuSeconds() - cpuStart});
+      if (stageTiming)
+      {
+        FrameStages st;
+        if (!vtkPasses)
+        {
+          const vtkAnisoAccumulationPass::StageSeconds& t = pass->GetStageSeconds();
+          st = {t.prepare, t.clear, t.scene, t.background, t.accumulate, t.present, 0.0};
+        }
+        st.frame = seconds.back().wall;
+        stages.push_back(st);
+      }
+    }
+    if (vtkPasses)
+    {
+      return seconds;
     }
     if (pass->GetAccumulatedFrames() != before + frames)
     {
@@ -353,12 +371,34 @@ int RenderSession::accumulatedFrames() const
 
 Image RenderSession::read()
 {
+  if (impl_->vtkPasses)
+  {
+    throw errorAbout("render", "VTK's own passes keep no float image to read");
+  }
   Image image = impl_->pass->ReadAccumulation();
   if (image.empty())
   {
     throw errorAbout("render", "no image was rendered");
   }
   return image;
+}
+
+void RenderSession::setVtkPasses(bool vtkPasses)
+{
+  impl_->vtkPasses = vtkPasses;
+  impl_->renderer->SetPass(vtkPasses ? nullptr : impl_->pass.GetPointer());
+}
+
+void RenderSession::setStageTiming(bool timing)
+{
+  impl_->stageTiming = timing;
+  impl_->pass->SetStageTiming(timing);
+  impl_->stages.clear();
+}
+
+const std::vector<FrameStages>& RenderSession::stages() const
+{
+  return impl_->stages;
 }
 
 SessionCounters RenderSession::counters() const

@@ -48,6 +48,20 @@ FrameTime medianFrameTime(const std::vector<FrameTime>& frames);
 // Pixels of a read image with coverage > 0.
 int64_t coveredPixels(const Image& image);
 
+// Where one frame went, stage by stage (seconds; the accumulation pass's stages, each waited
+// for), and the frame's whole time while they were timed: the rest is VTK's own work around
+// the pass (its render steps before the props, the window's buffers).
+struct FrameStages
+{
+  double prepare = 0.0;
+  double clear = 0.0;
+  double scene = 0.0;
+  double background = 0.0;
+  double accumulate = 0.0;
+  double present = 0.0;
+  double frame = 0.0;
+};
+
 // What the session did, for showing that nothing is redone when nothing changed.
 struct SessionCounters
 {
@@ -98,6 +112,15 @@ public:
   int accumulatedFrames() const;
   // The accumulated mean: RGBA float, linear radiance, alpha = coverage, row 0 at the top.
   Image read();
+
+  // Draws through VTK's own render passes instead of the accumulation pass (VTK's frame as VTK
+  // draws it: no float targets, no display transform); render() then returns frame times and
+  // read() is not available. Off by default.
+  void setVtkPasses(bool vtkPasses);
+  // Times each stage of the accumulation pass (FrameStages) while on; stages() holds those of
+  // every frame drawn since it was switched on.
+  void setStageTiming(bool timing);
+  const std::vector<FrameStages>& stages() const;
 
   SessionCounters counters() const;
   std::string rendererName();

@@ -348,6 +348,8 @@ void vtkAnisoAccumulationPass::Render(const vtkRenderState* s)
   {
     return;
   }
+  this->Stages = StageSeconds();
+  this->MarkStage(nullptr);
 
   if (window != this->LastWindow)
   {
@@ -398,8 +400,10 @@ void vtkAnisoAccumulationPass::Render(const vtkRenderState* s)
     const int y1 = this->BandEdges[std::size_t(this->Band)];
     const auto start = std::chrono::steady_clock::now();
     this->PrepareTargets(window, width, height);
+    this->MarkStage(&this->Stages.prepare);
     this->RenderFrame(s, window, width, height, y0, y1);
     this->Accumulate(window, width, height, y0, y1);
+    this->MarkStage(&this->Stages.accumulate);
     if (this->Bands > 1)
     {
       // What this band cost (the rasteriser may work on its own threads: waited for).
@@ -425,7 +429,25 @@ void vtkAnisoAccumulationPass::Render(const vtkRenderState* s)
     this->LastSignature = this->ComputeSignature(s, width, height);
   }
   this->NumberOfRenderedProps = this->LastRenderedProps;
+  this->MarkStage(&this->Stages.prepare);
   this->Present(window, x, y, width, height, shownFrom);
+  this->MarkStage(&this->Stages.present);
+}
+
+void vtkAnisoAccumulationPass::MarkStage(double* stage)
+{
+  if (!this->StageTiming)
+  {
+    return;
+  }
+  glFinish();
+  const double now =
+      std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+  if (stage)
+  {
+    *stage += now - this->StageMark;
+  }
+  this->StageMark = now;
 }
 
 void vtkAnisoAccumulationPass::PlanBandRows(const vtkRenderState* state, int height,
@@ -600,6 +622,7 @@ void vtkAnisoAccumulationPass::RenderFrame(const vtkRenderState* s, vtkOpenGLRen
     ostate->vtkglClearColor(0.0f, 0.0f, 0.0f, 0.0f);
     ostate->vtkglDepthMask(GL_TRUE);
     ostate->vtkglClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    this->MarkStage(&this->Stages.clear);
 
     // A band draws the props that may reach its rows: of a scene of parts, those above and
     // below it cost nothing (a prop's vertices are processed whatever the scissor keeps).
@@ -644,6 +667,7 @@ void vtkAnisoAccumulationPass::RenderFrame(const vtkRenderState* s, vtkOpenGLRen
     {
       mapper->RemoveObserver(tag);
     }
+    this->MarkStage(&this->Stages.scene);
     this->BandRenderedProps = this->DelegatePass->GetNumberOfRenderedProps();
     // What the frame draws, whichever band this was.
     this->LastRenderedProps =
@@ -653,6 +677,7 @@ void vtkAnisoAccumulationPass::RenderFrame(const vtkRenderState* s, vtkOpenGLRen
     ostate->vtkglViewport(0, 0, width, height);
     ostate->vtkglScissor(0, y0, width, y1 - y0);
     this->DrawBackground(window, renderer);
+    this->MarkStage(&this->Stages.background);
   }
   ostate->PopFramebufferBindings();
 

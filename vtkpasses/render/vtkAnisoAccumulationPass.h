@@ -117,6 +117,28 @@ public:
   // the last Render(). Empty if nothing was rendered yet.
   aniso::Image ReadAccumulation();
 
+  // Where the last Render() spent its time, stage by stage (seconds of wall time), measured
+  // only while SetStageTiming(true): the GL is waited for (glFinish) before and after each
+  // stage, so a stage's time is its own work; a driver that overlaps stages loses that overlap
+  // while timed, so the timed frame may cost more than an untimed one. Stages the Render() did
+  // not run are 0 (a converged view only presents).
+  struct StageSeconds
+  {
+    double prepare = 0.0;    // what changed (the signature), the band's rows, the float targets
+    double clear = 0.0;      // clearing the frame's colour and depth
+    double scene = 0.0;      // the delegate: VTK's passes drawing the props (geometry, shading)
+    double background = 0.0; // the background behind the surfaces
+    double accumulate = 0.0; // folding the frame into the running mean
+    double present = 0.0;    // the display transform into the bound framebuffer
+    double total() const
+    {
+      return prepare + clear + scene + background + accumulate + present;
+    }
+  };
+  void SetStageTiming(bool timing) { this->StageTiming = timing; }
+  bool GetStageTiming() const { return this->StageTiming; }
+  const StageSeconds& GetStageSeconds() const { return this->Stages; }
+
 protected:
   vtkAnisoAccumulationPass();
   ~vtkAnisoAccumulationPass() override;
@@ -166,6 +188,11 @@ private:
   Signature LastSignature;
   int LastRenderedProps = 0;
   int BandRenderedProps = 0;
+  bool StageTiming = false;
+  StageSeconds Stages;
+  // With StageTiming, waits for the GL and adds the time since the last mark to STAGE.
+  void MarkStage(double* stage);
+  double StageMark = 0.0;
 
   vtkWeakPointer<vtkOpenGLRenderWindow> LastWindow; // where the targets live
   int Width = 0;
