@@ -200,7 +200,6 @@ int main(int argc, char** argv)
         s.prepare = stage(&FrameStages::prepare);
         s.clear = stage(&FrameStages::clear);
         s.scene = stage(&FrameStages::scene);
-        s.background = stage(&FrameStages::background);
         s.accumulate = stage(&FrameStages::accumulate);
         s.present = stage(&FrameStages::present);
         s.frame = stage(&FrameStages::frame);
@@ -231,8 +230,8 @@ int main(int argc, char** argv)
     }
     std::printf("\n## Stages (each waited for; medians over the rounds of each round's median, "
                 "ms)\n\n| Configuration | Prepare | Clear | Scene (VTK's passes, the props) | "
-                "Background | Accumulate | Present | VTK around the pass | Timed frame |\n"
-                "| --- | --- | --- | --- | --- | --- | --- | --- | --- |\n");
+                "Accumulate (with the background) | Present | VTK around the pass | Timed frame |\n"
+                "| --- | --- | --- | --- | --- | --- | --- | --- |\n");
     for (std::size_t c = 0; c < configurations.size(); ++c)
     {
       const Summary& s = summaries[c];
@@ -248,21 +247,20 @@ int main(int argc, char** argv)
       std::vector<double> rest;
       for (const FrameStages& r : s.stages)
       {
-        rest.push_back(r.frame - (r.prepare + r.clear + r.scene + r.background + r.accumulate +
-                                  r.present));
+        rest.push_back(r.frame - (r.prepare + r.clear + r.scene + r.accumulate + r.present));
       }
       const bool passDrawn = column(&FrameStages::scene) > 0.0;
       if (!passDrawn)
       {
-        std::printf("| %s | - | - | - | - | - | - | %.1f | %.1f |\n",
+        std::printf("| %s | - | - | - | - | - | %.1f | %.1f |\n",
                     configurations[c].name.c_str(), median(rest) * 1e3,
                     column(&FrameStages::frame));
         continue;
       }
-      std::printf("| %s | %.1f | %.1f | %.1f | %.1f | %.1f | %.1f | %.1f | %.1f |\n",
+      std::printf("| %s | %.1f | %.1f | %.1f | %.1f | %.1f | %.1f | %.1f |\n",
                   configurations[c].name.c_str(), column(&FrameStages::prepare),
                   column(&FrameStages::clear), column(&FrameStages::scene),
-                  column(&FrameStages::background), column(&FrameStages::accumulate),
+                  column(&FrameStages::accumulate),
                   column(&FrameStages::present), median(rest) * 1e3, column(&FrameStages::frame));
     }
     std::printf("\nRenderer: %s\n", full.rendererName().c_str());

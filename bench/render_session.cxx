@@ -166,7 +166,7 @@ public:
         if (!vtkPasses)
         {
           const vtkAnisoAccumulationPass::StageSeconds& t = pass->GetStageSeconds();
-          st = {t.prepare, t.clear, t.scene, t.background, t.accumulate, t.present, 0.0};
+          st = {t.prepare, t.clear, t.scene, t.accumulate, t.present, 0.0};
         }
         st.frame = seconds.back().wall;
         stages.push_back(st);

@@ -56,7 +56,6 @@ struct FrameStages
   double prepare = 0.0;
   double clear = 0.0;
   double scene = 0.0;
-  double background = 0.0;
   double accumulate = 0.0;
   double present = 0.0;
   double frame = 0.0;

@@ -17,6 +17,7 @@
 #include <vtkActor.h>
 #include <vtkCallbackCommand.h>
 #include <vtkCamera.h>
+#include <vtkCameraPass.h>
 #include <vtkCommand.h>
 #include <vtkDataObject.h>
 #include <vtkInformation.h>
@@ -36,6 +37,8 @@
 #include <vtkProp.h>
 #include <vtkProperty.h>
 #include <vtkRenderState.h>
+#include <vtkRenderStepsPass.h>
+#include <vtkRenderWindow.h>
 #include <vtkRenderer.h>
 #include <vtkShaderProgram.h>
 #include <vtkShaderProperty.h>
@@ -619,9 +622,16 @@ void vtkAnisoAccumulationPass::RenderFrame(const vtkRenderState* s, vtkOpenGLRen
     ostate->vtkglEnable(GL_SCISSOR_TEST);
     ostate->vtkglViewport(0, 0, width, height);
     ostate->vtkglScissor(0, 0, width, height);
-    ostate->vtkglClearColor(0.0f, 0.0f, 0.0f, 0.0f);
-    ostate->vtkglDepthMask(GL_TRUE);
-    ostate->vtkglClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    // Only the depth matters: Accumulate reads the frame's colour where a surface drew (depth
+    // below the far plane) and puts the background elsewhere. VTK's camera pass clears the depth
+    // itself when the renderer and window erase (and the depth is not preserved); a second
+    // clear of the whole target would cost as much again.
+    if (!this->DelegateClearsDepth(renderer))
+    {
+      ostate->vtkglClearColor(0.0f, 0.0f, 0.0f, 0.0f);
+      ostate->vtkglDepthMask(GL_TRUE);
+      ostate->vtkglClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    }
     this->MarkStage(&this->Stages.clear);
 
     // A band draws the props that may reach its rows: of a scene of parts, those above and
@@ -674,10 +684,8 @@ void vtkAnisoAccumulationPass::RenderFrame(const vtkRenderState* s, vtkOpenGLRen
         partial ? std::max(this->LastRenderedProps, this->DelegatePass->GetNumberOfRenderedProps())
                 : this->DelegatePass->GetNumberOfRenderedProps();
 
-    ostate->vtkglViewport(0, 0, width, height);
-    ostate->vtkglScissor(0, y0, width, y1 - y0);
-    this->DrawBackground(window, renderer);
-    this->MarkStage(&this->Stages.background);
+    // The view rays of this frame's camera (jittered), for the background in Accumulate.
+    this->FrameClipToWorld = aniso::clipToWorld(renderer);
   }
   ostate->PopFramebufferBindings();
 
@@ -712,54 +720,25 @@ vtkOpenGLQuadHelper* vtkAnisoAccumulationPass::Quad(vtkOpenGLRenderWindow* windo
   return quad.get();
 }
 
-void vtkAnisoAccumulationPass::DrawBackground(vtkOpenGLRenderWindow* window, vtkRenderer* renderer)
+bool vtkAnisoAccumulationPass::DelegateClearsDepth(vtkRenderer* renderer) const
 {
-  vtkOpenGLQuadHelper* quad = this->Quad(
-      window, this->BackgroundQuad, aniso::shaders::kBackgroundFs, "", this->BackgroundDefines);
-  if (!quad)
-  {
-    return;
-  }
-  vtkShaderProgram* program = quad->Program;
-  vtkOpenGLState* ostate = window->GetState();
-  vtkOpenGLState::ScopedglEnableDisable depthTest(ostate, GL_DEPTH_TEST);
-  vtkOpenGLState::ScopedglEnableDisable blend(ostate, GL_BLEND);
-  vtkOpenGLState::ScopedglDepthFunc depthFunc(ostate);
-  vtkOpenGLState::ScopedglDepthMask depthMask(ostate);
-  // Drawn at the far plane: only pixels no surface covered keep depth 1 and pass.
-  ostate->vtkglEnable(GL_DEPTH_TEST);
-  ostate->vtkglDepthFunc(GL_LEQUAL);
-  ostate->vtkglDepthMask(GL_FALSE);
-  ostate->vtkglDisable(GL_BLEND);
-  program->SetUniformf("quadDepth", 1.0f);
-  aniso::setUniformMatrix(program, "clipToWorld", aniso::clipToWorld(renderer));
-
-  const bool environment =
-      this->Display.background == aniso::BackgroundMode::Environment && this->Lighting;
-  program->SetUniformi("showEnvironment", environment ? 1 : 0);
-  vtkTextureObject* cube = environment ? this->Lighting->cubeTexture(window) : nullptr;
-  if (cube)
-  {
-    cube->Activate();
-    ostate->vtkglEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS);
-    program->SetUniformi("environment", cube->GetTextureUnit());
-    aniso::setUniformMatrix(program, "worldToEnvironment", this->Lighting->worldToEnvironment());
-  }
-  const bool color = this->Display.background == aniso::BackgroundMode::Color;
-  const glm::vec3 radiance = color ? glm::vec3(this->Display.backgroundColor) : glm::vec3(0.0f);
-  program->SetUniform3f("backgroundRadiance", glm::value_ptr(radiance));
-  quad->Render();
-  if (cube)
-  {
-    cube->Deactivate();
-  }
+  // Both draw through a vtkCameraPass, which clears when the renderer and its window erase.
+  const bool camera = vtkRenderStepsPass::SafeDownCast(this->DelegatePass) != nullptr ||
+                      vtkCameraPass::SafeDownCast(this->DelegatePass) != nullptr;
+  vtkRenderWindow* window = renderer->GetRenderWindow();
+  return camera && renderer->GetErase() && window && window->GetErase() &&
+         !renderer->GetPreserveDepthBuffer();
 }
 
 void vtkAnisoAccumulationPass::Accumulate(vtkOpenGLRenderWindow* window, int width, int height,
                                           int y0, int y1)
 {
-  vtkOpenGLQuadHelper* quad = this->Quad(
-      window, this->AccumulateQuad, aniso::shaders::kAccumulateFs, "", this->AccumulateDefines);
+  const bool environment =
+      this->Display.background == aniso::BackgroundMode::Environment && this->Lighting;
+  vtkTextureObject* cube = environment ? this->Lighting->cubeTexture(window) : nullptr;
+  vtkOpenGLQuadHelper* quad =
+      this->Quad(window, this->AccumulateQuad, aniso::shaders::kAccumulateFs,
+                 cube ? "#define ANISO_BACKGROUND_ENVIRONMENT\n" : "", this->AccumulateDefines);
   if (!quad)
   {
     return;
@@ -795,9 +774,29 @@ void vtkAnisoAccumulationPass::Accumulate(vtkOpenGLRenderWindow* window, int wid
       ostate->vtkglBlendFuncSeparate(GL_CONSTANT_ALPHA, GL_ONE_MINUS_CONSTANT_ALPHA,
                                      GL_CONSTANT_ALPHA, GL_ONE_MINUS_CONSTANT_ALPHA);
     }
+    vtkShaderProgram* program = quad->Program;
     this->FrameColor->Activate();
-    quad->Program->SetUniformi("frame", this->FrameColor->GetTextureUnit());
+    program->SetUniformi("frame", this->FrameColor->GetTextureUnit());
+    this->FrameDepth->Activate();
+    program->SetUniformi("frameDepth", this->FrameDepth->GetTextureUnit());
+    program->SetUniformf("quadDepth", 0.0f);
+    const bool color = this->Display.background == aniso::BackgroundMode::Color;
+    const glm::vec3 radiance = color ? glm::vec3(this->Display.backgroundColor) : glm::vec3(0.0f);
+    program->SetUniform3f("backgroundRadiance", glm::value_ptr(radiance));
+    if (cube)
+    {
+      cube->Activate();
+      ostate->vtkglEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS);
+      program->SetUniformi("environment", cube->GetTextureUnit());
+      aniso::setUniformMatrix(program, "clipToWorld", this->FrameClipToWorld);
+      aniso::setUniformMatrix(program, "worldToEnvironment", this->Lighting->worldToEnvironment());
+    }
     quad->Render();
+    if (cube)
+    {
+      cube->Deactivate();
+    }
+    this->FrameDepth->Deactivate();
     this->FrameColor->Deactivate();
   }
   ostate->PopFramebufferBindings();
@@ -901,7 +900,7 @@ void vtkAnisoAccumulationPass::ReleaseGraphicsResources(vtkWindow* w)
   {
     this->DelegatePass->ReleaseGraphicsResources(w);
   }
-  for (auto* quad : {&this->BackgroundQuad, &this->AccumulateQuad, &this->DisplayQuad})
+  for (auto* quad : {&this->AccumulateQuad, &this->DisplayQuad})
   {
     if (*quad)
     {

@@ -1,9 +1,10 @@
 #pragma once
 // Progressive refinement and display for the anisotropic materials.
 //
-// Each Render() draws the delegate (usually a vtkRenderStepsPass) into a float RGBA frame,
-// puts the background behind the surfaces (environment along the view rays, a colour, or
-// nothing), and folds the frame into a float running mean. Frame k asks the materials for the
+// Each Render() draws the delegate (usually a vtkRenderStepsPass) into a float RGBA frame and
+// folds the frame into a float running mean, putting the background (environment along the view
+// rays, a colour, or nothing) behind the surfaces in the same pass: where the frame's depth is
+// still the far plane. Frame k asks the materials for the
 // sample-set shift frameShift(k) (through FRAME_SHIFT() on the renderer's information) and,
 // with jitter on, moves the camera by a sub-pixel offset so edges converge anti-aliased.
 // The mean is then drawn into whatever framebuffer was bound, through the display transform
@@ -127,12 +128,11 @@ public:
     double prepare = 0.0;    // what changed (the signature), the band's rows, the float targets
     double clear = 0.0;      // clearing the frame's colour and depth
     double scene = 0.0;      // the delegate: VTK's passes drawing the props (geometry, shading)
-    double background = 0.0; // the background behind the surfaces
-    double accumulate = 0.0; // folding the frame into the running mean
+    double accumulate = 0.0; // folding the frame into the running mean, with the background
     double present = 0.0;    // the display transform into the bound framebuffer
     double total() const
     {
-      return prepare + clear + scene + background + accumulate + present;
+      return prepare + clear + scene + accumulate + present;
     }
   };
   void SetStageTiming(bool timing) { this->StageTiming = timing; }
@@ -164,7 +164,10 @@ private:
   // Rows [y0, y1) (GL order, 0 at the bottom) of the frame are drawn.
   void RenderFrame(const vtkRenderState* s, vtkOpenGLRenderWindow* window, int width, int height,
                    int y0, int y1);
-  void DrawBackground(vtkOpenGLRenderWindow* window, vtkRenderer* renderer);
+  // Whether the delegate clears the frame's depth itself (a VTK camera pass of an erasing
+  // renderer and window).
+  bool DelegateClearsDepth(vtkRenderer* renderer) const;
+  // Folds the frame into the mean, with the background where no surface drew.
   void Accumulate(vtkOpenGLRenderWindow* window, int width, int height, int y0, int y1);
   // Shows rows [y0, height) of the mean (all of it with y0 = 0).
   void Present(vtkOpenGLRenderWindow* window, int x, int y, int width, int height, int y0);
@@ -190,6 +193,7 @@ private:
   int BandRenderedProps = 0;
   bool StageTiming = false;
   StageSeconds Stages;
+  glm::dmat4 FrameClipToWorld{1.0}; // the camera of the frame in progress (jitter included)
   // With StageTiming, waits for the GL and adds the time since the last mark to STAGE.
   void MarkStage(double* stage);
   double StageMark = 0.0;
@@ -211,10 +215,8 @@ private:
   bool PreviousShown = false;
   vtkOpenGLFramebufferObject* FrameBuffer = nullptr;
   vtkOpenGLFramebufferObject* AccumulationBuffer = nullptr;
-  std::unique_ptr<vtkOpenGLQuadHelper> BackgroundQuad;
   std::unique_ptr<vtkOpenGLQuadHelper> AccumulateQuad;
   std::unique_ptr<vtkOpenGLQuadHelper> DisplayQuad;
-  std::string BackgroundDefines;
   std::string AccumulateDefines;
   std::string DisplayDefines;
 };
