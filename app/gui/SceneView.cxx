@@ -489,14 +489,20 @@ void SceneView::materialsChanged(const QStringList& names)
         {
           applySurfaces();
         }
-        bool frameCost = false;
+        bool used = false;
         for (const auto& part : parts_)
         {
-          frameCost = frameCost || names.contains(QString::fromStdString(part->material));
+          used = used || names.contains(QString::fromStdString(part->material));
         }
-        if (frameCost)
+        if (used)
         {
-          planner_.forgetCosts();
+          // Exponents, F0 or albedo are uniforms and tables: frames cost what they cost before,
+          // and what the planner measured still holds (a new count's first frames are not
+          // extrapolated from nothing at every slider step).
+          if (frameCostChanged(names))
+          {
+            planner_.forgetCosts();
+          }
           beginInteraction();
           applyMaterial();
         }
@@ -605,6 +611,36 @@ bool SceneView::syncParts()
     emit surfacesOutdated();
   }
   return changed;
+}
+
+Material::Values SceneView::frameCostValues(const std::string& material) const
+{
+  Material::Values costs;
+  if (const Material* m = model_->materials().find(material))
+  {
+    for (const auto& [key, value] : m->values)
+    {
+      if (sceneKeyAffects(key, Affects::FrameCost))
+      {
+        costs.emplace(key, value);
+      }
+    }
+  }
+  return costs;
+}
+
+bool SceneView::frameCostChanged(const QStringList& names) const
+{
+  for (const QString& name : names)
+  {
+    const auto drawn = drawnFrameCostValues_.find(name.toStdString());
+    if (drawn != drawnFrameCostValues_.end() &&
+        drawn->second != frameCostValues(name.toStdString()))
+    {
+      return true;
+    }
+  }
+  return false;
 }
 
 void SceneView::refreshSurfaces()
@@ -967,6 +1003,13 @@ void SceneView::lightingShown()
 
 void SceneView::applyMaterial()
 {
+  // The values the frames from now on are drawn with, against which frameCostChanged tells
+  // whether an edit changes what they cost.
+  drawnFrameCostValues_.clear();
+  for (const auto& part : parts_)
+  {
+    drawnFrameCostValues_[part->material] = frameCostValues(part->material);
+  }
   if (parts_.empty())
   {
     applyLegends();

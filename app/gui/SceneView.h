@@ -38,6 +38,7 @@
 #include <functional>
 #include <glm/mat3x3.hpp>
 #include <glm/mat4x4.hpp>
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
@@ -254,6 +255,12 @@ private:
   // blocks, tangents, placements or read options (unless only those changed and the assets do
   // not hold the surface: surfacesOutdated), visibility); returns whether what is drawn changed.
   bool syncParts();
+  // A library material's values of the keys that change what a frame costs
+  // (Affects::FrameCost); none for a material not in the library.
+  Material::Values frameCostValues(const std::string& material) const;
+  // Whether any of the named materials that parts were drawn with at the last applyMaterial
+  // differs in those values from what they were then.
+  bool frameCostChanged(const QStringList& names) const;
   // The drawing frame, the surfaces in it and the camera after the drawn parts changed.
   void applySurfaces();
   void materialsChanged(const QStringList& names);
@@ -296,6 +303,8 @@ private:
   vtkNew<vtkOpenGLRenderer> renderer_;
   struct PartView;
   std::vector<std::unique_ptr<PartView>> parts_; // parallel to the model's parts
+  // frameCostValues of the parts' materials at the last applyMaterial.
+  std::map<std::string, Material::Values> drawnFrameCostValues_;
   bool partsShown_ = true;
   // The selected parts' bounding boxes, drawn by a renderer of their own over the scene's (its
   // layer 1, sharing its camera): selecting a part leaves the accumulated image as it is.

@@ -81,7 +81,7 @@ double RefinementPlanner::budgetSeconds(const FrameCostModel& cost) const
   // Planned for the machine as it ran the latest frames (the fit follows a change of load only
   // over several frames), except while the parts are not yet told apart: a margin on the
   // pessimistic split would keep every frame at 1 sample and the split unknown.
-  return renderBudgetSeconds() / (cost.separated ? margin() : 1.0);
+  return kPlanHeadroom * renderBudgetSeconds() / (cost.separated ? margin() : 1.0);
 }
 
 FramePlan RefinementPlanner::plan(const RunShape& shape) const

@@ -15,6 +15,8 @@
 //   - with quality-mode error, the still view's total is the fewest samples N with
 //     a N^-p <= error-target for the lobe's fitted a and p (computed here from the model's
 //     table entry for the lobe, n_u = n_v = 10 unfiltered: a = 3.259, p = 0.9757);
+//   - the frames' measured costs outlive edits of n_u and F0 and are forgotten when the tangent
+//     model changes;
 //   - a surface of more than kInteractiveTriangleLimit triangles is drawn as its stand-in while
 //     things move, as itself when still, and the still image after a move is the one before;
 //     the lit and LEADR models' views follow the same swap.
@@ -306,6 +308,35 @@ private slots:
     QCOMPARE(view->quality().samples, static_cast<int>(std::ceil(std::pow(a / 0.001, 1.0 / p))));
     window.editor()->edit("quality-mode", textValue("samples"));
     QCOMPARE(view->targetSamples(), 16);
+  }
+
+  // What the frames cost is kept across edits of a material's uniforms and tables (n_u, F0): a
+  // frame costs what it did, and the first frames after the edit are planned from it, not
+  // extrapolated from nothing. An edit that changes the cost (the tangent model: another shader
+  // variant and surface) forgets it, as a new mesh does.
+  void frameCostsOutliveEditsOfUniforms()
+  {
+    aniso::MainWindow window;
+    window.setErrorDialogs(false);
+    window.model()->setValues({{"mesh", textValue("builtin:sphere")},
+                               {"samples", numberValue(4.0)},
+                               {"target-samples", numberValue(16.0)}});
+    window.resize(800, 600);
+    window.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&window));
+    aniso::SceneView* view = window.view();
+    view->setSettleMs(20);
+    QVERIFY(!convergedImage(window, aniso::SceneView::kDefaultFrameBudgetMs).data.empty());
+    QVERIFY(view->frameCost(true).known);
+
+    window.editor()->edit("nu", numberValue(321.0));
+    window.editor()->edit("f0", aniso::colorValue(0.9, 0.6, 0.5));
+    QVERIFY(view->frameCost(true).known);
+    QVERIFY(!convergedImage(window, aniso::SceneView::kDefaultFrameBudgetMs).data.empty());
+    QVERIFY(view->frameCost(true).known);
+
+    window.editor()->edit("tangents", textValue("axis:0,0,1"));
+    QVERIFY(!view->frameCost(true).known);
   }
 
   // A surface of more than kInteractiveTriangleLimit triangles is drawn as its stand-in while
