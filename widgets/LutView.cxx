@@ -2,11 +2,11 @@
 
 #include "core/parameters/parameters.h"
 #include "scene/LutScheduler.h"
+#include "widgets/BusyBar.h"
 
 #include <QGridLayout>
 #include <QLabel>
 #include <QPixmap>
-#include <QProgressBar>
 #include <QVBoxLayout>
 
 namespace aniso
@@ -40,7 +40,7 @@ QString duration(double seconds)
 LutView::LutView(LutScheduler* scheduler, QWidget* parent)
     : QWidget(parent), scheduler_(scheduler), halfVectors_(imageLabel("lut-half-vectors", this)),
       pdf_(imageLabel("lut-pdf", this)), brdf_(imageLabel("lut-brdf", this)),
-      info_(new QLabel(this)), progress_(new QProgressBar(this))
+      info_(new QLabel(this)), progress_(new BusyBar(this))
 {
   setObjectName("LutView");
   auto* grid = new QGridLayout();
@@ -65,9 +65,6 @@ LutView::LutView(LutScheduler* scheduler, QWidget* parent)
   info_->setWordWrap(true);
   info_->setTextInteractionFlags(Qt::TextSelectableByMouse);
   // A busy bar: the bakers report no fraction, only that they are working.
-  progress_->setRange(0, 0);
-  progress_->setTextVisible(false);
-  progress_->setMaximumHeight(8);
   progress_->setVisible(scheduler->busy());
 
   auto* layout = new QVBoxLayout(this);

@@ -5,10 +5,10 @@
 #include <QWidget>
 
 class QLabel;
-class QProgressBar;
 
 namespace aniso
 {
+class BusyBar;
 class LutScheduler;
 struct LutResult;
 
@@ -29,6 +29,6 @@ private:
   QLabel* pdf_;
   QLabel* brdf_;
   QLabel* info_;
-  QProgressBar* progress_;
+  BusyBar* progress_;
 };
 } // namespace aniso

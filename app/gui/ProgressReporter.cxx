@@ -1,8 +1,9 @@
 #include "app/gui/ProgressReporter.h"
 
+#include "widgets/BusyBar.h"
+
 #include <QHBoxLayout>
 #include <QLabel>
-#include <QProgressBar>
 #include <QStatusBar>
 #include <QTimer>
 #include <QToolButton>
@@ -11,7 +12,7 @@ namespace aniso
 {
 ProgressReporter::ProgressReporter(QStatusBar* bar, QObject* parent)
     : QObject(parent), box_(new QWidget(bar)), label_(new QLabel(box_)),
-      bar_(new QProgressBar(box_)), cancel_(new QToolButton(box_)), timer_(new QTimer(this))
+      bar_(new BusyBar(box_)), cancel_(new QToolButton(box_)), timer_(new QTimer(this))
 {
   box_->setObjectName("progress");
   cancel_->setObjectName("cancelProgress");
@@ -19,9 +20,7 @@ ProgressReporter::ProgressReporter(QStatusBar* bar, QObject* parent)
   layout->setContentsMargins(0, 0, 0, 0);
   layout->addWidget(label_);
   // No fraction is known of a read or a bake: the bar says only that it runs.
-  bar_->setRange(0, 0);
   bar_->setMaximumWidth(120);
-  bar_->setTextVisible(false);
   layout->addWidget(bar_);
   cancel_->setText(tr("Cancel"));
   cancel_->setToolTip(tr("Stop this task; the scene stays as it is"));

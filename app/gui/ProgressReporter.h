@@ -10,7 +10,6 @@
 #include <map>
 
 class QLabel;
-class QProgressBar;
 class QStatusBar;
 class QTimer;
 class QToolButton;
@@ -18,6 +17,8 @@ class QWidget;
 
 namespace aniso
 {
+class BusyBar;
+
 class ProgressReporter : public QObject
 {
   Q_OBJECT
@@ -60,7 +61,7 @@ private:
   std::map<QString, Task> tasks_;
   QWidget* box_;
   QLabel* label_;
-  QProgressBar* bar_;
+  BusyBar* bar_;
   QToolButton* cancel_;
   QTimer* timer_;
 };
