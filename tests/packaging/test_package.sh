@@ -120,11 +120,14 @@ for command in bake render thumbnail bench; do
     || fail "the man page has no section for $command"
 done
 
-# The completion completes a command and an option of render.
+# The completion completes a command, an option of render, the window's options after a mesh
+# and the values of --reference-view.
 completion="$root/usr/share/bash-completion/completions/aniso"
 replies=$(bash -c 'source "$1"; COMP_WORDS=(aniso thu); COMP_CWORD=1; _aniso; echo "${COMPREPLY[*]}";
-  COMP_WORDS=(aniso render --export-g); COMP_CWORD=2; _aniso; echo "${COMPREPLY[*]}"' _ "$completion")
-[ "$replies" == $'thumbnail\n--export-gltf' ] || fail "the completion replies '$replies'"
+  COMP_WORDS=(aniso render --export-g); COMP_CWORD=2; _aniso; echo "${COMPREPLY[*]}";
+  COMP_WORDS=(aniso part.obj --ref); COMP_CWORD=2; _aniso; echo "${COMPREPLY[*]}";
+  COMP_WORDS=(aniso part.obj --reference-view e); COMP_CWORD=3; _aniso; echo "${COMPREPLY[*]}"' _ "$completion")
+[ "$replies" == $'thumbnail\n--export-gltf\n--reference-view\nerror' ] || fail "the completion replies '$replies'"
 
 # The installed tree runs: a render and a thumbnail by the installed executable, which finds the
 # installed reader program (../libexec/aniso from bin/).
