@@ -168,7 +168,8 @@ int main(int argc, char** argv)
           std::vector<FrameTime> times;
           for (int f = 0; f < count; ++f)
           {
-            const std::vector<FrameTime> t = config.fresh ? session.render(1) : session.renderMore(1);
+            const std::vector<FrameTime> t =
+                config.fresh ? session.render(1) : session.renderMore(1);
             times.push_back(t.front());
           }
           return times;
@@ -252,16 +253,15 @@ int main(int argc, char** argv)
       const bool passDrawn = column(&FrameStages::scene) > 0.0;
       if (!passDrawn)
       {
-        std::printf("| %s | - | - | - | - | - | %.1f | %.1f |\n",
-                    configurations[c].name.c_str(), median(rest) * 1e3,
-                    column(&FrameStages::frame));
+        std::printf("| %s | - | - | - | - | - | %.1f | %.1f |\n", configurations[c].name.c_str(),
+                    median(rest) * 1e3, column(&FrameStages::frame));
         continue;
       }
       std::printf("| %s | %.1f | %.1f | %.1f | %.1f | %.1f | %.1f | %.1f |\n",
                   configurations[c].name.c_str(), column(&FrameStages::prepare),
                   column(&FrameStages::clear), column(&FrameStages::scene),
-                  column(&FrameStages::accumulate),
-                  column(&FrameStages::present), median(rest) * 1e3, column(&FrameStages::frame));
+                  column(&FrameStages::accumulate), column(&FrameStages::present),
+                  median(rest) * 1e3, column(&FrameStages::frame));
     }
     std::printf("\nRenderer: %s\n", full.rendererName().c_str());
   }

@@ -90,7 +90,8 @@ private slots:
     // often.
     if (qtPaints > 0)
     {
-      QVERIFY2(paints * 3 < qtPaints, qPrintable(QString("%1 against %2").arg(paints).arg(qtPaints)));
+      QVERIFY2(paints * 3 < qtPaints,
+               qPrintable(QString("%1 against %2").arg(paints).arg(qtPaints)));
     }
 
     // Hidden: no timer runs, no step is taken.
