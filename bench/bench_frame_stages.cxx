@@ -2,7 +2,8 @@
 // scene (issue 17): the built-in torus from azimuth 30, elevation 35 (the application's default
 // view), n_u = 1000, n_v = 50, under the built-in studio, at 800x600.
 //
-// Configurations, each drawn in every round, one after the other in the same window:
+// Configurations, each drawn in every round, one after the other, in a window of 800x600 or, for
+// the half-resolution ones, of 400x300:
 //   ours N=16       the interactive setting (MaterialSettings' defaults: exact, filtered, LUT,
 //                   16 samples), frames accumulating as a still view's do;
 //   ours N=4, N=1   fewer samples, the same way;
@@ -11,7 +12,7 @@
 //   VTK PBR (pass)  VTK's physically based anisotropy (image-based lighting of the same
 //                   environment) drawn through the accumulation pass, as `aniso bench` draws it;
 //   VTK PBR         the same drawn by VTK's own passes (VTK's frame as VTK draws it): the
-//                   baseline of the goals.
+//                   baseline of the goals, and again at 400x300.
 // In each round every configuration draws a frame to warm up, then F timed frames (the median
 // kept), then F frames with each stage of the accumulation pass waited for and timed (FrameStages:
 // the medians of each stage; "VTK" is the timed frame less the pass's stages: VTK's render steps
