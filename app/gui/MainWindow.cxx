@@ -135,6 +135,32 @@ MainWindow::MainWindow(QWidget* parent)
   addDockWidget(Qt::LeftDockWidgetArea, mapsDock_);
   addDockWidget(Qt::RightDockWidgetArea, environmentDock_);
   addDockWidget(Qt::RightDockWidgetArea, lutDock_);
+  // While LEADR or the microstructure is the model, the Lights dock shows its parameters, whose
+  // minimum height pushes the bottom strip taller; Qt's dock layout keeps that height when the
+  // panel hides again, and the view would stay that much shorter. Back to a model without them,
+  // the strip gets the height it had before (once the layout has hidden the panel). Connected
+  // before the dock exists, so that its height is read before the dock shows the panel.
+  connect(&model_, &SceneModel::valueChanged, this,
+          [this](const QString& key)
+          {
+            if (key != "model" || !lightsDock_)
+            {
+              return;
+            }
+            const bool panel = !surfaceModelKeys(model_.text("model")).empty();
+            if (panel && lightsDockHeight_ == 0)
+            {
+              lightsDockHeight_ = lightsDock_->height();
+            }
+            else if (!panel && lightsDockHeight_ > 0)
+            {
+              const int height = lightsDockHeight_;
+              lightsDockHeight_ = 0;
+              QTimer::singleShot(0, this,
+                                 [this, height]
+                                 { resizeDocks({lightsDock_}, {height}, Qt::Vertical); });
+            }
+          });
   lightsDock_ = new LightsDock(&editor_, this);
   sceneDock_ = new SceneDock(&editor_, this);
   addDockWidget(Qt::RightDockWidgetArea, sceneDock_);

@@ -229,7 +229,8 @@ private:
   MapsDock* mapsDock_;
   EnvironmentDock* environmentDock_;
   QDockWidget* lutDock_;
-  LightsDock* lightsDock_;
+  LightsDock* lightsDock_ = nullptr;
+  int lightsDockHeight_ = 0; // before a model's parameters showed in it (0: none shows)
   SceneDock* sceneDock_;
   LitModelView* litView_ = nullptr;
   SurfaceModelView* surfaceView_ = nullptr;

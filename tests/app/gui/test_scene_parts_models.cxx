@@ -214,6 +214,7 @@ private slots:
     QCOMPARE(litRight->GetMapper()->GetInputDataObject(0, 0),
              static_cast<vtkDataObject*>(view->partSurfaceToDraw(1)));
     QTRY_VERIFY_WITH_TIMEOUT(settled(window), 60000);
+    const int wardRows = rw->GetSize()[1];
     const auto litLeftBefore = meanAround(rw, leftAt());
     const auto litRightBefore = meanAround(rw, rightAt());
     QVERIFY2(rightIsGold(litLeftBefore, litRightBefore),
@@ -303,9 +304,11 @@ private slots:
     QCOMPARE(lit->partActor(0), litLeft);
     QCOMPARE(lit->partActor(1), litRight);
     QTRY_VERIFY_WITH_TIMEOUT(settled(window), 60000);
-    // Measured again here: the steps since the first measurement (LEADR, the comparison window)
-    // left the view another size (about 420 rows then, 345 now), and a part's mean around a
-    // point moves by about half a level with the scale it is drawn at.
+    // LEADR's parameters in the Lights dock made the bottom strip taller; back under Ward the
+    // strip has its height again, and the view its rows (it stayed 75 rows shorter before).
+    QTRY_COMPARE_WITH_TIMEOUT(rw->GetSize()[1], wardRows, 5000);
+    // The baseline of the edit below is taken right before it: a part's mean around a point
+    // moves by about half a level with the scale it is drawn at.
     const auto litLeftBeforeEdit = meanAround(rw, leftAt());
     const auto litRightBeforeEdit = meanAround(rw, rightAt());
     const aniso::ParameterValue leftAlbedo = model->partMaterial(0).value("albedo");
