@@ -156,9 +156,8 @@ MainWindow::MainWindow(QWidget* parent)
             {
               const int height = lightsDockHeight_;
               lightsDockHeight_ = 0;
-              QTimer::singleShot(0, this,
-                                 [this, height]
-                                 { resizeDocks({lightsDock_}, {height}, Qt::Vertical); });
+              QTimer::singleShot(
+                  0, this, [this, height] { resizeDocks({lightsDock_}, {height}, Qt::Vertical); });
             }
           });
   lightsDock_ = new LightsDock(&editor_, this);
