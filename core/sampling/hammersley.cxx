@@ -61,6 +61,40 @@ glm::dvec2 cranleyPatterson(const glm::dvec2& p, const glm::dvec2& shift)
   return {wrapUnit(p.x + shift.x), wrapUnit(p.y + shift.y)};
 }
 
+uint32_t sobol2Bits(uint32_t i)
+{
+  uint32_t result = 0;
+  for (uint32_t v = 0x80000000u; i != 0; i >>= 1, v ^= v >> 1)
+  {
+    if (i & 1u)
+    {
+      result ^= v;
+    }
+  }
+  return result;
+}
+
+glm::dvec2 progressivePoint(uint32_t frame, uint32_t i, uint32_t count)
+{
+  if (frame <= 1)
+  {
+    return cranleyPatterson(hammersley(i, count), frameShift(frame));
+  }
+  if (i >= count)
+  {
+    throw errorAbout("progressive point", "index " + std::to_string(i) +
+                                              " is not below the point count " +
+                                              std::to_string(count));
+  }
+  uint32_t log2Block = 0;
+  while (log2Block < 31 && (1u << log2Block) < count)
+  {
+    ++log2Block;
+  }
+  const uint32_t index = (frame << log2Block) | (i ^ (i >> 1));
+  return {static_cast<double>(sobol2Bits(index)) * 0x1.0p-32, radicalInverse2(index)};
+}
+
 glm::dvec2 frameShift(uint32_t frame)
 {
   const uint64_t k = frame;

@@ -16,6 +16,21 @@ glm::dvec2 hammersley(uint32_t i, uint32_t n);
 glm::dvec2 cranleyPatterson(const glm::dvec2& p, const glm::dvec2& shift);
 
 // Shift of progressive frame k: frame 0 is (0, 0) (the unrotated set); later frames follow
-// the R2 low-discrepancy sequence, so the union of frames stays well stratified.
+// the R2 low-discrepancy sequence. The microstructure's frames draw their seeds from it.
 glm::dvec2 frameShift(uint32_t frame);
+
+// Sobol's second dimension of index i (primitive polynomial x + 1: direction numbers
+// v_1 = 1/2, v_j = v_{j-1} XOR v_{j-1} / 2), as the bits of a 32-bit binary fraction.
+uint32_t sobol2Bits(uint32_t i);
+
+// Point i of progressive frame k's set of COUNT points, what the environment material's
+// shader samples with (docs/METHOD.md, "Progressive frames"). Frames 0 and 1 are the Hammersley
+// set, frame 1 rotated by frameShift(1) (the best single frame, and the best pair measured);
+// frame k >= 2 is the block [k B, k B + COUNT) of the (0,2)-sequence (sobol2(j),
+// radicalInverse2(j)), B = COUNT rounded up to a power of two, point i its index k B + (i XOR
+// i / 2) (Gray-code order: the shader steps from point to point by one XOR). For a COUNT of
+// 2^m each frame k >= 2 is a (0, m, 2)-net and frames [2^a, 2^(a+1)), a >= 1, together one
+// (0, m + a, 2)-net: the frames fill the square as one stratified set, where rotating one set
+// anew each frame only averages copies of it. Requires i < COUNT; k B counts modulo 2^32.
+glm::dvec2 progressivePoint(uint32_t frame, uint32_t i, uint32_t count);
 } // namespace aniso

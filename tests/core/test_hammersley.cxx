@@ -210,3 +210,145 @@ TEST(Hammersley, RotatedFramesStayStratified)
     }
   }
 }
+
+namespace
+{
+// Whether POINTS (2^t of them) form a (0, t, 2)-net in base 2: every elementary interval
+// [x / 2^p, (x + 1) / 2^p) x [y / 2^q, (y + 1) / 2^q) with p + q = t holds exactly one point.
+bool isZeroNet(const std::vector<glm::dvec2>& points, int t)
+{
+  if (points.size() != (std::size_t(1) << t))
+  {
+    return false;
+  }
+  for (int p = 0; p <= t; ++p)
+  {
+    const int q = t - p;
+    std::vector<int> count(points.size(), 0);
+    for (const glm::dvec2& point : points)
+    {
+      const auto x = static_cast<std::size_t>(std::floor(point.x * double(1u << p)));
+      const auto y = static_cast<std::size_t>(std::floor(point.y * double(1u << q)));
+      ++count[(x << q) | y];
+    }
+    for (int c : count)
+    {
+      if (c != 1)
+      {
+        return false;
+      }
+    }
+  }
+  return true;
+}
+} // namespace
+
+// Sobol's second dimension, restated from its definition: direction number v_j is the binary
+// fraction of the j-th row of Pascal's triangle modulo 2 (v_1 = 0.1, v_2 = 0.11, v_3 = 0.101,
+// v_4 = 0.1111), and point i XORs the v_j of i's set bits. Its first 2^m values are a
+// permutation of j / 2^m.
+TEST(ProgressivePoints, SobolSecondDimension)
+{
+  EXPECT_EQ(aniso::sobol2Bits(0), 0u);
+  EXPECT_EQ(aniso::sobol2Bits(1), 0x80000000u); // 0.1
+  EXPECT_EQ(aniso::sobol2Bits(2), 0xC0000000u); // 0.11
+  EXPECT_EQ(aniso::sobol2Bits(3), 0x40000000u); // 0.1 xor 0.11 = 0.01
+  EXPECT_EQ(aniso::sobol2Bits(4), 0xA0000000u); // 0.101
+  EXPECT_EQ(aniso::sobol2Bits(8), 0xF0000000u); // 0.1111
+  for (uint32_t m = 1; m <= 10; ++m)
+  {
+    std::set<uint32_t> values;
+    for (uint32_t i = 0; i < (1u << m); ++i)
+    {
+      const uint32_t bits = aniso::sobol2Bits(i);
+      EXPECT_EQ(bits & ((1u << (32 - m)) - 1u), 0u);
+      values.insert(bits >> (32 - m));
+    }
+    EXPECT_EQ(values.size(), std::size_t(1) << m);
+  }
+}
+
+// Frames 0 and 1 are the Hammersley set, rotated by frameShift(1) in frame 1; each later frame
+// of 2^m points is a (0, m, 2)-net, and the frames [2^a, 2^(a+1)), a >= 1, together are one
+// (0, m + a, 2)-net: the frames stratify as one set. Rotating one set anew each frame
+// (frameShift) does not: eight rotated copies of a 16-point set are not a 128-point net.
+TEST(ProgressivePoints, FramesFormNets)
+{
+  for (uint32_t count : {1u, 4u, 16u, 64u})
+  {
+    for (uint32_t i = 0; i < count; ++i)
+    {
+      EXPECT_EQ(aniso::progressivePoint(0, i, count), aniso::hammersley(i, count));
+      EXPECT_EQ(aniso::progressivePoint(1, i, count),
+                aniso::cranleyPatterson(aniso::hammersley(i, count), aniso::frameShift(1)));
+    }
+    const int m = static_cast<int>(std::lround(std::log2(count)));
+    for (uint32_t frame = 2; frame < 40; ++frame)
+    {
+      std::vector<glm::dvec2> points;
+      for (uint32_t i = 0; i < count; ++i)
+      {
+        points.push_back(aniso::progressivePoint(frame, i, count));
+      }
+      EXPECT_TRUE(isZeroNet(points, m)) << count << " points, frame " << frame;
+    }
+    for (int a = 1; a <= 5; ++a)
+    {
+      std::vector<glm::dvec2> points;
+      for (uint32_t frame = 1u << a; frame < (2u << a); ++frame)
+      {
+        for (uint32_t i = 0; i < count; ++i)
+        {
+          points.push_back(aniso::progressivePoint(frame, i, count));
+        }
+      }
+      EXPECT_TRUE(isZeroNet(points, m + a)) << count << " points, frames from " << (1 << a);
+    }
+  }
+  std::vector<glm::dvec2> shifted;
+  for (uint32_t frame = 8; frame < 16; ++frame)
+  {
+    for (uint32_t i = 0; i < 16; ++i)
+    {
+      shifted.push_back(
+          aniso::cranleyPatterson(aniso::hammersley(i, 16), aniso::frameShift(frame)));
+    }
+  }
+  EXPECT_FALSE(isZeroNet(shifted, 7));
+  // The Gray-code order visits each block's points: frame 2's 16 points are the sequence's
+  // indices 32 to 47.
+  std::set<std::pair<double, double>> gray;
+  std::set<std::pair<double, double>> natural;
+  for (uint32_t i = 0; i < 16; ++i)
+  {
+    const glm::dvec2 p = aniso::progressivePoint(2, i, 16);
+    gray.emplace(p.x, p.y);
+    natural.emplace(double(aniso::sobol2Bits(32 + i)) * 0x1.0p-32, aniso::radicalInverse2(32 + i));
+  }
+  EXPECT_EQ(gray, natural);
+}
+
+// A count that is not a power of two takes COUNT points (the first in Gray-code order) of each
+// block of the next power of two: points stay in [0, 1)^2, no two frames from frame 2 on share
+// a point, and an index past the count is refused.
+TEST(ProgressivePoints, AnyCount)
+{
+  std::set<std::pair<double, double>> seen;
+  for (uint32_t frame = 0; frame < 32; ++frame)
+  {
+    for (uint32_t i = 0; i < 24; ++i)
+    {
+      const glm::dvec2 p = aniso::progressivePoint(frame, i, 24);
+      ASSERT_GE(p.x, 0.0);
+      ASSERT_LT(p.x, 1.0);
+      ASSERT_GE(p.y, 0.0);
+      ASSERT_LT(p.y, 1.0);
+      if (frame > 1)
+      {
+        EXPECT_TRUE(seen.emplace(p.x, p.y).second) << "frame " << frame << " point " << i;
+      }
+    }
+  }
+  EXPECT_THROW(aniso::progressivePoint(3, 24, 24), aniso::Error);
+  EXPECT_THROW(aniso::progressivePoint(0, 5, 5), aniso::Error);
+}

@@ -473,17 +473,19 @@ public:
     setVector(program, "anisoF0", settings.f0);
     setVector(program, "anisoAlbedo", settings.albedo);
     program->SetUniformi("anisoSampleCount", settings.samples);
-    double shift[2] = {0.0, 0.0};
+    // The progressive frame picks the sample set (core/sampling/hammersley.h progressivePoint).
     vtkInformation* info = hook.renderer()->GetInformation();
+    const int frameIndex = info && info->Has(vtkAnisoAccumulationPass::FRAME_INDEX())
+                               ? info->Get(vtkAnisoAccumulationPass::FRAME_INDEX())
+                               : 0;
+    program->SetUniformi("anisoFrameIndex", frameIndex);
+    double shift[2] = {0.0, 0.0};
     if (info && info->Has(vtkAnisoAccumulationPass::FRAME_SHIFT()))
     {
       info->Get(vtkAnisoAccumulationPass::FRAME_SHIFT(), shift);
     }
     const float frameShift[2] = {static_cast<float>(shift[0]), static_cast<float>(shift[1])};
     program->SetUniform2f("anisoFrameShift", frameShift);
-    const int frameIndex = info && info->Has(vtkAnisoAccumulationPass::FRAME_INDEX())
-                               ? info->Get(vtkAnisoAccumulationPass::FRAME_INDEX())
-                               : 0;
     program->SetUniformf("anisoLog2FrameCount", static_cast<float>(std::log2(frameIndex + 1.0)));
 
     // The environment: cube with seamless filtering across faces (VTK enables it only for
