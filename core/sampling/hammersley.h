@@ -26,6 +26,8 @@ uint32_t sobol2Bits(uint32_t i);
 // Point i of progressive frame k's set of COUNT points, what the environment material's
 // shader samples with (docs/METHOD.md, "Progressive frames"). Frames 0 and 1 are the Hammersley
 // set, frame 1 rotated by frameShift(1) (the best single frame, and the best pair measured);
+// frames of one point are all rotated so, frame k by frameShift(k) (the R2 sequence, which
+// converged to a lower error than the sequence below at one sample a frame); from COUNT 2 on,
 // frame k >= 2 is the block [k B, k B + COUNT) of the (0,2)-sequence (sobol2(j),
 // radicalInverse2(j)), B = COUNT rounded up to a power of two, point i its index k B + (i XOR
 // i / 2) (Gray-code order: the shader steps from point to point by one XOR). For a COUNT of
