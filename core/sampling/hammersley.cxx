@@ -76,7 +76,7 @@ uint32_t sobol2Bits(uint32_t i)
 
 glm::dvec2 progressivePoint(uint32_t frame, uint32_t i, uint32_t count)
 {
-  if (frame <= 1 || count == 1)
+  if (frame <= 1 || count == 1 || count > kMaxSequenceCount)
   {
     return cranleyPatterson(hammersley(i, count), frameShift(frame));
   }

@@ -269,7 +269,8 @@ TEST(ProgressivePoints, SobolSecondDimension)
 }
 
 // Frames 0 and 1 are the Hammersley set, rotated by frameShift(1) in frame 1 (frames of one
-// point: all rotated by frameShift); each later frame of 2^m >= 2 points is a (0, m, 2)-net, and the frames [2^a, 2^(a+1)), a >= 1, together are one
+// point or of more than 16: all rotated by frameShift); each later frame of 2^m points, from 2
+// to 16, is a (0, m, 2)-net, and the frames [2^a, 2^(a+1)), a >= 1, together are one
 // (0, m + a, 2)-net: the frames stratify as one set. Rotating one set anew each frame
 // (frameShift) does not: eight rotated copies of a 16-point set are not a 128-point net.
 TEST(ProgressivePoints, FramesFormNets)
@@ -277,8 +278,13 @@ TEST(ProgressivePoints, FramesFormNets)
   for (uint32_t frame = 0; frame < 100; ++frame)
   {
     EXPECT_EQ(aniso::progressivePoint(frame, 0, 1), aniso::frameShift(frame));
+    for (uint32_t i = 0; i < 32; ++i)
+    {
+      EXPECT_EQ(aniso::progressivePoint(frame, i, 32),
+                aniso::cranleyPatterson(aniso::hammersley(i, 32), aniso::frameShift(frame)));
+    }
   }
-  for (uint32_t count : {2u, 4u, 16u, 64u})
+  for (uint32_t count : {2u, 4u, 8u, 16u})
   {
     for (uint32_t i = 0; i < count; ++i)
     {

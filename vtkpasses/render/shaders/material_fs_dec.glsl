@@ -205,8 +205,8 @@ vec2 anisoPixelShift()
 }
 
 // The progressive frames' sample sets (core/sampling/hammersley.h progressivePoint): frames 0
-// and 1 the Hammersley set, rotated by anisoFrameShift in frame 1 (every frame of one sample);
-// frame k >= 2 the block
+// and 1 the Hammersley set, rotated by anisoFrameShift in frame 1 (every frame of one sample or
+// of more than 16); frame k >= 2 the block
 // [k B, k B + count) of the (0,2)-sequence (sobol2(j), radicalInverse2(j)), B = count rounded
 // up to a power of two, its points in Gray-code order: point i is index k B + (i XOR i/2), and
 // each next point differs from the one before by one direction number of each dimension (the
@@ -246,7 +246,7 @@ uvec2 anisoGrayStep(int i)
 vec2 anisoSamplePoint(int i, int count, uvec2 bits, vec2 shift)
 {
   vec2 p;
-  if (anisoFrameIndex <= 1 || count == 1)
+  if (anisoFrameIndex <= 1 || count == 1 || count > 16) // 16: kMaxSequenceCount
   {
     p = fract(vec2(float(i) / float(count), anisoRadicalInverse2(uint(i))) + anisoFrameShift);
   }
