@@ -74,6 +74,30 @@ uint32_t sobol2Bits(uint32_t i)
   return result;
 }
 
+namespace
+{
+uint32_t log2Block(uint32_t count)
+{
+  uint32_t log2 = 0;
+  while (log2 < 31 && (1u << log2) < count)
+  {
+    ++log2;
+  }
+  return log2;
+}
+
+uint32_t reverseBits(uint32_t i)
+{
+  return static_cast<uint32_t>(radicalInverse2(i) * 0x1.0p32);
+}
+} // namespace
+
+SequenceBlock sequenceBlock(uint32_t frame, uint32_t count)
+{
+  const uint32_t index = frame << log2Block(count);
+  return {sobol2Bits(index), reverseBits(index)};
+}
+
 glm::dvec2 progressivePoint(uint32_t frame, uint32_t i, uint32_t count)
 {
   if (frame <= 1 || count == 1 || count > kMaxSequenceCount)
@@ -86,12 +110,7 @@ glm::dvec2 progressivePoint(uint32_t frame, uint32_t i, uint32_t count)
                                               " is not below the point count " +
                                               std::to_string(count));
   }
-  uint32_t log2Block = 0;
-  while (log2Block < 31 && (1u << log2Block) < count)
-  {
-    ++log2Block;
-  }
-  const uint32_t index = (frame << log2Block) | (i ^ (i >> 1));
+  const uint32_t index = (frame << log2Block(count)) | i;
   return {static_cast<double>(sobol2Bits(index)) * 0x1.0p-32, radicalInverse2(index)};
 }
 

@@ -325,21 +325,17 @@ TEST(ProgressivePoints, FramesFormNets)
     }
   }
   EXPECT_FALSE(isZeroNet(shifted, 7));
-  // The Gray-code order visits each block's points: frame 2's 16 points are the sequence's
-  // indices 32 to 47.
-  std::set<std::pair<double, double>> gray;
-  std::set<std::pair<double, double>> natural;
+  // Frame 2's 16 points are the sequence's indices 32 to 47.
   for (uint32_t i = 0; i < 16; ++i)
   {
-    const glm::dvec2 p = aniso::progressivePoint(2, i, 16);
-    gray.emplace(p.x, p.y);
-    natural.emplace(double(aniso::sobol2Bits(32 + i)) * 0x1.0p-32, aniso::radicalInverse2(32 + i));
+    EXPECT_EQ(
+        aniso::progressivePoint(2, i, 16),
+        glm::dvec2(double(aniso::sobol2Bits(32 + i)) * 0x1.0p-32, aniso::radicalInverse2(32 + i)));
   }
-  EXPECT_EQ(gray, natural);
 }
 
-// A count that is not a power of two takes COUNT points (the first in Gray-code order) of each
-// block of the next power of two: points stay in [0, 1)^2, no two frames from frame 2 on share
+// A count that is not a power of two takes the first COUNT points of each block of the next
+// power of two: points stay in [0, 1)^2, no two frames from frame 2 on share
 // a point, and an index past the count is refused.
 TEST(ProgressivePoints, AnyCount)
 {
@@ -361,4 +357,25 @@ TEST(ProgressivePoints, AnyCount)
   }
   EXPECT_THROW(aniso::progressivePoint(3, 24, 24), aniso::Error);
   EXPECT_THROW(aniso::progressivePoint(0, 5, 5), aniso::Error);
+}
+
+// The shader's way to the sequence's points: point k B + i is point i XOR the block's first
+// point, in both coordinates, for every count the shader takes the sequence for.
+TEST(ProgressivePoints, BlockXorPointGivesThePoint)
+{
+  for (uint32_t count = 2; count <= aniso::kMaxSequenceCount; ++count)
+  {
+    for (uint32_t frame = 2; frame < 70; ++frame)
+    {
+      const aniso::SequenceBlock block = aniso::sequenceBlock(frame, count);
+      for (uint32_t i = 0; i < count; ++i)
+      {
+        const uint32_t x = block.x ^ aniso::sobol2Bits(i);
+        const uint32_t y = block.y ^ static_cast<uint32_t>(aniso::radicalInverse2(i) * 0x1.0p32);
+        EXPECT_EQ(aniso::progressivePoint(frame, i, count),
+                  glm::dvec2(double(x) * 0x1.0p-32, double(y) * 0x1.0p-32))
+            << count << " points, frame " << frame << ", point " << i;
+      }
+    }
+  }
 }

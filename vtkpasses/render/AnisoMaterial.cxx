@@ -4,6 +4,7 @@
 #include "core/fields/color_map.h"
 #include "core/lut/lut.h"
 #include "core/lut/lut_cache.h"
+#include "core/sampling/hammersley.h"
 #include "vtkpasses/render/EnvironmentLighting.h"
 #include "vtkpasses/render/FieldValues.h"
 #include "vtkpasses/render/RendererMatrices.h"
@@ -473,12 +474,15 @@ public:
     setVector(program, "anisoF0", settings.f0);
     setVector(program, "anisoAlbedo", settings.albedo);
     program->SetUniformi("anisoSampleCount", settings.samples);
-    // The progressive frame picks the sample set (core/sampling/hammersley.h progressivePoint).
+    // The progressive frame picks the sample set (core/sampling/hammersley.h progressivePoint):
+    // the shader rotates the Hammersley set by the frame's shift, or, for counts up to
+    // kMaxSequenceCount, takes the frame's own points from here (from frame 2 on, a block of a
+    // (0,2)-sequence; reading them costs less than computing them per sample).
     vtkInformation* info = hook.renderer()->GetInformation();
     const int frameIndex = info && info->Has(vtkAnisoAccumulationPass::FRAME_INDEX())
                                ? info->Get(vtkAnisoAccumulationPass::FRAME_INDEX())
                                : 0;
-    program->SetUniformi("anisoFrameIndex", frameIndex);
+    program->SetUniformf("anisoLog2FrameCount", static_cast<float>(std::log2(frameIndex + 1.0)));
     double shift[2] = {0.0, 0.0};
     if (info && info->Has(vtkAnisoAccumulationPass::FRAME_SHIFT()))
     {
@@ -486,6 +490,16 @@ public:
     }
     const float frameShift[2] = {static_cast<float>(shift[0]), static_cast<float>(shift[1])};
     program->SetUniform2f("anisoFrameShift", frameShift);
+    // From frame 2 on, the frame's block of the (0,2)-sequence: the bits of its first point.
+    const int count = settings.samples;
+    const bool sequence = frameIndex >= 2 && count >= 2 &&
+                          count <= static_cast<int>(kMaxSequenceCount);
+    const SequenceBlock block =
+        sequence ? sequenceBlock(static_cast<uint32_t>(frameIndex), static_cast<uint32_t>(count))
+                 : SequenceBlock{};
+    const int blockBits[2] = {static_cast<int>(block.x), static_cast<int>(block.y)};
+    program->SetUniform2i("anisoSequenceBlock", blockBits);
+    program->SetUniformi("anisoSequenceCount", sequence ? count : 0);
     program->SetUniformf("anisoLog2FrameCount", static_cast<float>(std::log2(frameIndex + 1.0)));
 
     // The environment: cube with seamless filtering across faces (VTK enables it only for

@@ -21,8 +21,13 @@ uniform mat4 anisoClipToWorld;       // inverse of the camera's world-to-clip tr
 uniform vec3 anisoF0;                // Schlick reflectance at normal incidence, linear RGB
 uniform vec3 anisoAlbedo;            // Lambert albedo, linear RGB
 uniform int anisoSampleCount;        // N, importance samples per fragment and frame
-uniform int anisoFrameIndex;         // k, the progressive frame (its sample set)
-uniform vec2 anisoFrameShift;        // frame 1's rotation of the Hammersley set
+uniform vec2 anisoFrameShift;        // this frame's rotation of the Hammersley set
+// From frame 2 on, sets of 2 to 16 (kMaxSequenceCount) points are a block of a (0,2)-sequence
+// (core/sampling/hammersley.h progressivePoint): N = anisoSequenceCount of them (0: the rotated
+// Hammersley set instead), point i the sequence's point i XOR anisoSequenceBlock, the bits of
+// the block's first point (as ints: the same bits).
+uniform int anisoSequenceCount;
+uniform ivec2 anisoSequenceBlock;
 uniform float anisoLog2FrameCount;   // log2(k + 1) for progressive frame k
 uniform mat3 anisoWorldToEnvironment; // undoes the environment rotation about Z
 uniform samplerCube anisoEnvironment;
@@ -158,9 +163,8 @@ vec2 anisoFieldLobe(vec2 n, float t)
 #endif
 #endif
 
-// The bits of i in reverse order: the van der Corput radical inverse in base 2 as a 32-bit
-// binary fraction.
-uint anisoReverseBits(uint bits)
+// Van der Corput radical inverse in base 2 (bit reversal), as a 32-bit binary fraction.
+uint anisoRadicalInverse2Bits(uint bits)
 {
   bits = (bits << 16u) | (bits >> 16u);
   bits = ((bits & 0x55555555u) << 1u) | ((bits & 0xAAAAAAAAu) >> 1u);
@@ -170,25 +174,9 @@ uint anisoReverseBits(uint bits)
   return bits;
 }
 
-// Van der Corput radical inverse in base 2 (bit reversal).
 float anisoRadicalInverse2(uint bits)
 {
-  return float(anisoReverseBits(bits)) * 2.3283064365386963e-10;
-}
-
-// Sobol's second dimension of i as a 32-bit binary fraction (core/sampling/hammersley.h's
-// sobol2Bits): XOR of the direction numbers v_1 = 1/2, v_j = v_(j-1) XOR v_(j-1)/2 of i's bits.
-uint anisoSobol2Bits(uint i)
-{
-  uint result = 0u;
-  for (uint v = 0x80000000u; i != 0u; i >>= 1u, v ^= v >> 1u)
-  {
-    if ((i & 1u) != 0u)
-    {
-      result ^= v;
-    }
-  }
-  return result;
+  return float(anisoRadicalInverse2Bits(bits)) * 2.3283064365386963e-10;
 }
 
 // A per-pixel Cranley-Patterson shift (integer hash of the pixel): neighbouring pixels use
@@ -204,55 +192,29 @@ vec2 anisoPixelShift()
   return anisoPixelDecorrelation * vec2(float(h & 0xffffu), float(h >> 16u)) * (1.0 / 65536.0);
 }
 
-// The progressive frames' sample sets (core/sampling/hammersley.h progressivePoint): frames 0
-// and 1 the Hammersley set, rotated by anisoFrameShift in frame 1 (every frame of one sample or
-// of more than 16); frame k >= 2 the block
-// [k B, k B + count) of the (0,2)-sequence (sobol2(j), radicalInverse2(j)), B = count rounded
-// up to a power of two, its points in Gray-code order: point i is index k B + (i XOR i/2), and
-// each next point differs from the one before by one direction number of each dimension (the
-// sequence is linear in the bits of its index). anisoFrameBlock gives point 0 of the frame's
-// block, anisoSamplePoint the point from it, anisoGrayStep what to XOR into it after point i.
-uvec2 anisoFrameBlock(int count)
+// Sobol's second dimension of i < 16 as a 32-bit binary fraction: the XOR of the direction
+// numbers 0.1, 0.11, 0.101, 0.1111 of i's bits (core/sampling/hammersley.h sobol2Bits).
+uint anisoSobol2Bits16(uint i)
 {
-  uint log2Block = 0u;
-  while (log2Block < 31u && (1 << log2Block) < count)
-  {
-    ++log2Block;
-  }
-  uint index = uint(anisoFrameIndex) << log2Block;
-  return uvec2(anisoSobol2Bits(index), anisoReverseBits(index));
-}
-
-const uint anisoSobol2Directions[32] = uint[32](0x80000000u, 0xC0000000u, 0xA0000000u,
-  0xF0000000u, 0x88000000u, 0xCC000000u, 0xAA000000u, 0xFF000000u, 0x80800000u, 0xC0C00000u,
-  0xA0A00000u, 0xF0F00000u, 0x88880000u, 0xCCCC0000u, 0xAAAA0000u, 0xFFFF0000u, 0x80008000u,
-  0xC000C000u, 0xA000A000u, 0xF000F000u, 0x88008800u, 0xCC00CC00u, 0xAA00AA00u, 0xFF00FF00u,
-  0x80808080u, 0xC0C0C0C0u, 0xA0A0A0A0u, 0xF0F0F0F0u, 0x88888888u, 0xCCCCCCCCu, 0xAAAAAAAAu,
-  0xFFFFFFFFu);
-
-// The position of the one set bit of a power of two, by its de Bruijn product.
-const int anisoDeBruijnPositions[32] = int[32](0, 1, 28, 2, 29, 14, 24, 3, 30, 22, 20, 15, 25,
-  17, 4, 8, 31, 27, 13, 23, 21, 19, 16, 7, 26, 12, 18, 6, 11, 5, 10, 9);
-
-uvec2 anisoGrayStep(int i)
-{
-  uint flipped = uint(i + 1) & ~uint(i); // the bit in which Gray codes i and i + 1 differ
-  int bit = anisoDeBruijnPositions[(flipped * 0x077CB531u) >> 27u];
-  return uvec2(anisoSobol2Directions[bit], 0x80000000u >> uint(bit));
+  return (0x80000000u * (i & 1u)) ^ (0xC0000000u * ((i >> 1u) & 1u)) ^
+         (0xA0000000u * ((i >> 2u) & 1u)) ^ (0xF0000000u * ((i >> 3u) & 1u));
 }
 
 // Point i of this frame's set of count points, rotated by the pixel's shift and kept strictly
-// below 1. BITS: the sequence's point (frames from 2 on), its bits cut to float's 24.
-vec2 anisoSamplePoint(int i, int count, uvec2 bits, vec2 shift)
+// below 1: from frame 2 on, for 2 to 16 points, the frame's block of the (0,2)-sequence, else
+// the Hammersley set rotated by the frame's shift.
+vec2 anisoSamplePoint(int i, int count, vec2 shift)
 {
   vec2 p;
-  if (anisoFrameIndex <= 1 || count == 1 || count > 16) // 16: kMaxSequenceCount
+  if (count == anisoSequenceCount)
   {
-    p = fract(vec2(float(i) / float(count), anisoRadicalInverse2(uint(i))) + anisoFrameShift);
+    uvec2 bits = uvec2(anisoSequenceBlock) ^
+      uvec2(anisoSobol2Bits16(uint(i)), anisoRadicalInverse2Bits(uint(i)));
+    p = vec2(bits >> 8u) * (1.0 / 16777216.0);
   }
   else
   {
-    p = vec2(bits >> 8u) * (1.0 / 16777216.0);
+    p = fract(vec2(float(i) / float(count), anisoRadicalInverse2(uint(i))) + anisoFrameShift);
   }
   return min(fract(p + shift), vec2(0.99999994));
 }
@@ -486,7 +448,6 @@ vec3 anisoSpecular(vec3 t, vec3 b, vec3 n, vec3 v, vec3 f0)
   int count = max(anisoSampleCount, 1);
   float nDotV = dot(n, v);
   vec2 shift = anisoPixelShift();
-  uvec2 sequence = anisoFrameBlock(count);
   vec3 sum = vec3(0.0);
 #ifdef ANISO_METHOD_SPLIT_SUM
   float weight = 0.0;
@@ -498,8 +459,7 @@ vec3 anisoSpecular(vec3 t, vec3 b, vec3 n, vec3 v, vec3 f0)
 #endif
   for (int i = 0; i < count; ++i)
   {
-    vec2 xi = anisoSamplePoint(i, count, sequence, shift);
-    sequence ^= anisoGrayStep(i);
+    vec2 xi = anisoSamplePoint(i, count, shift);
 #ifdef ANISO_ENVIRONMENT_MIS
     vec3 l;
     vec3 h;
@@ -577,12 +537,10 @@ vec3 anisoSpecular(vec3 t, vec3 b, vec3 n, vec3 v, vec3 f0)
   // lobe's sum is divided by N).
   mat3 sourceToWorld = transpose(anisoWorldToEnvironment);
   int sourceCount = max(anisoSourceSampleCount, 0);
-  uvec2 sourceSequence = anisoFrameBlock(sourceCount);
   for (int j = 0; j < sourceCount; ++j)
   {
     vec4 ls = anisoSampleTables(anisoSourceCdf, anisoSourceGuide, anisoSourcePdf, anisoSourceGrid,
-                                anisoSamplePoint(j, sourceCount, sourceSequence, shift));
-    sourceSequence ^= anisoGrayStep(j);
+                                anisoSamplePoint(j, sourceCount, shift));
     vec3 l = sourceToWorld * ls.xyz;
     float nDotL = dot(n, l);
     vec3 h = normalize(v + l);
