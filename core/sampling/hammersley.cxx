@@ -29,9 +29,8 @@ double wrapUnit(double x)
   // x just below an integer rounds up to 1 here; keep the largest value below 1 instead.
   return f < 1.0 ? f : kBelowOne;
 }
-} // namespace
 
-double radicalInverse2(uint32_t i)
+uint32_t reverseBits(uint32_t i)
 {
   uint32_t bits = i;
   bits = (bits << 16) | (bits >> 16);
@@ -39,7 +38,13 @@ double radicalInverse2(uint32_t i)
   bits = ((bits & 0x0F0F0F0Fu) << 4) | ((bits & 0xF0F0F0F0u) >> 4);
   bits = ((bits & 0x33333333u) << 2) | ((bits & 0xCCCCCCCCu) >> 2);
   bits = ((bits & 0x55555555u) << 1) | ((bits & 0xAAAAAAAAu) >> 1);
-  return static_cast<double>(bits) * 0x1.0p-32;
+  return bits;
+}
+} // namespace
+
+double radicalInverse2(uint32_t i)
+{
+  return static_cast<double>(reverseBits(i)) * 0x1.0p-32;
 }
 
 glm::dvec2 hammersley(uint32_t i, uint32_t n)
@@ -85,11 +90,6 @@ uint32_t log2Block(uint32_t count)
   }
   return log2;
 }
-
-uint32_t reverseBits(uint32_t i)
-{
-  return static_cast<uint32_t>(radicalInverse2(i) * 0x1.0p32);
-}
 } // namespace
 
 SequenceBlock sequenceBlock(uint32_t frame, uint32_t count)
@@ -98,9 +98,14 @@ SequenceBlock sequenceBlock(uint32_t frame, uint32_t count)
   return {sobol2Bits(index), reverseBits(index)};
 }
 
+bool takesSequence(uint32_t frame, uint32_t count)
+{
+  return frame >= 2 && count >= 2 && count <= kMaxSequenceCount;
+}
+
 glm::dvec2 progressivePoint(uint32_t frame, uint32_t i, uint32_t count)
 {
-  if (frame <= 1 || count == 1 || count > kMaxSequenceCount)
+  if (!takesSequence(frame, count))
   {
     return cranleyPatterson(hammersley(i, count), frameShift(frame));
   }

@@ -36,11 +36,14 @@ uint32_t sobol2Bits(uint32_t i);
 // copies of it. Requires i < COUNT; k B counts modulo 2^32.
 constexpr uint32_t kMaxSequenceCount = 16;
 glm::dvec2 progressivePoint(uint32_t frame, uint32_t i, uint32_t count);
+// Whether frame k's set of COUNT points is a block of the sequence (else the rotated set).
+bool takesSequence(uint32_t frame, uint32_t count);
 
 // The bits (32-bit binary fractions) of point k B of the sequence, the first of frame k's block
 // for sets of COUNT points: point k B + i is point i XOR it in each coordinate (the sequence is
 // linear over GF(2) in its index's bits, and k B has none of i's). The shader takes the block's
-// points so.
+// points so, for the material's sample count; its other sets (the sources' samples, when their
+// count differs) stay the rotated Hammersley set.
 struct SequenceBlock
 {
   uint32_t x = 0;

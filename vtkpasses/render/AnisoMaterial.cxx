@@ -475,9 +475,8 @@ public:
     setVector(program, "anisoAlbedo", settings.albedo);
     program->SetUniformi("anisoSampleCount", settings.samples);
     // The progressive frame picks the sample set (core/sampling/hammersley.h progressivePoint):
-    // the shader rotates the Hammersley set by the frame's shift, or, for counts up to
-    // kMaxSequenceCount, takes the frame's own points from here (from frame 2 on, a block of a
-    // (0,2)-sequence; reading them costs less than computing them per sample).
+    // the Hammersley set rotated by the frame's shift, or a block of a (0,2)-sequence, which the
+    // shader takes as its points XOR the bits of the block's first point.
     vtkInformation* info = hook.renderer()->GetInformation();
     const int frameIndex = info && info->Has(vtkAnisoAccumulationPass::FRAME_INDEX())
                                ? info->Get(vtkAnisoAccumulationPass::FRAME_INDEX())
@@ -490,17 +489,13 @@ public:
     }
     const float frameShift[2] = {static_cast<float>(shift[0]), static_cast<float>(shift[1])};
     program->SetUniform2f("anisoFrameShift", frameShift);
-    // From frame 2 on, the frame's block of the (0,2)-sequence: the bits of its first point.
-    const int count = settings.samples;
-    const bool sequence = frameIndex >= 2 && count >= 2 &&
-                          count <= static_cast<int>(kMaxSequenceCount);
-    const SequenceBlock block =
-        sequence ? sequenceBlock(static_cast<uint32_t>(frameIndex), static_cast<uint32_t>(count))
-                 : SequenceBlock{};
+    const auto frame = static_cast<uint32_t>(std::max(frameIndex, 0));
+    const auto count = static_cast<uint32_t>(std::max(settings.samples, 1));
+    const bool sequence = takesSequence(frame, count);
+    const SequenceBlock block = sequence ? sequenceBlock(frame, count) : SequenceBlock{};
     const int blockBits[2] = {static_cast<int>(block.x), static_cast<int>(block.y)};
     program->SetUniform2i("anisoSequenceBlock", blockBits);
-    program->SetUniformi("anisoSequenceCount", sequence ? count : 0);
-    program->SetUniformf("anisoLog2FrameCount", static_cast<float>(std::log2(frameIndex + 1.0)));
+    program->SetUniformi("anisoSequenceCount", sequence ? static_cast<int>(count) : 0);
 
     // The environment: cube with seamless filtering across faces (VTK enables it only for
     // its own image-based lighting).
