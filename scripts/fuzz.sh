@@ -49,7 +49,9 @@ cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DANISO_FUZZ=ON \
   -DANISO_LINKER=default \
   -DCMAKE_CXX_FLAGS="$sanitize -fno-omit-frame-pointer" -DCMAKE_C_FLAGS="$sanitize" \
   -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=address,undefined" >/dev/null
-cmake --build "$build" -j "$jobs" --target fuzz_make_seeds "${harnesses[@]}"
+cmake -S "$root" -B "$build" \
+  -DANISO_BUILD_SET="fuzz_make_seeds;$(IFS=';'; echo "${harnesses[*]}")" >/dev/null
+cmake --build "$build" -j "$jobs" --target aniso_build_set
 
 seeds="$out/seeds"
 rm -rf "$seeds"
