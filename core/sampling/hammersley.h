@@ -42,8 +42,8 @@ bool takesSequence(uint32_t frame, uint32_t count);
 // The bits (32-bit binary fractions) of point k B of the sequence, the first of frame k's block
 // for sets of COUNT points: point k B + i is point i XOR it in each coordinate (the sequence is
 // linear over GF(2) in its index's bits, and k B has none of i's). The shader takes the block's
-// points so, for the material's sample count; its other sets (the sources' samples, when their
-// count differs) stay the rotated Hammersley set.
+// points so, for the material's sample count and, with a block of their own, for the sources'
+// samples (env-sampling sources).
 struct SequenceBlock
 {
   uint32_t x = 0;

@@ -537,9 +537,18 @@ public:
       hook.bindTexture(program, "anisoSourceGuide", lighting->sourceGuideTexture(window));
       const EnvironmentDistribution& d = *lighting->sourceSplit().distribution;
       program->SetUniform2i("anisoSourceGrid", std::array<int, 2>{d.width(), d.height()}.data());
-      program->SetUniformi("anisoSourceSampleCount",
-                           settings.sourceSamples > 0 ? settings.sourceSamples
-                                                      : std::max(1, settings.samples / 4));
+      const int sourceCount =
+          settings.sourceSamples > 0 ? settings.sourceSamples : std::max(1, settings.samples / 4);
+      program->SetUniformi("anisoSourceSampleCount", sourceCount);
+      // Their own block of the sequence, so that frames stratify the source samples too.
+      const auto sources = static_cast<uint32_t>(sourceCount);
+      const bool sourceSequence = takesSequence(frame, sources);
+      const SequenceBlock sourceBlock =
+          sourceSequence ? sequenceBlock(frame, sources) : SequenceBlock{};
+      const int sourceBits[2] = {static_cast<int>(sourceBlock.x), static_cast<int>(sourceBlock.y)};
+      program->SetUniform2i("anisoSourceSequenceBlock", sourceBits);
+      program->SetUniformi("anisoSourceSequenceCount",
+                           sourceSequence ? static_cast<int>(sources) : 0);
     }
     program->SetUniform3fv(
         "anisoIrradianceSH", 9,

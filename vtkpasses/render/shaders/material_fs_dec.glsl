@@ -84,6 +84,10 @@ uniform sampler2D anisoSourcePdf;
 uniform sampler2D anisoSourceGuide;
 uniform ivec2 anisoSourceGrid;
 uniform int anisoSourceSampleCount; // M, source samples per fragment and frame
+// The source samples' own block of the sequence, as anisoSequenceCount and anisoSequenceBlock
+// for the lobe's (0: the rotated Hammersley set).
+uniform int anisoSourceSequenceCount;
+uniform ivec2 anisoSourceSequenceBlock;
 #endif
 #ifdef ANISO_METHOD_SPLIT_SUM
 uniform sampler2D anisoBrdfLut; // RG32F: s, b with F0 s + b the directional albedo
@@ -201,14 +205,15 @@ uint anisoSobol2Bits16(uint i)
 }
 
 // Point i of this frame's set of count points, rotated by the pixel's shift and kept strictly
-// below 1: from frame 2 on, for 2 to 16 points, the frame's block of the (0,2)-sequence, else
-// the Hammersley set rotated by the frame's shift.
-vec2 anisoSamplePoint(int i, int count, vec2 shift)
+// below 1: from frame 2 on, for 2 to 16 points, the frame's block of the (0,2)-sequence (when
+// count is the set's sequenceCount, whose block's first point has the bits of block), else the
+// Hammersley set rotated by the frame's shift.
+vec2 anisoSamplePoint(int i, int count, vec2 shift, int sequenceCount, ivec2 block)
 {
   vec2 p;
-  if (count == anisoSequenceCount)
+  if (count == sequenceCount)
   {
-    uvec2 bits = uvec2(anisoSequenceBlock) ^
+    uvec2 bits = uvec2(block) ^
       uvec2(anisoSobol2Bits16(uint(i)), anisoRadicalInverse2Bits(uint(i)));
     p = vec2(bits >> 8u) * (1.0 / 16777216.0);
   }
@@ -459,7 +464,7 @@ vec3 anisoSpecular(vec3 t, vec3 b, vec3 n, vec3 v, vec3 f0)
 #endif
   for (int i = 0; i < count; ++i)
   {
-    vec2 xi = anisoSamplePoint(i, count, shift);
+    vec2 xi = anisoSamplePoint(i, count, shift, anisoSequenceCount, anisoSequenceBlock);
 #ifdef ANISO_ENVIRONMENT_MIS
     vec3 l;
     vec3 h;
@@ -532,15 +537,17 @@ vec3 anisoSpecular(vec3 t, vec3 b, vec3 n, vec3 v, vec3 f0)
 #endif
   }
 #ifdef ANISO_ENVIRONMENT_SOURCES
-  // The source samples: M points of the sources' distribution, stratified and shifted by the
-  // frame as the lobe's are, each weighted as anisoSourceAtLobeSample says (times N, as the
+  // The source samples: M points of the sources' distribution, stratified and taken from frame
+  // to frame as the lobe's are (their own block of the sequence), each weighted as anisoSourceAtLobeSample says (times N, as the
   // lobe's sum is divided by N).
   mat3 sourceToWorld = transpose(anisoWorldToEnvironment);
   int sourceCount = max(anisoSourceSampleCount, 0);
   for (int j = 0; j < sourceCount; ++j)
   {
     vec4 ls = anisoSampleTables(anisoSourceCdf, anisoSourceGuide, anisoSourcePdf, anisoSourceGrid,
-                                anisoSamplePoint(j, sourceCount, shift));
+                                anisoSamplePoint(j, sourceCount, shift,
+                                                 anisoSourceSequenceCount,
+                                                 anisoSourceSequenceBlock));
     vec3 l = sourceToWorld * ls.xyz;
     float nDotL = dot(n, l);
     vec3 h = normalize(v + l);
