@@ -52,6 +52,19 @@ constexpr int kMaxSamples = 1 << 16;
 constexpr double kLodAnisotropyWeight = 0.25;
 constexpr double kLodBias = 0.0;
 
+// Which points a set of COUNT samples takes in progressive frame FRAME: COUNT_NAME is the count
+// when the set is a block of the sequence (0: the rotated Hammersley set), BLOCK_NAME the bits
+// of the block's first point (core/sampling/hammersley.h sequenceBlock).
+void setSequenceUniforms(vtkShaderProgram* program, const char* countName, const char* blockName,
+                         uint32_t frame, uint32_t count)
+{
+  const bool sequence = takesSequence(frame, count);
+  const SequenceBlock block = sequence ? sequenceBlock(frame, count) : SequenceBlock{};
+  const int bits[2] = {static_cast<int>(block.x), static_cast<int>(block.y)};
+  program->SetUniform2i(blockName, bits);
+  program->SetUniformi(countName, sequence ? static_cast<int>(count) : 0);
+}
+
 void setVector(vtkShaderProgram* program, const char* name, const glm::dvec3& v)
 {
   const glm::vec3 f(v);
@@ -490,12 +503,8 @@ public:
     const float frameShift[2] = {static_cast<float>(shift[0]), static_cast<float>(shift[1])};
     program->SetUniform2f("anisoFrameShift", frameShift);
     const auto frame = static_cast<uint32_t>(std::max(frameIndex, 0));
-    const auto count = static_cast<uint32_t>(std::max(settings.samples, 1));
-    const bool sequence = takesSequence(frame, count);
-    const SequenceBlock block = sequence ? sequenceBlock(frame, count) : SequenceBlock{};
-    const int blockBits[2] = {static_cast<int>(block.x), static_cast<int>(block.y)};
-    program->SetUniform2i("anisoSequenceBlock", blockBits);
-    program->SetUniformi("anisoSequenceCount", sequence ? static_cast<int>(count) : 0);
+    setSequenceUniforms(program, "anisoSequenceCount", "anisoSequenceBlock", frame,
+                        static_cast<uint32_t>(std::max(settings.samples, 1)));
 
     // The environment: cube with seamless filtering across faces (VTK enables it only for
     // its own image-based lighting).
@@ -541,14 +550,8 @@ public:
           settings.sourceSamples > 0 ? settings.sourceSamples : std::max(1, settings.samples / 4);
       program->SetUniformi("anisoSourceSampleCount", sourceCount);
       // Their own block of the sequence, so that frames stratify the source samples too.
-      const auto sources = static_cast<uint32_t>(sourceCount);
-      const bool sourceSequence = takesSequence(frame, sources);
-      const SequenceBlock sourceBlock =
-          sourceSequence ? sequenceBlock(frame, sources) : SequenceBlock{};
-      const int sourceBits[2] = {static_cast<int>(sourceBlock.x), static_cast<int>(sourceBlock.y)};
-      program->SetUniform2i("anisoSourceSequenceBlock", sourceBits);
-      program->SetUniformi("anisoSourceSequenceCount",
-                           sourceSequence ? static_cast<int>(sources) : 0);
+      setSequenceUniforms(program, "anisoSourceSequenceCount", "anisoSourceSequenceBlock", frame,
+                          static_cast<uint32_t>(sourceCount));
     }
     program->SetUniform3fv(
         "anisoIrradianceSH", 9,
