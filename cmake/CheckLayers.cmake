@@ -18,13 +18,15 @@ set(_rules
   "bench/ core/,vtkpasses/,scene/,widgets/,app/,bench/ ^<$"
   "tests/ core/,vtkpasses/,scene/,widgets/,app/,bench/,tests/ ^<$"
   "fuzz/ core/,vtkpasses/,scene/,widgets/,app/,fuzz/ ^<$"
+  "paraview/ core/,vtkpasses/,paraview/ ^<Q"
 )
 
 file(GLOB_RECURSE _files RELATIVE "${ROOT}"
   "${ROOT}/core/*.h" "${ROOT}/core/*.cxx" "${ROOT}/vtkpasses/*.h" "${ROOT}/vtkpasses/*.cxx"
   "${ROOT}/scene/*.h" "${ROOT}/scene/*.cxx" "${ROOT}/widgets/*.h" "${ROOT}/widgets/*.cxx"
   "${ROOT}/app/*.h" "${ROOT}/app/*.cxx" "${ROOT}/bench/*.h" "${ROOT}/bench/*.cxx"
-  "${ROOT}/tests/*.h" "${ROOT}/tests/*.cxx" "${ROOT}/fuzz/*.h" "${ROOT}/fuzz/*.cxx")
+  "${ROOT}/tests/*.h" "${ROOT}/tests/*.cxx" "${ROOT}/fuzz/*.h" "${ROOT}/fuzz/*.cxx"
+  "${ROOT}/paraview/*.h" "${ROOT}/paraview/*.cxx")
 list(LENGTH _files _count)
 if(_count LESS 100)
   message(FATAL_ERROR "CheckLayers: found only ${_count} sources under ${ROOT}")

@@ -42,7 +42,7 @@ sanitize="-fsanitize=fuzzer-no-link,address,undefined -fno-sanitize-recover=unde
 # -O1 -gline-tables-only: as OSS-Fuzz builds its targets (line tables for the findings' stacks).
 # The compiler's own linker: gold (the other builds' choice, cmake/AnisoLinker.cmake) warns
 # about every symbol of clang's AddressSanitizer runtime it cannot export.
-cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DANISO_FUZZ=ON \
+cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DANISO_FUZZ=ON -DANISO_PARAVIEW=OFF \
   -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -gline-tables-only -DNDEBUG" \
   -DCMAKE_C_FLAGS_RELWITHDEBINFO="-O1 -gline-tables-only -DNDEBUG" \
   -DANISO_WARNINGS_AS_ERRORS=OFF -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ \

@@ -5,6 +5,9 @@
 #include "core/parameters/choices.h" // ToneMapping, BackgroundMode
 
 #include <glm/vec3.hpp>
+#include <string>
+#include <utility>
+#include <vector>
 
 namespace aniso
 {
@@ -29,4 +32,17 @@ struct DisplaySettings
 // From the declared parameters (core/parameters/parameters.h): exposure, tone-mapping,
 // background, background-color, legend.
 DisplaySettings displayFromParameters(const ParameterSet& parameters);
+
+// The GLSL defines that select DISPLAY's tone mapping in the display transform
+// (shaders/display_transform.glsl).
+std::string toneMappingDefines(const DisplaySettings& display);
+// The display transform of DISPLAY (exposure, tone mapping, sRGB encoding) as fragment-shader
+// code for a material drawn straight to the screen, where no accumulation pass displays it
+// (the ParaView plugin): (tag, code inserted after it) pairs, as ShaderCode::fragment, that turn
+// the fragment's linear radiance into the displayed value. The exposure is a constant of the
+// code (a new exposure compiles anew). The tags are VTK's own, after the materials' code and
+// apart from the ones they use: the functions after "//VTK::Output::Dec", the transform after
+// "//VTK::TCoord::Impl".
+std::vector<std::pair<std::string, std::string>> displayInFragmentCode(
+    const DisplaySettings& display);
 } // namespace aniso

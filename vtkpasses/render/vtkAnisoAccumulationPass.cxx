@@ -805,24 +805,16 @@ void vtkAnisoAccumulationPass::Accumulate(vtkOpenGLRenderWindow* window, int wid
 void vtkAnisoAccumulationPass::Present(vtkOpenGLRenderWindow* window, int x, int y, int width,
                                        int height, int y0)
 {
-  std::string defines;
-  switch (this->Display.toneMapping)
-  {
-  case aniso::ToneMapping::Aces:
-    defines += "#define ANISO_TONE_MAP_ACES\n";
-    break;
-  case aniso::ToneMapping::Reinhard:
-    defines += "#define ANISO_TONE_MAP_REINHARD\n";
-    break;
-  case aniso::ToneMapping::Clamp:
-    break;
-  }
+  std::string defines = aniso::toneMappingDefines(this->Display);
   if (this->Display.background == aniso::BackgroundMode::Transparent)
   {
     defines += "#define ANISO_TRANSPARENT_BACKGROUND\n";
   }
-  vtkOpenGLQuadHelper* quad = this->Quad(window, this->DisplayQuad, aniso::shaders::kDisplayFs,
-                                         defines, this->DisplayDefines);
+  std::string source = aniso::shaders::kDisplayFs;
+  vtkShaderProgram::Substitute(source, "//ANISO::DisplayTransform::Dec",
+                               aniso::shaders::kDisplayTransform);
+  vtkOpenGLQuadHelper* quad =
+      this->Quad(window, this->DisplayQuad, source.c_str(), defines, this->DisplayDefines);
   if (!quad)
   {
     return;

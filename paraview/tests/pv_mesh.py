@@ -1,0 +1,21 @@
+# Run by pvbatch: writes a mesh with ParaView's own sources and its XML writer (an independent
+# writer of the file both ParaView and `aniso render` then draw).
+#   pvbatch pv_mesh.py sphere|contour OUT.vtp
+import sys
+
+from paraview.simple import (Contour, ExtractSurface, GenerateSurfaceNormals, SaveData, Sphere,
+                             Wavelet)
+
+kind, out = sys.argv[1], sys.argv[2]
+if kind == "sphere":
+    # The sphere source's own analytic normals.
+    source = Sphere(Radius=0.5, ThetaResolution=96, PhiResolution=48)
+elif kind == "contour":
+    # A larger surface: an isosurface of the wavelet, its normals by ParaView's filter.
+    wavelet = Wavelet(WholeExtent=[-40, 40, -40, 40, -40, 40])
+    contour = Contour(Input=wavelet, ContourBy=["POINTS", "RTData"], Isosurfaces=[150.0],
+                      ComputeNormals=0)
+    source = GenerateSurfaceNormals(Input=ExtractSurface(Input=contour))
+else:
+    raise SystemExit("pv_mesh.py: unknown mesh kind " + kind)
+SaveData(out, proxy=source, DataMode="Binary")

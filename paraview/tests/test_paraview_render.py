@@ -1,0 +1,120 @@
+#!/usr/bin/env python3
+# The ParaView plugin against `aniso render`: a mesh written by ParaView's own writer is drawn by
+# pvbatch (alone, or on several MPI ranks each drawing its partition, composited by IceT) with
+# the "Aniso Surface" representation and by `aniso render`, with the same camera, material,
+# environment and samples (one frame, no jitter); the images must agree within BOUND relative
+# L2 over the pixels the surface covers whole (the coverage of `aniso render`'s transparent
+# background, less a pixel at the silhouette).
+#   test_paraview_render.py --aniso EXE --plugin SO --pythonpath DIR --work DIR
+#                           [--ranks N] [--mesh sphere|contour] [--library]
+import argparse
+import json
+import os
+import subprocess
+import sys
+
+import numpy as np
+from vtkmodules.util import numpy_support
+from vtkmodules.vtkIOImage import vtkPNGReader
+
+BOUND = 0.01
+SIZE = 256
+SAMPLES = 64
+HERE = os.path.dirname(os.path.abspath(__file__))
+
+
+def run(command, env):
+    print("+ " + " ".join(command), flush=True)
+    # mpirun forwards its standard input to rank 0; inherited, it can hold the job up.
+    result = subprocess.run(command, env=env, stdin=subprocess.DEVNULL, stdout=subprocess.PIPE,
+                            stderr=subprocess.STDOUT, text=True, check=False)
+    print(result.stdout[-4000:], flush=True)
+    if result.returncode != 0:
+        sys.exit("test_paraview_render: %s exited with %d" % (command[0], result.returncode))
+    return result.stdout
+
+
+def read_png(path):
+    reader = vtkPNGReader()
+    reader.SetFileName(path)
+    reader.Update()
+    image = reader.GetOutput()
+    width, height, _ = image.GetDimensions()
+    if width * height <= 1:
+        sys.exit("test_paraview_render: cannot read " + path)
+    pixels = numpy_support.vtk_to_numpy(image.GetPointData().GetScalars())
+    return pixels.reshape(height, width, -1).astype(np.float64)
+
+
+def main():
+    parser = argparse.ArgumentParser()
+    parser.add_argument("--aniso", required=True)
+    parser.add_argument("--plugin", required=True)
+    parser.add_argument("--pythonpath", required=True)
+    parser.add_argument("--work", required=True)
+    parser.add_argument("--ranks", type=int, default=1)
+    parser.add_argument("--mesh", default="sphere")
+    parser.add_argument("--library", action="store_true")
+    a = parser.parse_args()
+
+    os.makedirs(a.work, exist_ok=True)
+    env = dict(os.environ)
+    env["PYTHONPATH"] = a.pythonpath
+    if os.getuid() == 0:
+        env["OMPI_ALLOW_RUN_AS_ROOT"] = "1"
+        env["OMPI_ALLOW_RUN_AS_ROOT_CONFIRM"] = "1"
+    mesh = os.path.join(a.work, a.mesh + ".vtp")
+    run(["pvbatch", os.path.join(HERE, "pv_mesh.py"), a.mesh, mesh], env)
+
+    material = []
+    pv_material = []
+    if a.library:
+        # A material of a library file as the application writes one, turned about Z.
+        library = os.path.join(a.work, "library.json")
+        with open(library, "w", encoding="utf-8") as f:
+            json.dump({"format": "aniso-materials", "version": 1,
+                       "materials": {"turned brass": {"nu": 3000, "nv": 40,
+                                                      "f0": [0.91, 0.78, 0.42],
+                                                      "albedo": [0.02, 0.015, 0.01],
+                                                      "tangents": "around:0,0,1"}}}, f)
+        material = ["--materials", library, "--part", "*=turned brass"]
+        pv_material = [library, "turned brass"]
+
+    reference = os.path.join(a.work, "aniso.png")
+    run([a.aniso, "render", mesh, "--view", "-y", "--size", "%dx%d" % (SIZE, SIZE), "--samples",
+         str(SAMPLES), "--frames", "1", "--jitter", "off", "--background", "none", "-o",
+         reference] + material, env)
+
+    image = os.path.join(a.work, "paraview.png")
+    pv = ["pvbatch", os.path.join(HERE, "pv_render.py"), a.plugin, mesh, image, str(SIZE),
+          str(SAMPLES)] + (["redistribute"] if a.ranks > 1 else []) + pv_material
+    if a.ranks > 1:
+        # A rank that fails leaves the others waiting: mpirun ends the job after its timeout.
+        pv = ["mpirun", "--oversubscribe", "--timeout", "300", "-np", str(a.ranks), "-x", "PYTHONPATH"] + pv
+    out = run(pv, env)
+    if "%d rank(s)" % a.ranks not in out:
+        sys.exit("test_paraview_render: pvbatch did not run on %d ranks" % a.ranks)
+
+    ours = read_png(reference)
+    theirs = read_png(image)
+    covered = ours[..., 3] == 255
+    inner = covered.copy()
+    inner[1:, :] &= covered[:-1, :]
+    inner[:-1, :] &= covered[1:, :]
+    inner[:, 1:] &= covered[:, :-1]
+    inner[:, :-1] &= covered[:, 1:]
+    count = int(inner.sum())
+    if count < SIZE * SIZE // 10:
+        sys.exit("test_paraview_render: the surface covers only %d pixels" % count)
+    difference = theirs[..., :3][inner] - ours[..., :3][inner]
+    error = float(np.sqrt((difference ** 2).sum() / (ours[..., :3][inner] ** 2).sum()))
+    print("test_paraview_render: %s, %d rank(s)%s: relative L2 %.5f over %d pixels (bound %g), "
+          "largest difference %d of 255" % (a.mesh, a.ranks, ", library material" if a.library
+                                            else "", error, count, BOUND,
+                                            int(np.abs(difference).max())))
+    if not error <= BOUND:
+        sys.exit("test_paraview_render: the plugin's image differs from aniso render's")
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,50 @@
+# The render room's sources and shaders, one list for the two builds that compile them: aniso_render
+# here (Debian's VTK 9.1) and the ParaView plugin (paraview/plugin, ParaView 5.11's VTK 9.2).
+set(ANISO_RENDER_SOURCES
+  AnisoMaterial.cxx
+  DisplaySettings.cxx
+  DrawingFrame.cxx
+  FieldValues.cxx
+  EnvironmentLighting.cxx
+  LineStyle.cxx
+  LitModelMaterial.cxx
+  LeadrMaterial.cxx
+  MaterialSettings.cxx
+  MaterialShaderSource.cxx
+  MicrostructureMaterial.cxx
+  OffscreenRenderer.cxx
+  OpenGlCapabilities.cxx
+  PickCuller.cxx
+  RendererMatrices.cxx
+  ShaderHook.cxx
+  SurfaceModelSettings.cxx
+  SurfaceShaderMaterial.cxx
+  TextureUpload.cxx
+  ViewSettings.cxx
+  vtkAnisoAccumulationPass.cxx
+)
+set(ANISO_RENDER_SHADERS
+  shaders/accumulate_fs.glsl
+  shaders/display_fs.glsl
+  shaders/display_transform.glsl
+  shaders/fullscreen_vs.glsl
+  shaders/lit_fs_dec.glsl
+  shaders/lit_fs_impl.glsl
+  shaders/lit_fs_uniform_flow.glsl
+  shaders/lit_vs_dec.glsl
+  shaders/lit_vs_impl.glsl
+  shaders/leadr_fs_dec.glsl
+  shaders/leadr_fs_frame.glsl
+  shaders/leadr_fs_impl.glsl
+  shaders/leadr_fs_lights.glsl
+  shaders/leadr_fs_uniform_flow.glsl
+  shaders/leadr_vs_dec.glsl
+  shaders/leadr_vs_impl.glsl
+  shaders/material_fs_dec.glsl
+  shaders/material_fs_impl.glsl
+  shaders/material_fs_uniform_flow.glsl
+  shaders/material_vs_dec.glsl
+  shaders/material_vs_impl.glsl
+  shaders/micro_fs_dec.glsl
+  shaders/micro_fs_impl.glsl
+)
