@@ -1,18 +1,19 @@
 # Sourced by the set-up scripts: aniso_install_packages PACKAGE... installs the Debian 12
 # packages that are missing (apt-get as root; otherwise prints the line to run and fails).
-# ANISO_PACKAGES: what the build, its tests and their data need (setup.sh, sanitize.sh); the
-# two lines from dpkg-dev build and check the Debian package (CPack's dpkg-shlibdeps and file,
-# the icons' PNGs, the man page, the validators and the MIME check of tests/packaging); the last
-# line builds and tests the ParaView plugin (paraview/: ParaView 5.11, Qt5 SVG which its CMake
-# files ask for, mpirun, and numpy and VTK's Python for the tests' comparisons).
+# ANISO_PACKAGES: what the build, its tests and their data need (setup.sh, sanitize.sh); the last
+# two lines build and check the Debian package (CPack's dpkg-shlibdeps and file, the icons' PNGs,
+# the man page, the validators and the MIME check of tests/packaging).
+# ANISO_PARAVIEW_PACKAGES: what the ParaView plugin's stage adds (scripts/paraview.sh: ParaView
+# 5.11, Qt5 SVG which its CMake files ask for, mpirun, and numpy and VTK's Python for the tests'
+# comparisons).
 ANISO_PACKAGES=(cmake g++ make pkg-config libvtk9-dev libvtk9-qt-dev qtbase5-dev libopenimageio-dev
   openimageio-tools libglm-dev libgtest-dev libbenchmark-dev xvfb xauth libgl1-mesa-dri
   blender-data nlohmann-json3-dev libtinygltf-dev libocct-data-exchange-dev
   libocct-modeling-algorithms-dev libocct-ocaf-dev libocct-foundation-dev libocct-modeling-data-dev
   assimp-testmodels
   dpkg-dev file librsvg2-bin help2man desktop-file-utils appstream lintian shared-mime-info
-  libglib2.0-bin
-  paraview-dev libqt5svg5-dev openmpi-bin python3-numpy python3-vtk9)
+  libglib2.0-bin)
+ANISO_PARAVIEW_PACKAGES=(paraview-dev libqt5svg5-dev openmpi-bin python3-numpy python3-vtk9)
 
 aniso_install_packages() {
   local missing=() p
