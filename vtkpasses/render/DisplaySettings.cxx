@@ -1,7 +1,7 @@
 #include "vtkpasses/render/DisplaySettings.h"
 
-#include "core/parameters/parameters.h"
 #include "aniso_shaders.h"
+#include "core/parameters/parameters.h"
 
 #include <cmath>
 #include <sstream>
@@ -33,8 +33,8 @@ std::string toneMappingDefines(const DisplaySettings& display)
   return {};
 }
 
-std::vector<std::pair<std::string, std::string>> displayInFragmentCode(
-    const DisplaySettings& display)
+std::vector<std::pair<std::string, std::string>>
+displayInFragmentCode(const DisplaySettings& display)
 {
   std::ostringstream impl;
   impl.precision(9);

@@ -24,8 +24,7 @@ struct DisplaySettings
   bool operator==(const DisplaySettings& o) const
   {
     return exposureEV == o.exposureEV && toneMapping == o.toneMapping &&
-           background == o.background && backgroundColor == o.backgroundColor &&
-           legend == o.legend;
+           background == o.background && backgroundColor == o.backgroundColor && legend == o.legend;
   }
   bool operator!=(const DisplaySettings& o) const { return !(*this == o); }
 };
@@ -43,6 +42,6 @@ std::string toneMappingDefines(const DisplaySettings& display);
 // code (a new exposure compiles anew). The tags are VTK's own, after the materials' code and
 // apart from the ones they use: the functions after "//VTK::Output::Dec", the transform after
 // "//VTK::TCoord::Impl".
-std::vector<std::pair<std::string, std::string>> displayInFragmentCode(
-    const DisplaySettings& display);
+std::vector<std::pair<std::string, std::string>>
+displayInFragmentCode(const DisplaySettings& display);
 } // namespace aniso

@@ -12,10 +12,18 @@
 #include "vtkpasses/render/EnvironmentLighting.h"
 #include "vtkpasses/render/MaterialSettings.h"
 
+#include <algorithm>
+#include <fstream>
+#include <glm/vec3.hpp>
+#include <map>
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <sstream>
 #include <vtkAppendPolyData.h>
+#include <vtkCommunicator.h>
 #include <vtkCompositeDataIterator.h>
 #include <vtkCompositeDataSet.h>
-#include <vtkCommunicator.h>
 #include <vtkDataSet.h>
 #include <vtkInformation.h>
 #include <vtkMath.h>
@@ -30,15 +38,6 @@
 #include <vtkRenderer.h>
 #include <vtkSmartPointer.h>
 #include <vtkTriangleFilter.h>
-
-#include <algorithm>
-#include <fstream>
-#include <map>
-#include <glm/vec3.hpp>
-#include <optional>
-#include <memory>
-#include <nlohmann/json.hpp>
-#include <sstream>
 
 namespace
 {
@@ -115,8 +114,8 @@ aniso::MaterialLibrary libraryOfFile(const std::string& path)
       document.value("format", std::string()) != "aniso-materials")
   {
     // A session: its materials section is a library of its own.
-    nlohmann::json library = {{"format", "aniso-materials"}, {"version", 1},
-                              {"materials", document["materials"]}};
+    nlohmann::json library = {
+        {"format", "aniso-materials"}, {"version", 1}, {"materials", document["materials"]}};
     return aniso::materialLibraryFromJson(library.dump(), directory, path);
   }
   return aniso::readMaterialLibrary(path);
@@ -126,16 +125,16 @@ aniso::MaterialLibrary libraryOfFile(const std::string& path)
 struct vtkAnisoRepresentation::Internals
 {
   aniso::ParameterSet parameters;
-  std::string library;  // material library or session file
-  std::string material; // a material of it
+  std::string library;                   // material library or session file
+  std::string material;                  // a material of it
   std::string readLibrary, readMaterial; // what `values` was read from
   aniso::Material::Values values;
-  std::string status;                            // what the last update reported
-  std::map<std::string, std::string> rejected;   // property: why its last value was refused
-  std::string statusText;                        // GetAnisoStatus's
+  std::string status;                          // what the last update reported
+  std::map<std::string, std::string> rejected; // property: why its last value was refused
+  std::string statusText;                      // GetAnisoStatus's
 
   vtkNew<vtkOpenGLPolyDataMapper> drawn; // the actor's mapper: the prepared surface
-  std::optional<glm::dvec3> centre; // of the whole data's bounds, over every rank
+  std::optional<glm::dvec3> centre;      // of the whole data's bounds, over every rank
   vtkDataObject* preparedFrom = nullptr;
   vtkMTimeType preparedTime = 0;
   std::string preparedTangents;
@@ -152,8 +151,7 @@ struct vtkAnisoRepresentation::Internals
 
 vtkStandardNewMacro(vtkAnisoRepresentation);
 
-vtkAnisoRepresentation::vtkAnisoRepresentation()
-  : Internal(new Internals)
+vtkAnisoRepresentation::vtkAnisoRepresentation() : Internal(new Internals)
 {
   // The actor draws the prepared surface with a polydata mapper, the one the material hooks;
   // the superclass's composite mapper only receives the delivered pieces. No level of detail:
@@ -179,13 +177,13 @@ void vtkAnisoRepresentation::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "AnisoStatus: " << this->GetAnisoStatus() << "\n";
 }
 
-void vtkAnisoRepresentation::SetParameterText(
-  const char* property, const char* key, const std::string& text)
+void vtkAnisoRepresentation::SetParameterText(const char* property, const char* key,
+                                              const std::string& text)
 {
   try
   {
     const aniso::ParameterValue value =
-      aniso::parseParameterValue(aniso::parameterSpec(key), text, property);
+        aniso::parseParameterValue(aniso::parameterSpec(key), text, property);
     if (key == std::string("tangents") && text != "auto")
     {
       aniso::parseBrushingModel(text, property);
@@ -211,13 +209,13 @@ void vtkAnisoRepresentation::SetAnisoRoughnessV(double nv)
 }
 void vtkAnisoRepresentation::SetAnisoReflectance(double r, double g, double b)
 {
-  this->SetParameterText(
-    "AnisoReflectance", "f0", numberText(r) + "," + numberText(g) + "," + numberText(b));
+  this->SetParameterText("AnisoReflectance", "f0",
+                         numberText(r) + "," + numberText(g) + "," + numberText(b));
 }
 void vtkAnisoRepresentation::SetAnisoAlbedo(double r, double g, double b)
 {
-  this->SetParameterText(
-    "AnisoAlbedo", "albedo", numberText(r) + "," + numberText(g) + "," + numberText(b));
+  this->SetParameterText("AnisoAlbedo", "albedo",
+                         numberText(r) + "," + numberText(g) + "," + numberText(b));
 }
 void vtkAnisoRepresentation::SetAnisoTangents(const char* model)
 {
@@ -290,8 +288,8 @@ bool vtkAnisoRepresentation::RemoveFromView(vtkView* view)
   return this->Superclass::RemoveFromView(view);
 }
 
-int vtkAnisoRepresentation::ProcessViewRequest(
-  vtkInformationRequestKey* request_type, vtkInformation* inInfo, vtkInformation* outInfo)
+int vtkAnisoRepresentation::ProcessViewRequest(vtkInformationRequestKey* request_type,
+                                               vtkInformation* inInfo, vtkInformation* outInfo)
 {
   if (!this->Superclass::ProcessViewRequest(request_type, inInfo, outInfo))
   {
@@ -301,8 +299,8 @@ int vtkAnisoRepresentation::ProcessViewRequest(
   {
     // Every rank updates its piece together: the bounds of the whole data, for what depends on
     // them (the centre of tangents brushed around an axis).
-    double local[6] = { VTK_DOUBLE_MAX, VTK_DOUBLE_MAX, VTK_DOUBLE_MAX, VTK_DOUBLE_MAX,
-      VTK_DOUBLE_MAX, VTK_DOUBLE_MAX };
+    double local[6] = {VTK_DOUBLE_MAX, VTK_DOUBLE_MAX, VTK_DOUBLE_MAX,
+                       VTK_DOUBLE_MAX, VTK_DOUBLE_MAX, VTK_DOUBLE_MAX};
     if (auto* data = vtkDataObject::SafeDownCast(this->GetRenderedDataObject(0)))
     {
       double b[6];
@@ -334,8 +332,9 @@ int vtkAnisoRepresentation::ProcessViewRequest(
     this->Internal->centre.reset();
     if (global[0] <= -global[1])
     {
-      this->Internal->centre = glm::dvec3(0.5 * (global[0] - global[1]),
-        0.5 * (global[2] - global[3]), 0.5 * (global[4] - global[5]));
+      this->Internal->centre =
+          glm::dvec3(0.5 * (global[0] - global[1]), 0.5 * (global[2] - global[3]),
+                     0.5 * (global[4] - global[5]));
     }
   }
   else if (request_type == vtkPVView::REQUEST_RENDER())
@@ -370,9 +369,9 @@ void vtkAnisoRepresentation::UpdateMaterial()
         {
           if (!value.text.empty())
           {
-            throw aniso::errorAbout(d.library,
-              "material '" + d.material + "' has a " + key +
-                ", which the ParaView plugin does not read (docs/PARAVIEW.md)");
+            throw aniso::errorAbout(
+                d.library, "material '" + d.material + "' has a " + key +
+                               ", which the ParaView plugin does not read (docs/PARAVIEW.md)");
           }
           continue;
         }
@@ -388,22 +387,22 @@ void vtkAnisoRepresentation::UpdateMaterial()
       d.preparedFrom = nullptr; // prepared anew for the new centre
     }
     if (piece != d.preparedFrom || (piece && piece->GetMTime() != d.preparedTime) ||
-      tangents != d.preparedTangents)
+        tangents != d.preparedTangents)
     {
       d.prepared = nullptr;
       if (vtkSmartPointer<vtkPolyData> triangles = trianglesOf(piece))
       {
         aniso::MeshReport report;
         vtkSmartPointer<vtkPolyData> clean =
-          aniso::sanitizeSurface(triangles, "ParaView piece", report);
+            aniso::sanitizeSurface(triangles, "ParaView piece", report);
         aniso::SurfaceOptions options;
         if (tangents != "auto")
         {
           options.brushing = aniso::parseBrushingModel(tangents, "AnisoTangents");
           // Brushed around an axis through the bounding box's centre: the whole data's, not
           // this rank's partition's, so that every partition brushes as the whole would.
-          if (options.brushing->kind == aniso::BrushingKind::Around &&
-            !options.brushing->centre && d.centre)
+          if (options.brushing->kind == aniso::BrushingKind::Around && !options.brushing->centre &&
+              d.centre)
           {
             options.brushing->centre = *d.centre;
           }

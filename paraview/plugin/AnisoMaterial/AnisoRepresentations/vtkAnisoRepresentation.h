@@ -12,9 +12,8 @@
 #define vtkAnisoRepresentation_h
 
 #include <AnisoRepresentationsModule.h> // for the export macro
+#include <string>                       // for std::string
 #include <vtkGeometryRepresentationWithFaces.h>
-
-#include <string> // for std::string
 
 class vtkOpenGLPolyDataMapper;
 
@@ -22,8 +21,9 @@ class ANISOREPRESENTATIONS_EXPORT vtkAnisoRepresentation : public vtkGeometryRep
 {
 public:
   static vtkAnisoRepresentation* New();
-  vtkTypeMacro(vtkAnisoRepresentation, vtkGeometryRepresentationWithFaces)
-  void PrintSelf(ostream& os, vtkIndent indent) override;
+  vtkTypeMacro(vtkAnisoRepresentation,
+               vtkGeometryRepresentationWithFaces) void PrintSelf(ostream& os,
+                                                                  vtkIndent indent) override;
 
   // The material's parameters, as `aniso render` spells their values (docs/PARAVIEW.md). An
   // invalid value is reported as a VTK error naming the property and the reason, and the
@@ -49,7 +49,7 @@ public:
   const char* GetAnisoStatus();
 
   int ProcessViewRequest(vtkInformationRequestKey* request_type, vtkInformation* inInfo,
-    vtkInformation* outInfo) override;
+                         vtkInformation* outInfo) override;
 
 protected:
   vtkAnisoRepresentation();
