@@ -15,8 +15,6 @@
 #include <string>                       // for std::string
 #include <vtkGeometryRepresentationWithFaces.h>
 
-class vtkOpenGLPolyDataMapper;
-
 class ANISOREPRESENTATIONS_EXPORT vtkAnisoRepresentation : public vtkGeometryRepresentationWithFaces
 {
 public:
