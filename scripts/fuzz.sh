@@ -12,11 +12,9 @@
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 . "$root/scripts/packages.sh"
-aniso_install_packages cmake make pkg-config clang libclang-rt-14-dev libvtk9-dev libvtk9-qt-dev \
-  qtbase5-dev libopenimageio-dev libglm-dev libgtest-dev libbenchmark-dev nlohmann-json3-dev \
-  libtinygltf-dev \
-  libocct-data-exchange-dev libocct-modeling-algorithms-dev libocct-ocaf-dev \
-  libocct-foundation-dev libocct-modeling-data-dev
+# What the build needs (its find_package of OpenImageIO names openimageio-tools' programs), with
+# clang and its libFuzzer and sanitizer runtimes.
+aniso_install_packages "${ANISO_PACKAGES[@]}" clang libclang-rt-14-dev
 
 seconds="${1:-20}"
 shift || true

@@ -2,6 +2,7 @@
 
 #include "core/error.h"
 #include "core/formats/mtl.h"
+#include "core/formats/vtk_legacy_sizes.h"
 #include "core/formats/vtk_xml_headers.h"
 #include "core/formats/mtl_material.h"
 #include "core/parameters/material_library.h"
@@ -439,6 +440,7 @@ void checkLegacyInformation(const std::string& path)
 
 vtkSmartPointer<vtkPolyData> readLegacy(const std::string& path, const VtkMessageCapture& capture)
 {
+  checkVtkLegacySizes(path);
   checkLegacyInformation(path);
   vtkNew<vtkDataSetReader> reader;
   reader->SetFileName(path.c_str());

@@ -1,0 +1,358 @@
+#include "core/formats/vtk_legacy_sizes.h"
+
+#include "core/error.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cstdint>
+#include <filesystem>
+#include <fstream>
+#include <locale>
+#include <sstream>
+#include <system_error>
+#include <vector>
+
+namespace aniso
+{
+namespace
+{
+std::string lowerCase(std::string text)
+{
+  std::transform(text.begin(), text.end(), text.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return text;
+}
+
+std::vector<std::string> tokensOf(const std::string& line)
+{
+  std::istringstream words(line);
+  std::vector<std::string> tokens;
+  for (std::string word; words >> word;)
+  {
+    tokens.push_back(word);
+  }
+  return tokens;
+}
+
+// A count as VTK's stream extraction reads it: the token's leading integer.
+std::optional<long long> countOf(const std::string& token)
+{
+  std::istringstream stream(token);
+  stream.imbue(std::locale::classic());
+  long long value = 0;
+  stream >> value;
+  if (stream.fail())
+  {
+    return std::nullopt;
+  }
+  return value;
+}
+
+// The bytes a value of a legacy type name takes in a binary file, in eighths of a byte (a bit
+// array packs eight values a byte); nothing for a name VTK's legacy reader does not know. Strings
+// and variants take at least one byte.
+std::optional<int> eighthsOf(const std::string& type)
+{
+  const std::string name = lowerCase(type);
+  if (name == "bit")
+  {
+    return 1;
+  }
+  if (name == "char" || name == "signed_char" || name == "unsigned_char" || name == "string" ||
+      name == "utf8_string" || name == "variant")
+  {
+    return 8;
+  }
+  if (name == "short" || name == "unsigned_short")
+  {
+    return 16;
+  }
+  if (name == "int" || name == "unsigned_int" || name == "float")
+  {
+    return 32;
+  }
+  if (name == "long" || name == "unsigned_long" || name == "double" || name == "vtkidtype" ||
+      name == "vtktypeint64" || name == "vtktypeuint64")
+  {
+    return 64;
+  }
+  return std::nullopt;
+}
+
+class SizeScan
+{
+public:
+  SizeScan(std::uintmax_t fileBytes, bool binary)
+      : FileBytes(fileBytes)
+      , Binary(binary)
+  {
+  }
+
+  // Checks COUNT x COMPONENTS values of a type of EIGHTHS eighths of a byte (in a binary file;
+  // at least a byte each in an ASCII one), declared by KEYWORD on LINE; sets Problem when they
+  // cannot fit or a number is negative.
+  void check(const std::string& keyword, long long count, long long components, int eighths,
+             const std::string& what)
+  {
+    if (this->Problem)
+    {
+      return;
+    }
+    if (count < 0 || components < 0)
+    {
+      this->Problem = "line " + std::to_string(this->Line) + ": " + keyword + " declares " +
+                      std::to_string(std::min(count, components)) + " " + what +
+                      ", a negative count";
+      return;
+    }
+    // count x components x perValue <= the file's eighths of a byte, without overflow: for
+    // positive integers a x b <= c exactly when a <= floor(c / b).
+    const int perValue = this->Binary ? eighths : 8;
+    const std::uintmax_t capacity = this->FileBytes * 8;
+    if (components == 0 ||
+        static_cast<std::uintmax_t>(count) <=
+            capacity / static_cast<std::uintmax_t>(perValue) /
+                static_cast<std::uintmax_t>(components))
+    {
+      return;
+    }
+    std::string size;
+    if (!this->Binary)
+    {
+      size = "at least 1 byte each, as text";
+    }
+    else if (perValue % 8 == 0)
+    {
+      size = std::to_string(perValue / 8) + (perValue == 8 ? " byte each" : " bytes each");
+    }
+    else
+    {
+      size = "1 bit each";
+    }
+    std::string valueText = components == 1 ? std::to_string(count) + " " + what
+                                            : std::to_string(count) + " " + what + " of " +
+                                                  std::to_string(components) + " values";
+    this->Problem = "line " + std::to_string(this->Line) + ": " + keyword + " declares " +
+                    valueText + " (" + size + "), more than the file's " +
+                    std::to_string(this->FileBytes) +
+                    " bytes hold (the file is cut short or its counts are corrupt)";
+  }
+
+  std::uintmax_t FileBytes = 0;
+  bool Binary = false;
+  long long Line = 0;
+  std::optional<std::string> Problem;
+};
+} // namespace
+
+std::optional<std::string> vtkLegacySizeProblem(const std::string& path)
+{
+  std::ifstream in(path, std::ios::binary);
+  if (!in)
+  {
+    throw errorAbout(path, "cannot open the file");
+  }
+  std::error_code error;
+  const std::uintmax_t fileBytes = std::filesystem::file_size(path, error);
+  if (error)
+  {
+    throw errorAbout(path, "cannot read the file's size (" + error.message() + ")");
+  }
+  std::string line;
+  auto nextLine = [&]() -> bool
+  {
+    if (!std::getline(in, line))
+    {
+      return false;
+    }
+    if (!line.empty() && line.back() == '\r')
+    {
+      line.pop_back();
+    }
+    return true;
+  };
+  // The header, the title and the file type (VTK refuses a file whose header does not read).
+  int major = 0;
+  if (!nextLine() || line.rfind("# vtk DataFile Version", 0) != 0)
+  {
+    return std::nullopt;
+  }
+  {
+    std::istringstream version(line.substr(22));
+    version.imbue(std::locale::classic());
+    version >> major;
+  }
+  if (!nextLine() || !nextLine())
+  {
+    return std::nullopt;
+  }
+  const std::vector<std::string> typeTokens = tokensOf(line);
+  if (typeTokens.empty())
+  {
+    return std::nullopt;
+  }
+  const std::string fileType = lowerCase(typeTokens[0]);
+  if (fileType != "ascii" && fileType != "binary")
+  {
+    return std::nullopt;
+  }
+  SizeScan scan(fileBytes, fileType == "binary");
+  scan.Line = 3;
+
+  long long attributeCount = 0; // POINT_DATA or CELL_DATA's count
+  long long fieldArraysLeft = 0;
+  // A version 5 cell list's counts, checked again with the types of its OFFSETS and
+  // CONNECTIVITY lines.
+  std::string cellKeyword;
+  long long cellLine = 0;
+  long long offsetCount = -1;
+  long long connectivityCount = -1;
+
+  while (!scan.Problem && nextLine())
+  {
+    ++scan.Line;
+    const std::vector<std::string> tokens = tokensOf(line);
+    if (tokens.empty())
+    {
+      continue;
+    }
+    std::string keyword = tokens[0];
+    std::transform(keyword.begin(), keyword.end(), keyword.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::toupper(c)); });
+    auto count = [&](size_t i) -> std::optional<long long>
+    { return i < tokens.size() ? countOf(tokens[i]) : std::nullopt; };
+    auto eighths = [&](size_t i) -> std::optional<int>
+    { return i < tokens.size() ? eighthsOf(tokens[i]) : std::nullopt; };
+
+    if (keyword == "POINTS" || keyword == "X_COORDINATES" || keyword == "Y_COORDINATES" ||
+        keyword == "Z_COORDINATES")
+    {
+      if (tokens.size() == 3 && count(1) && eighths(2))
+      {
+        scan.check(keyword, *count(1), keyword == "POINTS" ? 3 : 1, *eighths(2),
+                   keyword == "POINTS" ? "points" : "coordinates");
+      }
+    }
+    else if (keyword == "VERTICES" || keyword == "LINES" || keyword == "POLYGONS" ||
+             keyword == "TRIANGLE_STRIPS" || keyword == "CELLS")
+    {
+      if (tokens.size() == 3 && count(1) && count(2))
+      {
+        if (major >= 5)
+        {
+          // Checked with the types the OFFSETS and CONNECTIVITY lines name (VTK allocates
+          // after it has read them), reported on this line.
+          cellKeyword = keyword;
+          cellLine = scan.Line;
+          offsetCount = *count(1);
+          connectivityCount = *count(2);
+        }
+        else
+        {
+          scan.check(keyword, *count(2), 1, 32, "values of its cell list");
+        }
+      }
+    }
+    else if ((keyword == "OFFSETS" || keyword == "CONNECTIVITY") && !cellKeyword.empty())
+    {
+      if (tokens.size() == 2 && eighths(1))
+      {
+        const bool offsets = keyword == "OFFSETS";
+        const long long current = scan.Line;
+        scan.Line = cellLine;
+        scan.check(cellKeyword, offsets ? offsetCount : connectivityCount, 1, *eighths(1),
+                   offsets ? "offsets" : "connectivity values");
+        scan.Line = current;
+        if (!offsets)
+        {
+          cellKeyword.clear();
+        }
+      }
+    }
+    else if (keyword == "CELL_TYPES")
+    {
+      if (tokens.size() == 2 && count(1))
+      {
+        scan.check(keyword, *count(1), 1, 32, "cell types");
+      }
+    }
+    else if (keyword == "POINT_DATA" || keyword == "CELL_DATA")
+    {
+      if (tokens.size() == 2 && count(1))
+      {
+        attributeCount = *count(1);
+        scan.check(keyword, attributeCount, 0, 8, "tuples");
+      }
+    }
+    else if (keyword == "SCALARS")
+    {
+      if ((tokens.size() == 3 || tokens.size() == 4) && eighths(2))
+      {
+        const std::optional<long long> components = tokens.size() == 4 ? count(3) : 1LL;
+        if (components)
+        {
+          scan.check(keyword, attributeCount, *components, *eighths(2), "tuples");
+        }
+      }
+    }
+    else if (keyword == "COLOR_SCALARS")
+    {
+      if (tokens.size() == 3 && count(2))
+      {
+        scan.check(keyword, attributeCount, *count(2), 8, "tuples");
+      }
+    }
+    else if (keyword == "VECTORS" || keyword == "NORMALS" || keyword == "TENSORS" ||
+             keyword == "TENSORS6" || keyword == "GLOBAL_IDS" || keyword == "PEDIGREE_IDS")
+    {
+      if (tokens.size() == 3 && eighths(2))
+      {
+        const long long components = keyword == "VECTORS" || keyword == "NORMALS" ? 3
+                                     : keyword == "TENSORS"                       ? 9
+                                     : keyword == "TENSORS6"                      ? 6
+                                                                                  : 1;
+        scan.check(keyword, attributeCount, components, *eighths(2), "tuples");
+      }
+    }
+    else if (keyword == "TEXTURE_COORDINATES")
+    {
+      if (tokens.size() == 4 && count(2) && eighths(3))
+      {
+        scan.check(keyword, attributeCount, *count(2), *eighths(3), "tuples");
+      }
+    }
+    else if (keyword == "LOOKUP_TABLE")
+    {
+      // "LOOKUP_TABLE name" after SCALARS names a table; "LOOKUP_TABLE name size" is one, of
+      // four components (unsigned chars in a binary file).
+      if (tokens.size() == 3 && count(2))
+      {
+        scan.check(keyword, *count(2), 4, 8, "entries");
+      }
+    }
+    else if (keyword == "FIELD")
+    {
+      if (tokens.size() == 3 && count(2))
+      {
+        fieldArraysLeft = *count(2);
+        scan.check(keyword, fieldArraysLeft, 1, 8, "arrays");
+      }
+    }
+    else if (fieldArraysLeft > 0 && tokens.size() == 4 && count(1) && count(2) && eighths(3))
+    {
+      // A field's array: name, components, tuples, type.
+      scan.check("FIELD array " + tokens[0], *count(2), *count(1), *eighths(3), "tuples");
+      --fieldArraysLeft;
+    }
+  }
+  return scan.Problem;
+}
+
+void checkVtkLegacySizes(const std::string& path)
+{
+  if (const std::optional<std::string> problem = vtkLegacySizeProblem(path))
+  {
+    throw errorAbout(path, *problem);
+  }
+}
+} // namespace aniso

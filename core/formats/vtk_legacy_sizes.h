@@ -1,0 +1,35 @@
+#pragma once
+// The sizes a VTK legacy file (.vtk) declares, checked against the file's size before VTK reads
+// it. VTK 9.1's legacy reader allocates each array at the size its keyword line declares before
+// it reads a value, and goes on when the allocation fails: with a failed allocation it reads and
+// byte-swaps through a null pointer (SEGV in vtkByteSwap::SwapBERange under
+// vtkDataReader::ReadCells, found by CI's fuzzing smoke in a binary file whose cell count had
+// grown), and the arrays of the failed read leak.
+//
+// An array's values must fit in the file: in a binary file each value takes its type's size
+// (a bit an eighth of a byte, a string at least one byte), in an ASCII file at least one byte. A
+// declared size past that, or a negative one, is refused with the line and the keyword. The
+// declarations read are those VTK allocates by:
+//   POINTS n type; VERTICES, LINES, POLYGONS, TRIANGLE_STRIPS, CELLS a b (version 5: a offsets,
+//   b connectivity values of the types on the OFFSETS and CONNECTIVITY lines; before: b ints);
+//   CELL_TYPES n; X_, Y_, Z_COORDINATES n type; POINT_DATA and CELL_DATA n, the count of each
+//   attribute after them: SCALARS name type [components], COLOR_SCALARS name components,
+//   VECTORS and NORMALS (3), TEXTURE_COORDINATES name dimension type, TENSORS (9), TENSORS6
+//   (6), GLOBAL_IDS and PEDIGREE_IDS (1); LOOKUP_TABLE name size (4 per entry); FIELD name n
+//   and its arrays' "name components tuples type" lines.
+// The file is scanned line by line for these keywords at the start of a line (as VTK's writer
+// puts them), case-insensitively as VTK reads them; lines of binary data that do not parse as a
+// declaration are passed over. What the check cannot read is left to VTK's reader.
+#include <optional>
+#include <string>
+
+namespace aniso
+{
+// Why the file's declared sizes are refused ("line 12: POLYGONS declares 9999999999 offsets of
+// 8 bytes, more than the file's 2 236 bytes hold"), or nothing when they fit. Throws
+// aniso::Error naming the file when it cannot be opened.
+std::optional<std::string> vtkLegacySizeProblem(const std::string& path);
+
+// Throws aniso::Error "PATH: reason" when vtkLegacySizeProblem finds one.
+void checkVtkLegacySizes(const std::string& path);
+} // namespace aniso
