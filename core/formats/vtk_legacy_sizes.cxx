@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cstdint>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <locale>
@@ -178,9 +179,13 @@ std::optional<std::string> vtkLegacySizeProblem(const std::string& path)
     return std::nullopt;
   }
   {
-    std::istringstream version(line.substr(22));
-    version.imbue(std::locale::classic());
-    version >> major;
+    // As VTK reads it: "MAJOR.MINOR", else version 0.0 (a "5.1" file whose version line reads
+    // "51." is read as the older format).
+    int minor = 0;
+    if (std::sscanf(line.c_str() + 22, "%d.%d", &major, &minor) != 2)
+    {
+      major = 0;
+    }
   }
   if (!nextLine() || !nextLine())
   {
@@ -205,8 +210,106 @@ std::optional<std::string> vtkLegacySizeProblem(const std::string& path)
   // CONNECTIVITY lines.
   std::string cellKeyword;
   long long cellLine = 0;
+  // An unstructured grid's cell count (CELLS) and its line, for CELL_TYPES.
+  long long gridCells = 0;
+  long long gridCellsLine = 0;
   long long offsetCount = -1;
   long long connectivityCount = -1;
+
+  // A cell list before version 5: CELLS values, each cell its point count and that many point
+  // ids (ints, big-endian in a binary file). VTK 9.1 walks it by the counts it holds
+  // (vtkCellArray::AppendLegacyFormat) without checking them against the list's size: a count
+  // that runs past it reads past the list (SEGV, fuzz_vtk; such a list is what the binary
+  // OFFSETS of a version 5 file become when its version line no longer reads). The list is read
+  // here as VTK reads it, right after its keyword line, and walked. A list cut short or a value
+  // that does not read whole is refused too: VTK 9.1 goes on building cells from such a list
+  // (SEGV in AppendLegacyFormat on an ASCII list holding "16*17", fuzz_vtk).
+  auto walkCellList = [&](const std::string& keyword, long long cells, long long values)
+  {
+    const long long keywordLine = scan.Line;
+    std::vector<long long> list;
+    list.reserve(static_cast<size_t>(values));
+    if (scan.Binary)
+    {
+      std::string bytes(static_cast<size_t>(values) * 4, '\0');
+      in.read(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+      if (in.gcount() != static_cast<std::streamsize>(bytes.size()))
+      {
+        scan.Problem = "line " + std::to_string(keywordLine) + ": " + keyword + " lists " +
+                       std::to_string(values) + " values, the file ends after " +
+                       std::to_string(in.gcount() / 4);
+        return;
+      }
+      scan.Line += std::count(bytes.begin(), bytes.end(), '\n');
+      for (size_t i = 0; i < bytes.size(); i += 4)
+      {
+        const auto byte = [&](size_t k) { return static_cast<std::uint32_t>(
+                                              static_cast<unsigned char>(bytes[i + k])); };
+        const std::uint32_t word = byte(0) << 24 | byte(1) << 16 | byte(2) << 8 | byte(3);
+        list.push_back(static_cast<std::int32_t>(word));
+      }
+    }
+    else
+    {
+      while (static_cast<long long>(list.size()) < values && nextLine())
+      {
+        ++scan.Line;
+        for (const std::string& token : tokensOf(line))
+        {
+          std::istringstream stream(token);
+          stream.imbue(std::locale::classic());
+          int value = 0;
+          stream >> value;
+          if (stream.fail() || !stream.eof())
+          {
+            std::string shown = token.substr(0, 32);
+            std::replace_if(
+                shown.begin(), shown.end(),
+                [](char c) { return !std::isprint(static_cast<unsigned char>(c)); }, '?');
+            scan.Problem = "line " + std::to_string(scan.Line) + ": value " +
+                           std::to_string(list.size() + 1) + " of the " + keyword +
+                           " list, \"" + shown + (token.size() > 32 ? "...\"" : "\"") +
+                           ", is not a whole number";
+            return;
+          }
+          list.push_back(value);
+          if (static_cast<long long>(list.size()) == values)
+          {
+            break;
+          }
+        }
+      }
+      if (static_cast<long long>(list.size()) < values)
+      {
+        scan.Problem = "line " + std::to_string(keywordLine) + ": " + keyword + " lists " +
+                       std::to_string(values) + " values, the file ends after " +
+                       std::to_string(list.size());
+        return;
+      }
+    }
+    // VTK appends cells until the list's end, whatever its cell count says: the counts must
+    // walk the list to its end exactly, in as many cells as declared.
+    const std::string prefix = "line " + std::to_string(keywordLine) + ": " + keyword + " lists " +
+                               std::to_string(cells) + " cells in " + std::to_string(values) +
+                               " values, but ";
+    long long at = 0;
+    long long cell = 0;
+    for (; at < values; ++cell)
+    {
+      const long long points = list[static_cast<size_t>(at)];
+      if (points < 0 || points > values - at - 1)
+      {
+        scan.Problem = prefix + "cell " + std::to_string(cell) + " declares " +
+                       std::to_string(points) + " points, past the list's end";
+        return;
+      }
+      at += 1 + points;
+    }
+    if (cell != cells)
+    {
+      scan.Problem = prefix + "its point counts make " + std::to_string(cell) + " cells";
+    }
+  };
 
   while (!scan.Problem && nextLine())
   {
@@ -244,12 +347,26 @@ std::optional<std::string> vtkLegacySizeProblem(const std::string& path)
           // after it has read them), reported on this line.
           cellKeyword = keyword;
           cellLine = scan.Line;
+          if (keyword == "CELLS")
+          {
+            gridCells = std::max(0LL, *count(1) - 1);
+            gridCellsLine = scan.Line;
+          }
           offsetCount = *count(1);
           connectivityCount = *count(2);
         }
         else
         {
           scan.check(keyword, *count(2), 1, 32, "values of its cell list");
+          if (keyword == "CELLS")
+          {
+            gridCells = *count(1);
+            gridCellsLine = scan.Line;
+          }
+          if (!scan.Problem)
+          {
+            walkCellList(keyword, *count(1), *count(2));
+          }
         }
       }
     }
@@ -274,6 +391,16 @@ std::optional<std::string> vtkLegacySizeProblem(const std::string& path)
       if (tokens.size() == 2 && count(1))
       {
         scan.check(keyword, *count(1), 1, 32, "cell types");
+        // VTK 9.1's grid reader takes a type for each cell of the CELLS list from the types it
+        // read (vtkUnstructuredGrid::SetCells): with fewer it reads past them (SEGV in
+        // DecomposeAPolyhedronCell where a byte past them read as a polyhedron, fuzz_vtk).
+        if (!scan.Problem && gridCellsLine > 0 && *count(1) < gridCells)
+        {
+          scan.Problem = "line " + std::to_string(scan.Line) + ": CELL_TYPES declares " +
+                         std::to_string(*count(1)) + " cell types, fewer than the " +
+                         std::to_string(gridCells) + " cells of CELLS on line " +
+                         std::to_string(gridCellsLine);
+        }
       }
     }
     else if (keyword == "POINT_DATA" || keyword == "CELL_DATA")

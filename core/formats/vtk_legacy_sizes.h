@@ -17,6 +17,13 @@
 //   VECTORS and NORMALS (3), TEXTURE_COORDINATES name dimension type, TENSORS (9), TENSORS6
 //   (6), GLOBAL_IDS and PEDIGREE_IDS (1); LOOKUP_TABLE name size (4 per entry); FIELD name n
 //   and its arrays' "name components tuples type" lines.
+// An unstructured grid's CELL_TYPES must declare a type for each cell of its CELLS list (VTK
+// 9.1 reads a type for each cell, past the ones the file gives).
+// A cell list before version 5 (each cell its point count, then its points; also a file whose
+// version line VTK cannot read, which it reads as version 0.0) is read and walked: a cell whose
+// count runs past the list, counts that do not make as many cells as declared, a list cut short
+// and a value that is no whole number are refused (VTK 9.1 appends cells until the list's end by
+// the counts it holds, unchecked).
 // The file is scanned line by line for these keywords at the start of a line (as VTK's writer
 // puts them), case-insensitively as VTK reads them; lines of binary data that do not parse as a
 // declaration are passed over. What the check cannot read is left to VTK's reader.

@@ -95,9 +95,10 @@ vtkSmartPointer<vtkPolyData> attributedSphere()
 class VtkLegacySizesTest : public test::MeshFilesTest
 {
 protected:
-  std::string writePolyData(const std::string& name, bool binary) const
+  std::string writePolyData(const std::string& name, bool binary, int version = 51) const
   {
     vtkNew<vtkPolyDataWriter> writer;
+    writer->SetFileVersion(version);
     writer->SetInputData(attributedSphere());
     writer->SetFileName(this->path(name).c_str());
     binary ? writer->SetFileTypeToBinary() : writer->SetFileTypeToASCII();
@@ -105,7 +106,7 @@ protected:
     return this->path(name);
   }
 
-  std::string writeGrid(const std::string& name, bool binary) const
+  std::string writeGrid(const std::string& name, bool binary, int version = 51) const
   {
     vtkSmartPointer<vtkPolyData> sphere = attributedSphere();
     vtkNew<vtkUnstructuredGrid> grid;
@@ -119,6 +120,7 @@ protected:
       grid->InsertNextCell(sphere->GetCellType(c), ids);
     }
     vtkNew<vtkUnstructuredGridWriter> writer;
+    writer->SetFileVersion(version);
     writer->SetInputData(grid);
     writer->SetFileName(this->path(name).c_str());
     binary ? writer->SetFileTypeToBinary() : writer->SetFileTypeToASCII();
@@ -348,6 +350,68 @@ TEST_F(VtkLegacySizesTest, VersionFourCellListsAreChecked)
                            0),
             0u)
       << *problem;
+  // A value that does not read whole (VTK 9.1 built cells from the rest and read past them) and a
+  // list the file cuts short.
+  const std::string mangled = this->write("mangled.vtk", header + "POLYGONS 2 8\n3 0 1 2\n3 0 1*2 2\n");
+  EXPECT_EQ(vtkLegacySizeProblem(mangled),
+            "line 9: value 7 of the POLYGONS list, \"1*2\", is not a whole number");
+  const std::string shorter = this->write("short.vtk", header + "POLYGONS 2 8\n3 0 1 2\n3 0\n");
+  EXPECT_EQ(vtkLegacySizeProblem(shorter), "line 7: POLYGONS lists 8 values, the file ends after 6");
+}
+
+// Version 4.2 files as VTK writes them (SetFileVersion(42)), ASCII and binary, pass and load; the
+// same with the first cell's point count made 3000, past the list's 2112 values (its first
+// value: a text token, or a big-endian int right after the keyword line) are refused by the walk of the list, by
+// loadMesh with the file's name.
+TEST_F(VtkLegacySizesTest, VersionFourCellListsAreWalked)
+{
+  for (bool binary : {false, true})
+  {
+    for (bool grid : {false, true})
+    {
+      const std::string name = std::string(grid ? "grid" : "poly") + (binary ? "-b" : "-a");
+      const std::string file = grid ? this->writeGrid(name + ".vtk", binary, 42)
+                                    : this->writePolyData(name + ".vtk", binary, 42);
+      const std::string content = readAll(file);
+      ASSERT_EQ(content.rfind("# vtk DataFile Version 4.2\n", 0), 0u) << file;
+      EXPECT_EQ(vtkLegacySizeProblem(file), std::nullopt) << file;
+      EXPECT_EQ(loadMesh(file).polyData->GetNumberOfPolys(),
+                makeSphere(24, 12)->GetNumberOfPolys())
+          << file;
+      const std::string keyword = grid ? "\nCELLS " : "\nPOLYGONS ";
+      const size_t at = content.find(keyword);
+      ASSERT_NE(at, std::string::npos) << file;
+      const size_t data = content.find('\n', at + 1) + 1;
+      std::string corrupt = content;
+      if (binary)
+      {
+        ASSERT_EQ(corrupt.substr(data, 4), std::string("\0\0\0\3", 4)) << file;
+        corrupt.replace(data, 4, std::string("\0\0\x0B\xB8", 4));
+      }
+      else
+      {
+        ASSERT_EQ(corrupt.substr(data, 2), "3 ") << file;
+        corrupt.replace(data, 1, "3000");
+      }
+      const std::string bad = this->path(name + "-corrupt.vtk");
+      writeAll(bad, corrupt);
+      const std::optional<std::string> problem = vtkLegacySizeProblem(bad);
+      ASSERT_TRUE(problem.has_value()) << bad;
+      EXPECT_NE(problem->find(keyword.substr(1) + "lists "), std::string::npos) << *problem;
+      EXPECT_NE(problem->find("but cell 0 declares 3000 points, past the list's end"),
+                std::string::npos)
+          << *problem;
+      try
+      {
+        loadMesh(bad);
+        ADD_FAILURE() << "read " << bad;
+      }
+      catch (const Error& e)
+      {
+        EXPECT_EQ(std::string(e.what()).rfind(bad + ": line ", 0), 0u) << e.what();
+      }
+    }
+  }
 }
 
 // POINTS n float in a binary file: n triples of 12 bytes. As many as the file's bytes hold
