@@ -11,6 +11,7 @@
 #include <locale>
 #include <sstream>
 #include <system_error>
+#include <utility>
 #include <vector>
 
 namespace aniso
@@ -50,32 +51,25 @@ std::optional<long long> countOf(const std::string& token)
 }
 
 // The bytes a value of a legacy type name takes in a binary file, in eighths of a byte (a bit
-// array packs eight values a byte); nothing for a name VTK's legacy reader does not know. Strings
-// and variants take at least one byte.
+// array packs eight values a byte); nothing for a name VTK's legacy reader does not know. VTK
+// 9.1 matches a type name by its start (strncmp: "bitble" is a bit array, "int64" an int
+// array); none of its names starts another, so the one name that starts TYPE is the match.
+// Strings and variants take at least one byte.
 std::optional<int> eighthsOf(const std::string& type)
 {
+  static const std::pair<const char*, int> kTypes[] = {
+      {"bit", 1},           {"char", 8},          {"signed_char", 8},   {"unsigned_char", 8},
+      {"short", 16},        {"unsigned_short", 16}, {"vtkidtype", 64},  {"int", 32},
+      {"unsigned_int", 32}, {"long", 64},         {"unsigned_long", 64}, {"vtktypeint64", 64},
+      {"vtktypeuint64", 64}, {"float", 32},       {"double", 64},       {"string", 8},
+      {"utf8_string", 8},   {"variant", 8}};
   const std::string name = lowerCase(type);
-  if (name == "bit")
+  for (const auto& [known, eighths] : kTypes)
   {
-    return 1;
-  }
-  if (name == "char" || name == "signed_char" || name == "unsigned_char" || name == "string" ||
-      name == "utf8_string" || name == "variant")
-  {
-    return 8;
-  }
-  if (name == "short" || name == "unsigned_short")
-  {
-    return 16;
-  }
-  if (name == "int" || name == "unsigned_int" || name == "float")
-  {
-    return 32;
-  }
-  if (name == "long" || name == "unsigned_long" || name == "double" || name == "vtkidtype" ||
-      name == "vtktypeint64" || name == "vtktypeuint64")
-  {
-    return 64;
+    if (name.rfind(known, 0) == 0)
+    {
+      return eighths;
+    }
   }
   return std::nullopt;
 }
