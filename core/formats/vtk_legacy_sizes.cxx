@@ -5,6 +5,9 @@
 #include <algorithm>
 #include <cctype>
 #include <cstdint>
+#include <iterator>
+#include <cstdlib>
+#include <cerrno>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -136,6 +139,272 @@ public:
   std::uintmax_t FileBytes = 0;
   bool Binary = false;
   long long Line = 0;
+  std::optional<std::string> Problem;
+};
+
+// The dataset section of a version 5 polygonal or unstructured-grid file, walked token by token
+// as VTK 9.1's readers walk it, up to its POINT_DATA or CELL_DATA. VTK's polygonal reader
+// dereferences the field data it failed to read (vtkPolyDataReader::ReadMeshSimple deletes the
+// null result of ReadFieldData: SEGV, fuzz_vtk), and after a value that does not read its ASCII
+// readers go on from where the stream stopped, so that a "1field" among the points is read as
+// the value 1 and a FIELD keyword. So a FIELD block must read (its header, each array's name,
+// components, tuples and a type VTK knows) and every ASCII value of the walked arrays must read
+// whole as a number. The walk stops, leaving the rest to VTK, at a keyword it does not follow
+// (VTK refuses an unknown one), at string arrays and where binary data are cut short.
+class SectionWalk
+{
+public:
+  SectionWalk(const std::string& text, bool binary)
+      : Text(text)
+      , Binary(binary)
+  {
+  }
+
+  std::optional<std::string> run(bool polygonal)
+  {
+    for (int i = 0; i < 3; ++i)
+    {
+      this->skipLine();
+    }
+    std::string token;
+    if (!this->next(token) || lowerCase(token).rfind("dataset", 0) != 0 || !this->next(token))
+    {
+      return std::nullopt;
+    }
+    while (!this->Problem && this->next(token))
+    {
+      const std::string key = lowerCase(token);
+      const long long line = this->Line;
+      if (key.rfind("field", 0) == 0)
+      {
+        if (!this->field(line))
+        {
+          break;
+        }
+      }
+      else if (key.rfind("points", 0) == 0)
+      {
+        long long count = 0;
+        std::string type;
+        if (!this->count(count) || !this->next(type) || !this->values(count * 3, type, "POINTS", line))
+        {
+          break;
+        }
+      }
+      else if ((polygonal && (key.rfind("vertices", 0) == 0 || key.rfind("lines", 0) == 0 ||
+                              key.rfind("polygons", 0) == 0 ||
+                              key.rfind("triangle_strips", 0) == 0)) ||
+               (!polygonal && key.rfind("cells", 0) == 0))
+      {
+        long long offsets = 0;
+        long long connectivity = 0;
+        std::string word;
+        std::string type;
+        if (!this->count(offsets) || !this->count(connectivity))
+        {
+          break;
+        }
+        if (offsets < 1)
+        {
+          continue; // VTK reads an empty list and nothing after the counts
+        }
+        if (!this->next(word) || lowerCase(word) != "offsets" || !this->next(type) ||
+            !this->values(offsets, type, "OFFSETS", this->Line) || !this->next(word) ||
+            lowerCase(word) != "connectivity" || !this->next(type) ||
+            !this->values(connectivity, type, "CONNECTIVITY", this->Line))
+        {
+          break;
+        }
+      }
+      else if (!polygonal && key.rfind("cell_types", 0) == 0)
+      {
+        long long count = 0;
+        if (!this->count(count) || !this->values(count, "int", "CELL_TYPES", line))
+        {
+          break;
+        }
+      }
+      else
+      {
+        break; // POINT_DATA, CELL_DATA, or a keyword VTK refuses
+      }
+    }
+    return this->Problem;
+  }
+
+private:
+  // The next token (VTK's ReadString: white space skipped, then a run of other characters).
+  bool next(std::string& token)
+  {
+    while (this->At < this->Text.size() &&
+           std::isspace(static_cast<unsigned char>(this->Text[this->At])))
+    {
+      this->Line += this->Text[this->At] == '\n';
+      ++this->At;
+    }
+    const size_t start = this->At;
+    while (this->At < this->Text.size() &&
+           !std::isspace(static_cast<unsigned char>(this->Text[this->At])))
+    {
+      ++this->At;
+    }
+    token = this->Text.substr(start, this->At - start);
+    return !token.empty();
+  }
+
+  void skipLine()
+  {
+    const size_t end = this->Text.find('\n', this->At);
+    this->At = end == std::string::npos ? this->Text.size() : end + 1;
+    ++this->Line;
+  }
+
+  // A count as VTK's Read extracts it: the token's leading integer.
+  bool count(long long& value)
+  {
+    std::string token;
+    if (!this->next(token))
+    {
+      return false;
+    }
+    const std::optional<long long> read = countOf(token);
+    if (!read)
+    {
+      return false;
+    }
+    value = *read;
+    return true;
+  }
+
+  // COUNT values of TYPE after a declaration of KEYWORD on LINE, then an optional METADATA
+  // block. False where the walk stops.
+  bool values(long long count, const std::string& type, const std::string& keyword, long long line)
+  {
+    const std::optional<int> eighths = eighthsOf(type);
+    const std::string name = lowerCase(type);
+    if (!eighths || count < 0 || name.rfind("string", 0) == 0 ||
+        name.rfind("utf8_string", 0) == 0 || name.rfind("variant", 0) == 0)
+    {
+      return false;
+    }
+    if (this->Binary)
+    {
+      this->skipLine(); // VTK's "suck up newline"
+      const std::uintmax_t bytes =
+          (static_cast<std::uintmax_t>(count) * static_cast<std::uintmax_t>(*eighths) + 7) / 8;
+      if (bytes > this->Text.size() - this->At)
+      {
+        return false;
+      }
+      this->Line += std::count(this->Text.begin() + static_cast<std::ptrdiff_t>(this->At),
+                               this->Text.begin() + static_cast<std::ptrdiff_t>(this->At + bytes),
+                               '\n');
+      this->At += bytes;
+    }
+    else
+    {
+      std::string token;
+      for (long long i = 0; i < count; ++i)
+      {
+        if (!this->next(token))
+        {
+          return false; // VTK refuses a file that ends here
+        }
+        const char* begin = token.c_str();
+        char* end = nullptr;
+        errno = 0;
+        std::strtod(begin, &end);
+        if (end != begin + token.size())
+        {
+          std::string shown = token.substr(0, 32);
+          std::replace_if(
+              shown.begin(), shown.end(),
+              [](char c) { return !std::isprint(static_cast<unsigned char>(c)); }, '?');
+          this->Problem = "line " + std::to_string(this->Line) + ": value " +
+                          std::to_string(i + 1) + " of " + keyword + " (declared on line " +
+                          std::to_string(line) + "), \"" + shown +
+                          (token.size() > 32 ? "...\"" : "\"") + ", is not a number";
+          return false;
+        }
+      }
+    }
+    // An array's METADATA block: its lines up to an empty one.
+    const size_t mark = this->At;
+    const long long markLine = this->Line;
+    std::string token;
+    if (this->next(token) && lowerCase(token) == "metadata")
+    {
+      this->skipLine();
+      while (this->At < this->Text.size())
+      {
+        const size_t end = this->Text.find('\n', this->At);
+        const std::string text =
+            this->Text.substr(this->At, (end == std::string::npos ? this->Text.size() : end) - this->At);
+        this->skipLine();
+        if (text.find_first_not_of(" \t\r") == std::string::npos)
+        {
+          break;
+        }
+      }
+      return true;
+    }
+    this->At = mark;
+    this->Line = markLine;
+    return true;
+  }
+
+  // A FIELD block from its keyword on LINE: refused where VTK's ReadFieldData fails.
+  bool field(long long line)
+  {
+    std::string name;
+    long long arrays = 0;
+    if (!this->next(name) || !this->count(arrays))
+    {
+      this->Problem = "line " + std::to_string(line) +
+                      ": the FIELD header does not read as a name and an array count";
+      return false;
+    }
+    for (long long a = 0; a < arrays; ++a)
+    {
+      std::string arrayName;
+      long long components = 0;
+      long long tuples = 0;
+      std::string type;
+      if (!this->next(arrayName))
+      {
+        this->Problem = "line " + std::to_string(line) + ": FIELD " + name + " ends after " +
+                        std::to_string(a) + " of its " + std::to_string(arrays) +
+                        " arrays (the file ends)";
+        return false;
+      }
+      if (arrayName == "NULL_ARRAY")
+      {
+        continue;
+      }
+      const long long arrayLine = this->Line;
+      if (!this->count(components) || !this->count(tuples) || !this->next(type) ||
+          !eighthsOf(type))
+      {
+        this->Problem = "line " + std::to_string(arrayLine) + ": array " +
+                        std::to_string(a + 1) + " of FIELD " + name + " (line " +
+                        std::to_string(line) +
+                        ") does not read as a name, components, tuples and a type VTK knows";
+        return false;
+      }
+      if (!this->values(components * tuples, type, "FIELD array " + arrayName, arrayLine))
+      {
+        return false;
+      }
+    }
+    return true;
+  }
+
+  const std::string& Text;
+  bool Binary = false;
+  size_t At = 0;
+  long long Line = 1;
+
+public:
   std::optional<std::string> Problem;
 };
 } // namespace
@@ -466,7 +735,31 @@ std::optional<std::string> vtkLegacySizeProblem(const std::string& path)
       --fieldArraysLeft;
     }
   }
-  return scan.Problem;
+  if (scan.Problem || major < 5)
+  {
+    return scan.Problem;
+  }
+  // The walk of the dataset section (version 5 polygonal data and unstructured grids).
+  std::string dataset;
+  {
+    std::ifstream again(path, std::ios::binary);
+    for (int i = 0; i < 4 && std::getline(again, line); ++i)
+    {
+    }
+    const std::vector<std::string> tokens = tokensOf(line);
+    if (tokens.size() >= 2 && lowerCase(tokens[0]).rfind("dataset", 0) == 0)
+    {
+      dataset = lowerCase(tokens[1]);
+    }
+  }
+  const bool polygonal = dataset.rfind("polydata", 0) == 0;
+  if (!polygonal && dataset.rfind("unstructured_grid", 0) != 0)
+  {
+    return std::nullopt;
+  }
+  std::ifstream whole(path, std::ios::binary);
+  const std::string text((std::istreambuf_iterator<char>(whole)), std::istreambuf_iterator<char>());
+  return SectionWalk(text, scan.Binary).run(polygonal);
 }
 
 void checkVtkLegacySizes(const std::string& path)
