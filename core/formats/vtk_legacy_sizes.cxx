@@ -282,8 +282,17 @@ private:
   {
     const std::optional<int> eighths = eighthsOf(type);
     const std::string name = lowerCase(type);
-    if (!eighths || count < 0 || name.rfind("string", 0) == 0 ||
-        name.rfind("utf8_string", 0) == 0 || name.rfind("variant", 0) == 0)
+    const bool numeric = name.rfind("string", 0) != 0 && name.rfind("utf8_string", 0) != 0 &&
+                         name.rfind("variant", 0) != 0;
+    if (eighths && !numeric && keyword.rfind("FIELD", 0) != 0)
+    {
+      // VTK reads the strings (in a binary file each with a length of its own, which it
+      // allocates) before it finds they are no numbers.
+      this->Problem = "line " + std::to_string(line) + ": " + keyword + " of type " + type +
+                      ": points and cell lists hold numbers";
+      return false;
+    }
+    if (!eighths || count < 0 || !numeric)
     {
       return false;
     }
@@ -459,12 +468,14 @@ std::optional<std::string> vtkLegacySizeProblem(const std::string& path)
   {
     return std::nullopt;
   }
+  // VTK matches the file type by its start ("ASCII@" is ASCII).
   const std::string fileType = lowerCase(typeTokens[0]);
-  if (fileType != "ascii" && fileType != "binary")
+  const bool ascii = fileType.rfind("ascii", 0) == 0;
+  if (!ascii && fileType.rfind("binary", 0) != 0)
   {
     return std::nullopt;
   }
-  SizeScan scan(fileBytes, fileType == "binary");
+  SizeScan scan(fileBytes, !ascii);
   scan.Line = 3;
 
   long long attributeCount = 0; // POINT_DATA or CELL_DATA's count

@@ -523,7 +523,12 @@ TEST_F(VtkLegacySizesTest, TheDatasetSectionIsWalked)
        "line 6: value 8 of POINTS (declared on line 5), \"1field\", is not a number"},
       {head + points + "POLYGONS 2 3\nOFFSETS vtktypeint64\n0 3\nCONNECTIVITY vtktypeint64\n0 "
                        "1 two\n",
-       "line 11: value 3 of CONNECTIVITY (declared on line 10), \"two\", is not a number"}};
+       "line 11: value 3 of CONNECTIVITY (declared on line 10), \"two\", is not a number"},
+      {head + points + "POLYGONS 2 3\nOFFSETS utf8_string4\n0 3\n",
+       "line 8: OFFSETS of type utf8_string4: points and cell lists hold numbers"},
+      // VTK matches the file type by its start: "ASCII@" is ASCII, and checked as such.
+      {"# vtk DataFile Version 5.1\nbox\nASCII@\nDATASET POLYDATA\nPOINTS 1 float\n0 0 x\n",
+       "line 6: value 3 of POINTS (declared on line 5), \"x\", is not a number"}};
   for (const auto& [text, expected] : cases)
   {
     const std::string file = this->write("walked.vtk", text);
