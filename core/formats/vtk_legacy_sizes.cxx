@@ -186,7 +186,8 @@ public:
       {
         long long count = 0;
         std::string type;
-        if (!this->count(count) || !this->next(type) || !this->values(count * 3, type, "POINTS", line))
+        if (!this->count(count) || !this->next(type) || !this->fits(count, 3, "POINTS", line) ||
+            !this->values(count * 3, type, "POINTS", line))
         {
           break;
         }
@@ -292,7 +293,7 @@ private:
                       ": points and cell lists hold numbers";
       return false;
     }
-    if (!eighths || count < 0 || !numeric)
+    if (!eighths || !numeric || !this->fits(count, 1, keyword, line))
     {
       return false;
     }
@@ -362,6 +363,27 @@ private:
     return true;
   }
 
+  // Whether COUNT x COMPONENTS values (declared by KEYWORD on LINE) can be in the file, at a bit
+  // each at least; refused otherwise (and the product, which the walk then forms, cannot
+  // overflow).
+  bool fits(long long count, long long components, const std::string& keyword, long long line)
+  {
+    const std::uintmax_t bits = static_cast<std::uintmax_t>(this->Text.size()) * 8;
+    if (count >= 0 && components >= 0 &&
+        (components == 0 || static_cast<std::uintmax_t>(count) <=
+                                bits / static_cast<std::uintmax_t>(components)))
+    {
+      return true;
+    }
+    this->Problem = "line " + std::to_string(line) + ": " + keyword + " declares " +
+                    std::to_string(count) + " tuples of " + std::to_string(components) +
+                    (count < 0 || components < 0
+                         ? " values, a negative count"
+                         : " values, which the file's " + std::to_string(this->Text.size()) +
+                               " bytes cannot hold");
+    return false;
+  }
+
   // A FIELD block from its keyword on LINE: refused where VTK's ReadFieldData fails.
   bool field(long long line)
   {
@@ -400,7 +422,8 @@ private:
                         ") does not read as a name, components, tuples and a type VTK knows";
         return false;
       }
-      if (!this->values(components * tuples, type, "FIELD array " + arrayName, arrayLine))
+      if (!this->fits(tuples, components, "FIELD array " + arrayName, arrayLine) ||
+          !this->values(components * tuples, type, "FIELD array " + arrayName, arrayLine))
       {
         return false;
       }
@@ -623,7 +646,7 @@ std::optional<std::string> vtkLegacySizeProblem(const std::string& path)
           cellLine = scan.Line;
           if (keyword == "CELLS")
           {
-            gridCells = std::max(0LL, *count(1) - 1);
+            gridCells = *count(1) > 0 ? *count(1) - 1 : 0;
             gridCellsLine = scan.Line;
           }
           offsetCount = *count(1);

@@ -524,6 +524,12 @@ TEST_F(VtkLegacySizesTest, TheDatasetSectionIsWalked)
       {head + points + "POLYGONS 2 3\nOFFSETS vtktypeint64\n0 3\nCONNECTIVITY vtktypeint64\n0 "
                        "1 two\n",
        "line 11: value 3 of CONNECTIVITY (declared on line 10), \"two\", is not a number"},
+      // Counts whose product would overflow, mid-line where the line scan does not look.
+      {head + points + " FIELD f 1 a 9223372036854775807 9223372036854775807 float\n",
+       "line 7: FIELD array a declares 9223372036854775807 tuples of 9223372036854775807 values, "
+       "which the file's 146 bytes cannot hold"},
+      {head + points + " FIELD f 1 a 2 -4 float\n",
+       "line 7: FIELD array a declares -4 tuples of 2 values, a negative count"},
       {head + points + "POLYGONS 2 3\nOFFSETS utf8_string4\n0 3\n",
        "line 8: OFFSETS of type utf8_string4: points and cell lists hold numbers"},
       // VTK matches the file type by its start: "ASCII@" is ASCII, and checked as such.
