@@ -142,10 +142,12 @@ public:
   std::optional<std::string> Problem;
 };
 
-// The dataset section of a version 5 polygonal or unstructured-grid file, walked token by token
-// as VTK 9.1's readers walk it, up to its POINT_DATA or CELL_DATA. VTK's polygonal reader
-// dereferences the field data it failed to read (vtkPolyDataReader::ReadMeshSimple deletes the
-// null result of ReadFieldData: SEGV, fuzz_vtk), and after a value that does not read its ASCII
+// The dataset section of a version 5 file (polygonal data, grids, structured points), walked
+// token by token as VTK 9.1's readers walk it, up to its POINT_DATA or CELL_DATA. VTK's readers
+// dereference the field data they failed to read there (vtkPolyDataReader::ReadMeshSimple
+// deletes the null result of ReadFieldData: SEGV, fuzz_vtk; the structured-points, structured
+// and rectilinear grid readers crash the same way; in POINT_DATA and CELL_DATA VTK refuses such a
+// block itself), and after a value that does not read its ASCII
 // readers go on from where the stream stopped, so that a "1field" among the points is read as
 // the value 1 and a FIELD keyword. So a FIELD block must read (its header, each array's name,
 // components, tuples and a type VTK knows) and every ASCII value of the walked arrays must read
@@ -160,7 +162,10 @@ public:
   {
   }
 
-  std::optional<std::string> run(bool polygonal)
+  // POLYGONAL: polygonal data, else an unstructured grid unless STRUCTURED (structured points,
+  // structured and rectilinear grids, whose sections hold DIMENSIONS, SPACING, ORIGIN and
+  // coordinates instead of cells).
+  std::optional<std::string> run(bool polygonal, bool structured = false)
   {
     for (int i = 0; i < 3; ++i)
     {
@@ -195,7 +200,7 @@ public:
       else if ((polygonal && (key.rfind("vertices", 0) == 0 || key.rfind("lines", 0) == 0 ||
                               key.rfind("polygons", 0) == 0 ||
                               key.rfind("triangle_strips", 0) == 0)) ||
-               (!polygonal && key.rfind("cells", 0) == 0))
+               (!polygonal && !structured && key.rfind("cells", 0) == 0))
       {
         long long offsets = 0;
         long long connectivity = 0;
@@ -217,7 +222,31 @@ public:
           break;
         }
       }
-      else if (!polygonal && key.rfind("cell_types", 0) == 0)
+      else if (structured &&
+               (key.rfind("dimensions", 0) == 0 || key.rfind("spacing", 0) == 0 ||
+                key.rfind("aspect_ratio", 0) == 0 || key.rfind("origin", 0) == 0))
+      {
+        std::string value;
+        if (!this->next(value) || !this->next(value) || !this->next(value))
+        {
+          break;
+        }
+      }
+      else if (structured && (key.rfind("x_coordinates", 0) == 0 ||
+                              key.rfind("y_coordinates", 0) == 0 ||
+                              key.rfind("z_coordinates", 0) == 0))
+      {
+        long long count = 0;
+        std::string type;
+        std::string keyword = token.substr(0, 1) + "_COORDINATES";
+        std::transform(keyword.begin(), keyword.end(), keyword.begin(),
+                       [](unsigned char c) { return static_cast<char>(std::toupper(c)); });
+        if (!this->count(count) || !this->next(type) || !this->values(count, type, keyword, line))
+        {
+          break;
+        }
+      }
+      else if (!polygonal && !structured && key.rfind("cell_types", 0) == 0)
       {
         long long count = 0;
         if (!this->count(count) || !this->values(count, "int", "CELL_TYPES", line))
@@ -773,7 +802,7 @@ std::optional<std::string> vtkLegacySizeProblem(const std::string& path)
   {
     return scan.Problem;
   }
-  // The walk of the dataset section (version 5 polygonal data and unstructured grids).
+  // The walk of the dataset section (version 5).
   std::string dataset;
   {
     std::ifstream again(path, std::ios::binary);
@@ -786,14 +815,18 @@ std::optional<std::string> vtkLegacySizeProblem(const std::string& path)
       dataset = lowerCase(tokens[1]);
     }
   }
+  // The types as vtkDataSetReader tells them (by their start).
   const bool polygonal = dataset.rfind("polydata", 0) == 0;
-  if (!polygonal && dataset.rfind("unstructured_grid", 0) != 0)
+  const bool structured = dataset.rfind("structured_points", 0) == 0 ||
+                          dataset.rfind("structured_grid", 0) == 0 ||
+                          dataset.rfind("rectilinear_grid", 0) == 0;
+  if (!polygonal && !structured && dataset.rfind("unstructured_grid", 0) != 0)
   {
     return std::nullopt;
   }
   std::ifstream whole(path, std::ios::binary);
   const std::string text((std::istreambuf_iterator<char>(whole)), std::istreambuf_iterator<char>());
-  return SectionWalk(text, scan.Binary).run(polygonal);
+  return SectionWalk(text, scan.Binary).run(polygonal, structured);
 }
 
 void checkVtkLegacySizes(const std::string& path)

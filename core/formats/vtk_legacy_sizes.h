@@ -24,11 +24,12 @@
 // count runs past the list, counts that do not make as many cells as declared, a list cut short
 // and a value that is no whole number are refused (VTK 9.1 appends cells until the list's end by
 // the counts it holds, unchecked).
-// The dataset section of a version 5 polygonal or unstructured-grid file (up to its POINT_DATA
-// or CELL_DATA) is then walked token by token as VTK walks it: a FIELD block must read (its
-// header; each array's name, components, tuples and a type VTK knows), and each ASCII value of
-// its points, cell lists, cell types and field arrays must read whole as a number. VTK 9.1's
-// polygonal reader deletes the null field data of a FIELD block it failed to read (SEGV), and its
+// The dataset section of a version 5 file (up to its POINT_DATA or CELL_DATA; polygonal data,
+// unstructured, structured and rectilinear grids, structured points) is then walked token by
+// token as VTK walks it: a FIELD block must read (its header; each array's name, components,
+// tuples and a type VTK knows), and each ASCII value of its points, cell lists, cell types,
+// coordinates and field arrays must read whole as a number. VTK 9.1's readers delete the null
+// field data of a FIELD block they failed to read there (SEGV), and its
 // ASCII readers go on after a value that does not read ("1field" read as 1, then a FIELD
 // keyword).
 // The file is scanned line by line for these keywords at the start of a line (as VTK's writer

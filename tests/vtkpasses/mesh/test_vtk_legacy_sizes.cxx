@@ -35,6 +35,11 @@
 #include <vtkPolyDataWriter.h>
 #include <vtkRectilinearGrid.h>
 #include <vtkRectilinearGridWriter.h>
+#include <vtkImageData.h>
+#include <vtkPoints.h>
+#include <vtkStructuredGrid.h>
+#include <vtkStructuredGridWriter.h>
+#include <vtkStructuredPointsWriter.h>
 #include <vtkUnsignedCharArray.h>
 #include <vtkUnstructuredGrid.h>
 #include <vtkUnstructuredGridWriter.h>
@@ -152,6 +157,52 @@ protected:
     return this->path(name);
   }
 
+  // Structured points (an image with point scalars and field data) or, with GRID, a structured
+  // grid of the same points.
+  std::string writeStructured(const std::string& name, bool binary, bool grid) const
+  {
+    vtkNew<vtkImageData> image;
+    image->SetDimensions(4, 3, 2);
+    image->SetSpacing(0.5, 0.25, 1.0);
+    image->SetOrigin(-1.0, 0.0, 2.0);
+    vtkNew<vtkFloatArray> values;
+    values->SetName("values");
+    for (vtkIdType i = 0; i < image->GetNumberOfPoints(); ++i)
+    {
+      values->InsertNextValue(0.5f * static_cast<float>(i));
+    }
+    image->GetPointData()->SetScalars(values);
+    vtkNew<vtkDoubleArray> field;
+    field->SetName("scale");
+    field->InsertNextValue(2.0);
+    image->GetFieldData()->AddArray(field);
+    if (grid)
+    {
+      vtkNew<vtkStructuredGrid> structured;
+      vtkNew<vtkPoints> points;
+      for (vtkIdType i = 0; i < image->GetNumberOfPoints(); ++i)
+      {
+        points->InsertNextPoint(image->GetPoint(i));
+      }
+      structured->SetDimensions(4, 3, 2);
+      structured->SetPoints(points);
+      structured->GetPointData()->ShallowCopy(image->GetPointData());
+      structured->GetFieldData()->ShallowCopy(image->GetFieldData());
+      vtkNew<vtkStructuredGridWriter> writer;
+      writer->SetInputData(structured);
+      writer->SetFileName(this->path(name).c_str());
+      binary ? writer->SetFileTypeToBinary() : writer->SetFileTypeToASCII();
+      EXPECT_EQ(writer->Write(), 1);
+      return this->path(name);
+    }
+    vtkNew<vtkStructuredPointsWriter> writer;
+    writer->SetInputData(image);
+    writer->SetFileName(this->path(name).c_str());
+    binary ? writer->SetFileTypeToBinary() : writer->SetFileTypeToASCII();
+    EXPECT_EQ(writer->Write(), 1);
+    return this->path(name);
+  }
+
   std::vector<std::string> allFiles() const
   {
     std::vector<std::string> files;
@@ -161,6 +212,8 @@ protected:
       files.push_back(this->writePolyData("poly" + kind + ".vtk", binary));
       files.push_back(this->writeGrid("grid" + kind + ".vtk", binary));
       files.push_back(this->writeRectilinear("rectilinear" + kind + ".vtk", binary));
+      files.push_back(this->writeStructured("points" + kind + ".vtk", binary, false));
+      files.push_back(this->writeStructured("structured" + kind + ".vtk", binary, true));
     }
     return files;
   }
@@ -331,7 +384,7 @@ TEST_F(VtkLegacySizesTest, EnlargedCountsAreRefusedWithLineAndKeyword)
     ASSERT_TRUE(problem.has_value()) << file;
     EXPECT_NE(problem->find("a negative count"), std::string::npos) << *problem;
   }
-  EXPECT_GE(refused, 6 * 4);
+  EXPECT_GE(refused, 10 * 4);
 }
 
 // Before version 5 a cell list is "POLYGONS cells values" and its values are ints (4 bytes in
@@ -532,6 +585,17 @@ TEST_F(VtkLegacySizesTest, TheDatasetSectionIsWalked)
        "line 7: FIELD array a declares -4 tuples of 2 values, a negative count"},
       {head + points + "POLYGONS 2 3\nOFFSETS utf8_string4\n0 3\n",
        "line 8: OFFSETS of type utf8_string4: points and cell lists hold numbers"},
+      // The other readers crash on such a FIELD block too.
+      {"# vtk DataFile Version 5.1\nbox\nASCII\nDATASET STRUCTURED_POINTS\nDIMENSIONS 2 2 1\n"
+       "FIELD FieldData x\n",
+       "line 6: the FIELD header does not read as a name and an array count"},
+      {"# vtk DataFile Version 5.1\nbox\nASCII\nDATASET RECTILINEAR_GRID\nDIMENSIONS 2 1 1\n"
+       "X_COORDINATES 2 float\n0 1y\n",
+       "line 7: value 2 of X_COORDINATES (declared on line 6), \"1y\", is not a number"},
+      {"# vtk DataFile Version 5.1\nbox\nBINARY\nDATASET STRUCTURED_GRID\nFIELD FieldData 1\n"
+       "bad 1 3 nonsense\n",
+       "line 6: array 1 of FIELD FieldData (line 5) does not read as a name, components, tuples "
+       "and a type VTK knows"},
       // VTK matches the file type by its start: "ASCII@" is ASCII, and checked as such.
       {"# vtk DataFile Version 5.1\nbox\nASCII@\nDATASET POLYDATA\nPOINTS 1 float\n0 0 x\n",
        "line 6: value 3 of POINTS (declared on line 5), \"x\", is not a number"}};
