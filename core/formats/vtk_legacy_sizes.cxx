@@ -342,19 +342,31 @@ private:
     }
     else
     {
-      std::string token;
       for (long long i = 0; i < count; ++i)
       {
-        if (!this->next(token))
+        // The token in place (no copy: a large ASCII file holds millions of values).
+        while (this->At < this->Text.size() &&
+               std::isspace(static_cast<unsigned char>(this->Text[this->At])))
+        {
+          this->Line += this->Text[this->At] == '\n';
+          ++this->At;
+        }
+        const size_t start = this->At;
+        while (this->At < this->Text.size() &&
+               !std::isspace(static_cast<unsigned char>(this->Text[this->At])))
+        {
+          ++this->At;
+        }
+        if (this->At == start)
         {
           return false; // VTK refuses a file that ends here
         }
-        const char* begin = token.c_str();
+        const char* begin = this->Text.c_str() + start;
         char* end = nullptr;
-        errno = 0;
         std::strtod(begin, &end);
-        if (end != begin + token.size())
+        if (end != this->Text.c_str() + this->At)
         {
+          const std::string token = this->Text.substr(start, this->At - start);
           std::string shown = token.substr(0, 32);
           std::replace_if(
               shown.begin(), shown.end(),
@@ -640,6 +652,21 @@ std::optional<std::string> vtkLegacySizeProblem(const std::string& path)
   while (!scan.Problem && nextLine())
   {
     ++scan.Line;
+    // A line of numbers (data) declares nothing, unless it may be a field array's header (whose
+    // name may start with anything): skipped without splitting it.
+    if (fieldArraysLeft == 0)
+    {
+      const size_t first = line.find_first_not_of(" \t");
+      if (first == std::string::npos)
+      {
+        continue;
+      }
+      const char c = line[first];
+      if ((c >= '0' && c <= '9') || c == '-' || c == '+' || c == '.')
+      {
+        continue;
+      }
+    }
     const std::vector<std::string> tokens = tokensOf(line);
     if (tokens.empty())
     {
@@ -825,7 +852,9 @@ std::optional<std::string> vtkLegacySizeProblem(const std::string& path)
     return std::nullopt;
   }
   std::ifstream whole(path, std::ios::binary);
-  const std::string text((std::istreambuf_iterator<char>(whole)), std::istreambuf_iterator<char>());
+  std::string text(static_cast<size_t>(fileBytes), '\0');
+  whole.read(text.data(), static_cast<std::streamsize>(text.size()));
+  text.resize(static_cast<size_t>(std::max<std::streamsize>(0, whole.gcount())));
   return SectionWalk(text, scan.Binary).run(polygonal, structured);
 }
 
