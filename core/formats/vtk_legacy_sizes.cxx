@@ -263,8 +263,9 @@ public:
   }
 
 private:
-  // The next token (VTK's ReadString: white space skipped, then a run of other characters).
-  bool next(std::string& token)
+  // Moves past the next token (VTK's ReadString: white space skipped, then a run of other
+  // characters); returns where it starts (At when there is none).
+  size_t skipToken()
   {
     while (this->At < this->Text.size() &&
            std::isspace(static_cast<unsigned char>(this->Text[this->At])))
@@ -278,6 +279,13 @@ private:
     {
       ++this->At;
     }
+    return start;
+  }
+
+  // The next token, copied.
+  bool next(std::string& token)
+  {
+    const size_t start = this->skipToken();
     token = this->Text.substr(start, this->At - start);
     return !token.empty();
   }
@@ -345,18 +353,7 @@ private:
       for (long long i = 0; i < count; ++i)
       {
         // The token in place (no copy: a large ASCII file holds millions of values).
-        while (this->At < this->Text.size() &&
-               std::isspace(static_cast<unsigned char>(this->Text[this->At])))
-        {
-          this->Line += this->Text[this->At] == '\n';
-          ++this->At;
-        }
-        const size_t start = this->At;
-        while (this->At < this->Text.size() &&
-               !std::isspace(static_cast<unsigned char>(this->Text[this->At])))
-        {
-          ++this->At;
-        }
+        const size_t start = this->skipToken();
         if (this->At == start)
         {
           return false; // VTK refuses a file that ends here
