@@ -4,14 +4,17 @@
 # the "Aniso Surface" representation and by `aniso render`, with the same camera, material,
 # environment and samples (one frame, no jitter); the images must agree within BOUND relative
 # L2 over the pixels the surface covers whole (the coverage of `aniso render`'s transparent
-# background, less a pixel at the silhouette).
+# background, less a pixel at the silhouette). With --server PVPYTHON, pvserver (on --ranks MPI
+# ranks) draws and pvpython, its client, steers it and saves the image.
 #   test_paraview_render.py --aniso EXE --plugin SO --pythonpath DIR --work DIR
-#                           [--ranks N] [--mesh sphere|contour] [--library]
+#                           [--ranks N] [--mesh sphere|contour] [--library] [--server PVPYTHON]
 import argparse
 import json
 import os
+import socket
 import subprocess
 import sys
+import time
 
 import numpy as np
 from vtkmodules.util import numpy_support
@@ -32,6 +35,33 @@ def run(command, env):
     if result.returncode != 0:
         sys.exit("test_paraview_render: %s exited with %d" % (command[0], result.returncode))
     return result.stdout
+
+
+def start_server(ranks, env, log):
+    """Starts pvserver (under mpirun for several ranks) on a free port of this host and waits
+    until it accepts a client; returns the process and the port."""
+    with socket.socket() as probe:
+        probe.bind(("localhost", 0))
+        port = probe.getsockname()[1]
+    command = ["pvserver", "--server-port=%d" % port]
+    if ranks > 1:
+        command = ["mpirun", "--oversubscribe", "--timeout", "300", "-np", str(ranks), "-x",
+                   "PYTHONPATH"] + command
+    print("+ " + " ".join(command), flush=True)
+    server = subprocess.Popen(command, env=env, stdin=subprocess.DEVNULL, stdout=log,
+                              stderr=subprocess.STDOUT)
+    deadline = time.monotonic() + 60
+    while time.monotonic() < deadline:
+        if server.poll() is not None:
+            break
+        with open(log.name, encoding="utf-8", errors="replace") as f:
+            if "Accepting connection" in f.read():
+                return server, port
+        time.sleep(0.2)
+    server.kill()
+    with open(log.name, encoding="utf-8", errors="replace") as f:
+        print(f.read()[-4000:])
+    sys.exit("test_paraview_render: pvserver did not start")
 
 
 def read_png(path):
@@ -55,6 +85,7 @@ def main():
     parser.add_argument("--ranks", type=int, default=1)
     parser.add_argument("--mesh", default="sphere")
     parser.add_argument("--library", action="store_true")
+    parser.add_argument("--server", metavar="PVPYTHON")
     a = parser.parse_args()
 
     os.makedirs(a.work, exist_ok=True)
@@ -86,14 +117,33 @@ def main():
          reference] + material, env)
 
     image = os.path.join(a.work, "paraview.png")
-    pv = ["pvbatch", os.path.join(HERE, "pv_render.py"), a.plugin, mesh, image, str(SIZE),
-          str(SAMPLES)] + (["redistribute"] if a.ranks > 1 else []) + pv_material
-    if a.ranks > 1:
-        # A rank that fails leaves the others waiting: mpirun ends the job after its timeout.
-        pv = ["mpirun", "--oversubscribe", "--timeout", "300", "-np", str(a.ranks), "-x", "PYTHONPATH"] + pv
-    out = run(pv, env)
+    arguments = [os.path.join(HERE, "pv_render.py"), a.plugin, mesh, image, str(SIZE),
+                 str(SAMPLES)]
+    partitioned = ["redistribute"] if a.ranks > 1 else []
+    if a.server:
+        with open(os.path.join(a.work, "pvserver.log"), "w+", encoding="utf-8") as log:
+            server, port = start_server(a.ranks, env, log)
+            try:
+                out = run([a.server] + arguments + ["connect=%d" % port] + partitioned
+                          + pv_material, env)
+                # The server ends when its client disconnects.
+                server.wait(timeout=60)
+            finally:
+                if server.poll() is None:
+                    server.kill()
+                log.seek(0)
+                print("pvserver: " + log.read()[-2000:], flush=True)
+        if "rendered by the server" not in out:
+            sys.exit("test_paraview_render: the server did not render")
+    else:
+        pv = ["pvbatch"] + arguments + partitioned + pv_material
+        if a.ranks > 1:
+            # A rank that fails leaves the others waiting: mpirun ends the job after its timeout.
+            pv = ["mpirun", "--oversubscribe", "--timeout", "300", "-np", str(a.ranks), "-x",
+                  "PYTHONPATH"] + pv
+        out = run(pv, env)
     if "%d rank(s)" % a.ranks not in out:
-        sys.exit("test_paraview_render: pvbatch did not run on %d ranks" % a.ranks)
+        sys.exit("test_paraview_render: ParaView did not run on %d ranks" % a.ranks)
 
     ours = read_png(reference)
     theirs = read_png(image)
@@ -108,8 +158,9 @@ def main():
         sys.exit("test_paraview_render: the surface covers only %d pixels" % count)
     difference = theirs[..., :3][inner] - ours[..., :3][inner]
     error = float(np.sqrt((difference ** 2).sum() / (ours[..., :3][inner] ** 2).sum()))
-    print("test_paraview_render: %s, %d rank(s)%s: relative L2 %.5f over %d pixels (bound %g), "
-          "largest difference %d of 255" % (a.mesh, a.ranks, ", library material" if a.library
+    print("test_paraview_render: %s, %d rank(s)%s%s: relative L2 %.5f over %d pixels (bound %g), "
+          "largest difference %d of 255" % (a.mesh, a.ranks, ", pvserver and client" if a.server
+                                            else "", ", library material" if a.library
                                             else "", error, count, BOUND,
                                             int(np.abs(difference).max())))
     if not error <= BOUND:
