@@ -1,8 +1,5 @@
 #include "app/render_parts.h"
 
-#include "core/image/image.h"
-#include "core/maps/map_files.h"
-#include "core/maps/quaternion_map.h"
 #include "core/models/models.h"
 #include "core/parameters/choices.h"
 #include "core/quality/adaptive_quality.h"
@@ -44,11 +41,6 @@ std::pair<std::string, std::string> splitPartRule(const std::string& rule)
     throw usageError("--part", "'" + rule + "' is not PATTERN=MATERIAL");
   }
   return {rule.substr(0, equals), rule.substr(equals + 1)};
-}
-
-std::shared_ptr<const Image> imageOf(Image image)
-{
-  return std::make_shared<const Image>(std::move(image));
 }
 } // namespace
 
@@ -418,39 +410,7 @@ MaterialSettings librarySettingsOf(const Material& material, const ParameterSet&
         << (choice.reachable ? "" : " (the target needs more than the largest sample count)")
         << "\n";
   }
-  const auto text = [&](std::string_view key) -> const std::string&
-  { return material.value(key).text; };
-  const BumpMapping bump = parseBumpMapping(text("bump"));
-  if (bump == BumpMapping::Normal && !text("normal-map").empty())
-  {
-    s.normalMap = imageOf(readSignedMap(text("normal-map")));
-  }
-  else if (bump == BumpMapping::Quaternion && !text("quaternion-map").empty())
-  {
-    s.quaternionMap = imageOf(readSignedMap(text("quaternion-map")));
-  }
-  else if (bump == BumpMapping::Quaternion && !text("normal-map").empty())
-  {
-    ImageInfo info;
-    const Image normals = readImage(text("normal-map"), &info);
-    s.quaternionMap = imageOf(bakeQuaternionMap(normals, info.integerFormat, nullptr));
-  }
-  if (!text("tpr").empty())
-  {
-    s.tprMap = imageOf(readTprMap(text("tpr"), material.name + ": tpr"));
-  }
-  const std::pair<std::string_view, std::shared_ptr<const Image> MaterialSettings::*> plain[] = {
-      {"height-map", &MaterialSettings::heightMap},
-      {"albedo-map", &MaterialSettings::albedoMap},
-      {"ao-map", &MaterialSettings::occlusionMap},
-      {"metallic-map", &MaterialSettings::metallicMap}};
-  for (const auto& [key, map] : plain)
-  {
-    if (!text(key).empty())
-    {
-      s.*map = imageOf(readImage(text(key)));
-    }
-  }
+  readMaterialMaps(material, s);
   return s;
 }
 } // namespace aniso::cli

@@ -7,7 +7,11 @@
 # background, less a pixel at the silhouette). With --server PVPYTHON, pvserver (on --ranks MPI
 # ranks) draws and pvpython, its client, steers it and saves the image.
 #   test_paraview_render.py --aniso EXE --plugin SO --pythonpath DIR --work DIR
-#                           [--ranks N] [--mesh sphere|contour] [--library] [--server PVPYTHON]
+#                           [--ranks N] [--mesh sphere|contour] [--library [--maps]]
+#                           [--server PVPYTHON]
+# --maps: the library material has a normal map (grooves) and an albedo map (a checker), PNG
+# files VTK's writer makes here, on a sphere with ParaView's texture coordinates; the maps must
+# change `aniso render`'s image by far more than the bound, so that the match is of the maps.
 import argparse
 import json
 import os
@@ -18,7 +22,8 @@ import time
 
 import numpy as np
 from vtkmodules.util import numpy_support
-from vtkmodules.vtkIOImage import vtkPNGReader
+from vtkmodules.vtkCommonDataModel import vtkImageData
+from vtkmodules.vtkIOImage import vtkPNGReader, vtkPNGWriter
 
 BOUND = 0.01
 SIZE = 256
@@ -64,6 +69,34 @@ def start_server(ranks, env, log):
     sys.exit("test_paraview_render: pvserver did not start")
 
 
+def write_png(path, pixels):
+    """Writes an 8-bit RGB image (rows from the top, as files store them) with VTK's writer."""
+    height, width, _ = pixels.shape
+    image = vtkImageData()
+    image.SetDimensions(width, height, 1)
+    # VTK's image rows run from the bottom.
+    flat = np.ascontiguousarray(pixels[::-1].reshape(-1, 3)).astype(np.uint8)
+    image.GetPointData().SetScalars(numpy_support.numpy_to_vtk(flat, deep=True))
+    writer = vtkPNGWriter()
+    writer.SetFileName(path)
+    writer.SetInputData(image)
+    writer.Write()
+
+
+def write_maps(directory):
+    """A normal map of grooves along u (32 across the texture) and an albedo map of a checker."""
+    size = 256
+    u = (np.arange(size) + 0.5) / size
+    slope = 0.6 * np.cos(2.0 * np.pi * 32.0 * u)
+    normal = np.stack([-slope, np.zeros(size), np.ones(size)], axis=1)
+    normal /= np.linalg.norm(normal, axis=1, keepdims=True)
+    normals = np.broadcast_to(np.round(255.0 * (0.5 + 0.5 * normal)), (size, size, 3))
+    write_png(os.path.join(directory, "grooves.png"), normals)
+    cells = ((np.arange(size) // 32)[:, None] + (np.arange(size) // 32)[None, :]) % 2
+    albedo = np.where(cells[..., None] == 1, [230.0, 200.0, 120.0], [60.0, 90.0, 200.0])
+    write_png(os.path.join(directory, "checker.png"), albedo)
+
+
 def read_png(path):
     reader = vtkPNGReader()
     reader.SetFileName(path)
@@ -85,8 +118,11 @@ def main():
     parser.add_argument("--ranks", type=int, default=1)
     parser.add_argument("--mesh", default="sphere")
     parser.add_argument("--library", action="store_true")
+    parser.add_argument("--maps", action="store_true")
     parser.add_argument("--server", metavar="PVPYTHON")
     a = parser.parse_args()
+    if a.maps and not a.library:
+        parser.error("--maps needs --library")
 
     os.makedirs(a.work, exist_ok=True)
     env = dict(os.environ)
@@ -94,20 +130,27 @@ def main():
     if os.getuid() == 0:
         env["OMPI_ALLOW_RUN_AS_ROOT"] = "1"
         env["OMPI_ALLOW_RUN_AS_ROOT_CONFIRM"] = "1"
-    mesh = os.path.join(a.work, a.mesh + ".vtp")
-    run(["pvbatch", os.path.join(HERE, "pv_mesh.py"), a.mesh, mesh], env)
+    kind = "sphere-uv" if a.maps else a.mesh
+    mesh = os.path.join(a.work, kind + ".vtp")
+    run(["pvbatch", os.path.join(HERE, "pv_mesh.py"), kind, mesh], env)
 
     material = []
     pv_material = []
     if a.library:
         # A material of a library file as the application writes one, turned about Z.
         library = os.path.join(a.work, "library.json")
+        brass = {"nu": 3000, "nv": 40, "f0": [0.91, 0.78, 0.42], "albedo": [0.02, 0.015, 0.01],
+                 "tangents": "around:0,0,1"}
+        plain = dict(brass)
+        if a.maps:
+            # Paths relative to the library, as the application writes them.
+            write_maps(a.work)
+            brass.update({"albedo": [0.4, 0.4, 0.4], "bump": "normal",
+                          "normal-map": "grooves.png", "albedo-map": "checker.png"})
+            plain["albedo"] = brass["albedo"]
         with open(library, "w", encoding="utf-8") as f:
             json.dump({"format": "aniso-materials", "version": 1,
-                       "materials": {"turned brass": {"nu": 3000, "nv": 40,
-                                                      "f0": [0.91, 0.78, 0.42],
-                                                      "albedo": [0.02, 0.015, 0.01],
-                                                      "tangents": "around:0,0,1"}}}, f)
+                       "materials": {"turned brass": brass, "plain brass": plain}}, f)
         material = ["--materials", library, "--part", "*=turned brass"]
         pv_material = [library, "turned brass"]
 
@@ -147,6 +190,13 @@ def main():
 
     ours = read_png(reference)
     theirs = read_png(image)
+    unmapped = None
+    if a.maps:
+        plain = os.path.join(a.work, "aniso-plain.png")
+        run([a.aniso, "render", mesh, "--view", "-y", "--size", "%dx%d" % (SIZE, SIZE),
+             "--samples", str(SAMPLES), "--frames", "1", "--jitter", "off", "--background",
+             "none", "-o", plain, "--materials", library, "--part", "*=plain brass"], env)
+        unmapped = read_png(plain)
     covered = ours[..., 3] == 255
     inner = covered.copy()
     inner[1:, :] &= covered[:-1, :]
@@ -158,11 +208,17 @@ def main():
         sys.exit("test_paraview_render: the surface covers only %d pixels" % count)
     difference = theirs[..., :3][inner] - ours[..., :3][inner]
     error = float(np.sqrt((difference ** 2).sum() / (ours[..., :3][inner] ** 2).sum()))
-    print("test_paraview_render: %s, %d rank(s)%s%s: relative L2 %.5f over %d pixels (bound %g), "
-          "largest difference %d of 255" % (a.mesh, a.ranks, ", pvserver and client" if a.server
+    print("test_paraview_render: %s, %d rank(s)%s%s%s: relative L2 %.5f over %d pixels (bound %g), "
+          "largest difference %d of 255" % (kind, a.ranks, ", pvserver and client" if a.server
                                             else "", ", library material" if a.library
-                                            else "", error, count, BOUND,
+                                            else "", " with maps" if a.maps else "", error, count, BOUND,
                                             int(np.abs(difference).max())))
+    if unmapped is not None:
+        without = unmapped[..., :3][inner] - ours[..., :3][inner]
+        change = float(np.sqrt((without ** 2).sum() / (ours[..., :3][inner] ** 2).sum()))
+        print("test_paraview_render: the maps change aniso render's image by %.4f" % change)
+        if not change >= 10 * BOUND:
+            sys.exit("test_paraview_render: the maps change the image too little to be tested")
     if not error <= BOUND:
         sys.exit("test_paraview_render: the plugin's image differs from aniso render's")
 

@@ -1,6 +1,13 @@
 #include "vtkpasses/render/MaterialSettings.h"
 
+#include "core/image/image.h"
+#include "core/maps/map_files.h"
+#include "core/maps/quaternion_map.h"
+#include "core/parameters/choices.h"
+#include "core/parameters/material_library.h"
 #include "core/parameters/parameters.h"
+
+#include <utility>
 
 namespace aniso
 {
@@ -19,6 +26,44 @@ MaterialSettings materialFromParameters(const ParameterSet& parameters, Material
   base.heightScale = parameters.real("height-scale");
   base.field = fieldMappingFromParameters(parameters);
   return base;
+}
+
+void readMaterialMaps(const Material& material, MaterialSettings& settings)
+{
+  const auto text = [&](std::string_view key) -> const std::string&
+  { return material.value(key).text; };
+  const auto shared = [](Image image) { return std::make_shared<const Image>(std::move(image)); };
+  const BumpMapping bump = parseBumpMapping(text("bump"));
+  if (bump == BumpMapping::Normal && !text("normal-map").empty())
+  {
+    settings.normalMap = shared(readSignedMap(text("normal-map")));
+  }
+  else if (bump == BumpMapping::Quaternion && !text("quaternion-map").empty())
+  {
+    settings.quaternionMap = shared(readSignedMap(text("quaternion-map")));
+  }
+  else if (bump == BumpMapping::Quaternion && !text("normal-map").empty())
+  {
+    ImageInfo info;
+    const Image normals = readImage(text("normal-map"), &info);
+    settings.quaternionMap = shared(bakeQuaternionMap(normals, info.integerFormat, nullptr));
+  }
+  if (!text("tpr").empty())
+  {
+    settings.tprMap = shared(readTprMap(text("tpr"), material.name + ": tpr"));
+  }
+  const std::pair<std::string_view, std::shared_ptr<const Image> MaterialSettings::*> plain[] = {
+      {"height-map", &MaterialSettings::heightMap},
+      {"albedo-map", &MaterialSettings::albedoMap},
+      {"ao-map", &MaterialSettings::occlusionMap},
+      {"metallic-map", &MaterialSettings::metallicMap}};
+  for (const auto& [key, map] : plain)
+  {
+    if (!text(key).empty())
+    {
+      settings.*map = shared(readImage(text(key)));
+    }
+  }
 }
 
 std::optional<ReferenceMaterial> referenceMaterialOf(const MaterialSettings& settings,

@@ -16,6 +16,7 @@
 namespace aniso
 {
 class ParameterSet;
+struct Material;
 
 struct MaterialSettings
 {
@@ -95,6 +96,12 @@ struct MaterialSettings
 // height scale, the field mapping.
 // Everything else (the maps) keeps its value in BASE.
 MaterialSettings materialFromParameters(const ParameterSet& parameters, MaterialSettings base = {});
+
+// The maps a library material names, read from their files into SETTINGS: the normal or the
+// quaternion map its bump mapping uses (a quaternion map baked from a normal map when it names
+// only that), the TPR, height, albedo, occlusion and metallic maps; a map it does not name is
+// left as SETTINGS has it. Throws, naming the file and the reason, when one cannot be read.
+void readMaterialMaps(const Material& material, MaterialSettings& settings);
 
 // What the CPU reference shades for SETTINGS (its lobe, F0 and albedo: what every method, filter
 // and sampling of the material converges to), or nullopt with WHY set when the reference does

@@ -11,6 +11,7 @@
 #include "vtkpasses/render/DisplaySettings.h"
 #include "vtkpasses/render/EnvironmentLighting.h"
 #include "vtkpasses/render/MaterialSettings.h"
+#include "vtkpasses/render/ShaderHook.h"
 
 #include <algorithm>
 #include <fstream>
@@ -129,6 +130,7 @@ struct vtkAnisoRepresentation::Internals
   std::string material;                  // a material of it
   std::string readLibrary, readMaterial; // what `values` was read from
   aniso::Material::Values values;
+  aniso::MaterialSettings maps;          // its maps, read from their files
   std::string status;                          // what the last update reported
   std::map<std::string, std::string> rejected; // property: why its last value was refused
   std::string statusText;                      // GetAnisoStatus's
@@ -354,27 +356,26 @@ void vtkAnisoRepresentation::UpdateMaterial()
     if (d.library.empty() || d.material.empty())
     {
       d.values.clear();
+      d.maps = {};
+      d.readLibrary.clear();
+      d.readMaterial.clear();
     }
     else if (d.library != d.readLibrary || d.material != d.readMaterial)
     {
+      // The material and its maps' files are read once, when the library or the name changes.
       d.values.clear();
-      d.values = libraryOfFile(d.library).at(d.material).values;
+      d.maps = {};
+      d.readLibrary.clear();
+      const aniso::Material material = libraryOfFile(d.library).at(d.material);
+      aniso::readMaterialMaps(material, d.maps);
+      d.values = material.values;
       d.readLibrary = d.library;
       d.readMaterial = d.material;
     }
+    for (const auto& [key, value] : d.values)
     {
-      for (const auto& [key, value] : d.values)
+      if (!aniso::isMaterialMapKey(key))
       {
-        if (aniso::isMaterialMapKey(key))
-        {
-          if (!value.text.empty())
-          {
-            throw aniso::errorAbout(
-                d.library, "material '" + d.material + "' has a " + key +
-                               ", which the ParaView plugin does not read (docs/PARAVIEW.md)");
-          }
-          continue;
-        }
         parameters.setValue(key, value);
       }
     }
@@ -438,7 +439,7 @@ void vtkAnisoRepresentation::UpdateMaterial()
     }
     d.lighting->setRotationDegrees(parameters.real("env-rotation"));
 
-    const aniso::MaterialSettings settings = aniso::materialFromParameters(parameters);
+    const aniso::MaterialSettings settings = aniso::materialFromParameters(parameters, d.maps);
     if (!d.anisoMaterial && d.renderer && d.prepared)
     {
       d.anisoMaterial = std::make_unique<aniso::AnisoMaterial>(d.lighting, settings);
@@ -463,6 +464,14 @@ void vtkAnisoRepresentation::UpdateMaterial()
         property->AddFragmentShaderReplacement(tag, true, tag + "\n" + text, false);
       }
       d.displayCode = code;
+    }
+    // The material draws without its maps where the piece has no texture coordinates (its
+    // shader leaves them out): said, as the window says it.
+    if (settings.usesMaps() && d.prepared && !aniso::meshArraysOf(d.prepared).tcoords)
+    {
+      throw aniso::errorAbout(d.library, "material '" + d.material +
+                                             "': the data have no texture coordinates, which "
+                                             "its maps need (drawn without the maps)");
     }
     d.status.clear();
   }
