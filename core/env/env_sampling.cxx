@@ -1,5 +1,6 @@
 #include "core/env/env_sampling.h"
 
+#include "core/env/equirect_cache.h"
 #include "core/env/parallel.h"
 #include "core/error.h"
 #include "core/sampling/hammersley.h"
@@ -291,7 +292,7 @@ EnvironmentDistribution EnvironmentDistribution::bake(const Environment& env,
 {
   validateOptions(options);
   return EnvironmentDistribution(
-      renderEquirectRefined(env, options.width, options.width / 2, options.supersample),
+      cachedEquirectRefined(env, options.width, options.width / 2, options.supersample),
       options.uniformFraction, distributionKey(env.key(), options));
 }
 
@@ -302,7 +303,7 @@ EnvironmentDistribution EnvironmentDistribution::bake(const Environment& env,
   if (shown.size < 1 || shown.mips.empty())
     throw errorAbout("cube map", "empty");
   validateOptions(options);
-  Image image = renderEquirectRefined(env, options.width, options.width / 2, options.supersample);
+  Image image = cachedEquirectRefined(env, options.width, options.width / 2, options.supersample);
   const int w = image.width;
   const int h = image.height;
   parallelFor(h,

@@ -1,6 +1,7 @@
 #include "core/env/env_sources.h"
 
 #include "core/env/env_sampling.h"
+#include "core/env/equirect_cache.h"
 #include "core/error.h"
 
 #include <algorithm>
@@ -461,7 +462,8 @@ EnvAnalysis analyzeEnvironment(const Environment& env, const EnvAnalysisOptions&
   }
   // The supersamples find a sun's disc, the refinement its edge (see renderEquirectRefined).
   constexpr int kSupersample = 4;
-  Image image = renderEquirectRefined(env, options.width, options.width / 2, kSupersample);
+  // Kept on disk for the built-in environments (equirect_cache.h): seconds per process.
+  Image image = cachedEquirectRefined(env, options.width, options.width / 2, kSupersample);
   return analyzeEquirect(image, key, options);
 }
 

@@ -1,5 +1,7 @@
 #include "core/lut/lut_cache.h"
 
+#include "core/hash.h"
+
 #include <OpenImageIO/imageio.h>
 #include <algorithm>
 #include <atomic>
@@ -55,13 +57,6 @@ uint64_t exactBits(double x)
   return bits;
 }
 
-std::string hex16(uint64_t x)
-{
-  char text[17];
-  std::snprintf(text, sizeof text, "%016llx", static_cast<unsigned long long>(x));
-  return text;
-}
-
 Key keyOf(Kind kind, const AsLobe& lobe, int size, int samples)
 {
   return {kind, exactBits(lobe.nu), exactBits(lobe.nv), size, samples};
@@ -87,14 +82,7 @@ std::string fileName(const Key& key)
 // FNV-1a over the pixel bytes: detects damaged files that still decode.
 uint64_t checksum(const std::vector<float>& pixels)
 {
-  uint64_t hash = 14695981039346656037ull;
-  const auto* bytes = reinterpret_cast<const unsigned char*>(pixels.data());
-  const std::size_t count = pixels.size() * sizeof(float);
-  for (std::size_t k = 0; k < count; ++k)
-  {
-    hash = (hash ^ bytes[k]) * 1099511628211ull;
-  }
-  return hash;
+  return fnv1a(pixels.data(), pixels.size() * sizeof(float));
 }
 
 // What each LUT type stores and how its file names its channels.

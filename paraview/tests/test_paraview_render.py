@@ -7,7 +7,8 @@
 # background, less a pixel at the silhouette). With --server PVPYTHON, pvserver (on --ranks MPI
 # ranks) draws and pvpython, its client, steers it and saves the image.
 #   test_paraview_render.py --aniso EXE --plugin SO --pythonpath DIR --work DIR
-#                           [--ranks N] [--mesh sphere|contour] [--library [--maps]]
+#                           [--ranks N] [--mesh sphere|sphere-tangents|contour]
+#                           [--library [--maps]]
 #                           [--server PVPYTHON]
 # --maps: the library material has a normal map (grooves) and an albedo map (a checker), PNG
 # files VTK's writer makes here, on a sphere with ParaView's texture coordinates; the maps must

@@ -2,6 +2,7 @@
 
 #include "core/cache_directory.h"
 #include "core/error.h"
+#include "core/hash.h"
 #include "core/image/image.h"
 #include "core/models/gltf_material.h"
 #include "core/parameters/material_library.h"
@@ -73,22 +74,6 @@ bool keepImageBytes(tinygltf::Image* image, const int index, std::string* error,
   image->image.assign(bytes, bytes + std::max(size, 0));
   image->as_is = true;
   return true;
-}
-
-uint64_t fnv1a(const unsigned char* data, size_t size, uint64_t hash = 1469598103934665603ull)
-{
-  for (size_t i = 0; i < size; ++i)
-  {
-    hash = (hash ^ data[i]) * 1099511628211ull;
-  }
-  return hash;
-}
-
-std::string hex(uint64_t value)
-{
-  char text[17];
-  std::snprintf(text, sizeof text, "%016llx", static_cast<unsigned long long>(value));
-  return text;
 }
 
 std::string cacheDirectory()
@@ -343,7 +328,7 @@ std::string Reader::imageFile(const TextureRef& ref, const std::string& subject)
       cache_ = cacheDirectory();
     }
     file = (fs::path(cache_) /
-            (hex(fnv1a(image.image.data(), image.image.size())) + imageExtension(image)))
+            (hex16(fnv1a(image.image.data(), image.image.size())) + imageExtension(image)))
                .string();
     try
     {
@@ -390,10 +375,10 @@ std::string Reader::bake(const std::string& key, const Image& image)
   {
     cache_ = cacheDirectory();
   }
-  uint64_t hash = fnv1a(reinterpret_cast<const unsigned char*>(key.data()), key.size());
+  uint64_t hash = fnv1a(key.data(), key.size());
   hash = fnv1a(reinterpret_cast<const unsigned char*>(image.data.data()),
                image.data.size() * sizeof(float), hash);
-  const std::string file = (fs::path(cache_) / (hex(hash) + ".exr")).string();
+  const std::string file = (fs::path(cache_) / (hex16(hash) + ".exr")).string();
   std::error_code ec;
   if (!fs::exists(file, ec))
   {

@@ -5,6 +5,7 @@
 #include "core/parameters/material_library.h"
 #include "core/parameters/parameters.h"
 #include "vtkpasses/mesh/BrushingModel.h"
+#include "vtkpasses/mesh/CadReader.h"
 #include "vtkpasses/mesh/MeshValidation.h"
 #include "vtkpasses/mesh/SurfacePreparation.h"
 #include "vtkpasses/render/AnisoMaterial.h"
@@ -14,6 +15,7 @@
 #include "vtkpasses/render/ShaderHook.h"
 
 #include <algorithm>
+#include <array>
 #include <fstream>
 #include <glm/vec3.hpp>
 #include <map>
@@ -94,7 +96,38 @@ vtkSmartPointer<vtkPolyData> trianglesOf(vtkDataObject* data)
   {
     points->SetActiveNormals("Normals");
   }
+  vtkDataArray* tangents = points->GetArray("Tangents");
+  if (!points->GetTangents() && tangents && tangents->GetNumberOfComponents() == 3)
+  {
+    points->SetActiveTangents("Tangents");
+  }
   return out->GetNumberOfCells() > 0 ? out : nullptr;
+}
+
+// The tangent models `auto` chooses from, in its order (vtkpasses/mesh/SurfacePreparation.h):
+// the mesh's own tangents when all are valid, the UVs, the CAD faces' dS/du, axis:1,0,0.
+enum AutoTangents
+{
+  MeshTangents = 0,
+  UvTangents = 1,
+  FaceTangents = 2,
+  AxisTangents = 3
+};
+
+// Which of the first three a piece's surface can give (1) or not (0): its own tangents, all
+// valid against its normals (prepared as `auto` prepares it, which keeps them only then); texture
+// coordinates; a CAD part's dS/du.
+std::array<int, 3> tangentSourcesOf(vtkPolyData* clean)
+{
+  vtkPointData* points = clean->GetPointData();
+  std::array<int, 3> can{0, points->GetTCoords() != nullptr ? 1 : 0,
+                         points->GetArray(aniso::kBRepTangentUArray) != nullptr ? 1 : 0};
+  if (points->GetTangents())
+  {
+    can[MeshTangents] =
+        aniso::prepareSurface(clean, {}, "ParaView piece").report.tangentSource == "mesh" ? 1 : 0;
+  }
+  return can;
 }
 
 // The materials of a material library file, or of a session file's "materials" section.
@@ -141,6 +174,10 @@ struct vtkAnisoRepresentation::Internals
   vtkMTimeType preparedTime = 0;
   std::string preparedTangents;
   std::optional<glm::dvec3> preparedCentre;
+  int preparedAuto = MeshTangents;
+  // What `auto` stands for on this rank: the first model that every rank's piece can give, so
+  // that the partitions are brushed as the whole would be (a piece alone: its own first).
+  int autoTangents = MeshTangents;
   vtkSmartPointer<vtkPolyData> prepared;
 
   vtkRenderer* renderer = nullptr;
@@ -338,6 +375,34 @@ int vtkAnisoRepresentation::ProcessViewRequest(vtkInformationRequestKey* request
           glm::dvec3(0.5 * (global[0] - global[1]), 0.5 * (global[2] - global[3]),
                      0.5 * (global[4] - global[5]));
     }
+
+    // The tangent sources every rank's piece can give (an empty piece, or one that does not
+    // prepare, any: it draws nothing of its own, and its error is reported at the render).
+    int can[3] = {1, 1, 1};
+    try
+    {
+      if (vtkSmartPointer<vtkPolyData> triangles =
+              trianglesOf(vtkDataObject::SafeDownCast(this->GetRenderedDataObject(0))))
+      {
+        aniso::MeshReport report;
+        const std::array<int, 3> own = tangentSourcesOf(
+            aniso::sanitizeSurface(triangles, "ParaView piece", report));
+        std::copy(own.begin(), own.end(), can);
+      }
+    }
+    catch (const std::exception&)
+    {
+    }
+    int all[3];
+    std::copy(can, can + 3, all);
+    if (auto* controller = vtkMultiProcessController::GetGlobalController())
+    {
+      controller->AllReduce(can, all, 3, vtkCommunicator::MIN_OP);
+    }
+    this->Internal->autoTangents = all[MeshTangents] ? MeshTangents
+                                   : all[UvTangents] ? UvTangents
+                                   : all[FaceTangents] ? FaceTangents
+                                                        : AxisTangents;
   }
   else if (request_type == vtkPVView::REQUEST_RENDER())
   {
@@ -388,7 +453,7 @@ void vtkAnisoRepresentation::UpdateMaterial()
       d.preparedFrom = nullptr; // prepared anew for the new centre
     }
     if (piece != d.preparedFrom || (piece && piece->GetMTime() != d.preparedTime) ||
-        tangents != d.preparedTangents)
+        tangents != d.preparedTangents || d.autoTangents != d.preparedAuto)
     {
       d.prepared = nullptr;
       if (vtkSmartPointer<vtkPolyData> triangles = trianglesOf(piece))
@@ -397,7 +462,25 @@ void vtkAnisoRepresentation::UpdateMaterial()
         vtkSmartPointer<vtkPolyData> clean =
             aniso::sanitizeSurface(triangles, "ParaView piece", report);
         aniso::SurfaceOptions options;
-        if (tangents != "auto")
+        if (tangents == "auto" && d.autoTangents != MeshTangents)
+        {
+          // The model every rank can give: this piece's own tangents go even where they are
+          // valid, as a whole's would where some of them are not.
+          // (Setting no tangents removes the active array, as removing it by name would.)
+          clean->GetPointData()->SetTangents(nullptr);
+          aniso::BrushingModel model;
+          if (d.autoTangents == FaceTangents)
+          {
+            model.kind = aniso::BrushingKind::FaceU;
+          }
+          else if (d.autoTangents == AxisTangents)
+          {
+            model.kind = aniso::BrushingKind::Axis;
+            model.vector = glm::dvec3(1.0, 0.0, 0.0);
+          }
+          options.brushing = model;
+        }
+        else if (tangents != "auto")
         {
           options.brushing = aniso::parseBrushingModel(tangents, "AnisoTangents");
           // Brushed around an axis through the bounding box's centre: the whole data's, not
@@ -414,6 +497,7 @@ void vtkAnisoRepresentation::UpdateMaterial()
       d.preparedTime = piece ? piece->GetMTime() : 0;
       d.preparedTangents = tangents;
       d.preparedCentre = d.centre;
+      d.preparedAuto = d.autoTangents;
       if (d.prepared)
       {
         d.drawn->SetInputData(d.prepared);
