@@ -47,3 +47,6 @@ set(ANISO_COMPLETION_COMMANDS "${command_words}")
 set(ANISO_COMPLETION_MAIN_OPTIONS "${main_words}")
 set(ANISO_COMPLETION_CASES "${cases}")
 configure_file(${CMAKE_CURRENT_LIST_DIR}/resources/aniso.bash-completion.in "${OUTPUT}" @ONLY)
+# configure_file leaves an unchanged file as it is: its time would stay older than the
+# executable's, and every build would generate it again.
+file(TOUCH "${OUTPUT}")
