@@ -91,9 +91,9 @@ void writeCached(const fs::path& directory, const fs::path& path, const std::str
   std::error_code ec;
   fs::create_directories(directory, ec);
   static std::atomic<uint64_t> counter{0};
-  const fs::path temp = directory / ("." + path.filename().string() + "." +
-                                     std::to_string(::getpid()) + "." +
-                                     std::to_string(counter++) + ".tmp");
+  const fs::path temp =
+      directory / ("." + path.filename().string() + "." + std::to_string(::getpid()) + "." +
+                   std::to_string(counter++) + ".tmp");
   {
     std::ofstream out(temp, std::ios::binary | std::ios::trunc);
     const std::size_t bytes = image.data.size() * sizeof(float);

@@ -26,7 +26,8 @@ using aniso::Image;
 class CountingEnvironment : public aniso::Environment
 {
 public:
-  explicit CountingEnvironment(std::string key, double tint = 1.0) : key_(std::move(key)), tint_(tint)
+  explicit CountingEnvironment(std::string key, double tint = 1.0)
+      : key_(std::move(key)), tint_(tint)
   {
   }
   glm::dvec3 radiance(const glm::dvec3& d) const override

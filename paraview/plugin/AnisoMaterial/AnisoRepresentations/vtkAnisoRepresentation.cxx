@@ -163,7 +163,7 @@ struct vtkAnisoRepresentation::Internals
   std::string material;                  // a material of it
   std::string readLibrary, readMaterial; // what `values` was read from
   aniso::Material::Values values;
-  aniso::MaterialSettings maps;          // its maps, read from their files
+  aniso::MaterialSettings maps;                // its maps, read from their files
   std::string status;                          // what the last update reported
   std::map<std::string, std::string> rejected; // property: why its last value was refused
   std::string statusText;                      // GetAnisoStatus's
@@ -385,8 +385,8 @@ int vtkAnisoRepresentation::ProcessViewRequest(vtkInformationRequestKey* request
               trianglesOf(vtkDataObject::SafeDownCast(this->GetRenderedDataObject(0))))
       {
         aniso::MeshReport report;
-        const std::array<int, 3> own = tangentSourcesOf(
-            aniso::sanitizeSurface(triangles, "ParaView piece", report));
+        const std::array<int, 3> own =
+            tangentSourcesOf(aniso::sanitizeSurface(triangles, "ParaView piece", report));
         std::copy(own.begin(), own.end(), can);
       }
     }
@@ -399,10 +399,10 @@ int vtkAnisoRepresentation::ProcessViewRequest(vtkInformationRequestKey* request
     {
       controller->AllReduce(can, all, 3, vtkCommunicator::MIN_OP);
     }
-    this->Internal->autoTangents = all[MeshTangents] ? MeshTangents
-                                   : all[UvTangents] ? UvTangents
+    this->Internal->autoTangents = all[MeshTangents]   ? MeshTangents
+                                   : all[UvTangents]   ? UvTangents
                                    : all[FaceTangents] ? FaceTangents
-                                                        : AxisTangents;
+                                                       : AxisTangents;
   }
   else if (request_type == vtkPVView::REQUEST_RENDER())
   {
