@@ -175,6 +175,10 @@ struct vtkAnisoRepresentation::Internals
   std::string preparedTangents;
   std::optional<glm::dvec3> preparedCentre;
   int preparedAuto = MeshTangents;
+  // The tangent sources of this rank's piece (tangentSourcesOf), and the piece they are of.
+  std::array<int, 3> sources{1, 1, 1};
+  vtkDataObject* sourcesFrom = nullptr;
+  vtkMTimeType sourcesTime = 0;
   // What `auto` stands for on this rank: the first model that every rank's piece can give, so
   // that the partitions are brushed as the whole would be (a piece alone: its own first).
   int autoTangents = MeshTangents;
@@ -377,32 +381,39 @@ int vtkAnisoRepresentation::ProcessViewRequest(vtkInformationRequestKey* request
     }
 
     // The tangent sources every rank's piece can give (an empty piece, or one that does not
-    // prepare, any: it draws nothing of its own, and its error is reported at the render).
-    int can[3] = {1, 1, 1};
-    try
+    // prepare, any: it draws nothing of its own, and its error is reported at the render);
+    // found again only when the piece changed, not for every property's update.
+    Internals& d = *this->Internal;
+    auto* piece = vtkDataObject::SafeDownCast(this->GetRenderedDataObject(0));
+    if (piece != d.sourcesFrom || (piece && piece->GetMTime() != d.sourcesTime))
     {
-      if (vtkSmartPointer<vtkPolyData> triangles =
-              trianglesOf(vtkDataObject::SafeDownCast(this->GetRenderedDataObject(0))))
+      d.sources = {1, 1, 1};
+      try
       {
-        aniso::MeshReport report;
-        const std::array<int, 3> own =
-            tangentSourcesOf(aniso::sanitizeSurface(triangles, "ParaView piece", report));
-        std::copy(own.begin(), own.end(), can);
+        if (vtkSmartPointer<vtkPolyData> triangles = trianglesOf(piece))
+        {
+          aniso::MeshReport report;
+          d.sources = tangentSourcesOf(aniso::sanitizeSurface(triangles, "ParaView piece", report));
+        }
       }
+      catch (const std::exception&)
+      {
+      }
+      d.sourcesFrom = piece;
+      d.sourcesTime = piece ? piece->GetMTime() : 0;
     }
-    catch (const std::exception&)
-    {
-    }
+    int can[3];
+    std::copy(d.sources.begin(), d.sources.end(), can);
     int all[3];
     std::copy(can, can + 3, all);
     if (auto* controller = vtkMultiProcessController::GetGlobalController())
     {
       controller->AllReduce(can, all, 3, vtkCommunicator::MIN_OP);
     }
-    this->Internal->autoTangents = all[MeshTangents]   ? MeshTangents
-                                   : all[UvTangents]   ? UvTangents
-                                   : all[FaceTangents] ? FaceTangents
-                                                       : AxisTangents;
+    d.autoTangents = all[MeshTangents]   ? MeshTangents
+                     : all[UvTangents]   ? UvTangents
+                     : all[FaceTangents] ? FaceTangents
+                                         : AxisTangents;
   }
   else if (request_type == vtkPVView::REQUEST_RENDER())
   {
