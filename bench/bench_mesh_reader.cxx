@@ -2,6 +2,7 @@
 // same small mesh as OBJ (vtkOBJReader, in the reader process) and as PLY (the project's own
 // reader, in this process: the baseline), measured side by side in one run, N loads each
 // (default 40), median per load and the ratio. bench_mesh_reader [N] [TRIANGLES_PER_SIDE]
+#include "bench/median_time.h"
 #include "vtkpasses/mesh/BuiltinMeshes.h"
 #include "vtkpasses/mesh/MeshLoader.h"
 
@@ -17,22 +18,7 @@
 #include <vtkPLYWriter.h>
 #include <vtkPolyData.h>
 
-namespace
-{
-double medianMs(const std::string& path, int loads)
-{
-  std::vector<double> ms;
-  for (int i = 0; i < loads; ++i)
-  {
-    const auto start = std::chrono::steady_clock::now();
-    aniso::loadMesh(path);
-    ms.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
-                     .count());
-  }
-  std::sort(ms.begin(), ms.end());
-  return ms[ms.size() / 2];
-}
-} // namespace
+using aniso::bench::medianMs;
 
 int main(int argc, char** argv)
 {
@@ -52,10 +38,11 @@ int main(int argc, char** argv)
   plyWriter->SetInputData(plate);
   plyWriter->SetFileName(ply.c_str());
   plyWriter->Write();
-  medianMs(obj, 2); // warm: the page cache, the reader program's libraries
-  medianMs(ply, 2);
-  const double objMs = medianMs(obj, loads);
-  const double plyMs = medianMs(ply, loads);
+  medianMs([&] { aniso::loadMesh(obj); },
+           2); // warm: the page cache, the reader program's libraries
+  medianMs([&] { aniso::loadMesh(ply); }, 2);
+  const double objMs = medianMs([&] { aniso::loadMesh(obj); }, loads);
+  const double plyMs = medianMs([&] { aniso::loadMesh(ply); }, loads);
   std::printf("| mesh | loads | OBJ, reader process (ms) | PLY, in process (ms) | ratio |\n");
   std::printf("|---|---|---|---|---|\n");
   std::printf("| plate, %lld triangles | %d | %.2f | %.2f | %.2f |\n",

@@ -3,6 +3,7 @@
 // in the reader program, then the mesh's preparation: the baseline), measured side by side in
 // one run for a sphere written by vtkPolyDataWriter as ASCII and binary, median of N runs each
 // (default 5). bench_vtk_legacy_check [N] [SEGMENTS_AROUND]
+#include "bench/median_time.h"
 #include "core/formats/vtk_legacy_sizes.h"
 #include "vtkpasses/mesh/BuiltinMeshes.h"
 #include "vtkpasses/mesh/MeshLoader.h"
@@ -19,22 +20,7 @@
 #include <vtkPolyData.h>
 #include <vtkPolyDataWriter.h>
 
-namespace
-{
-double medianMs(const std::function<void()>& run, int runs)
-{
-  std::vector<double> ms;
-  for (int i = 0; i < runs; ++i)
-  {
-    const auto start = std::chrono::steady_clock::now();
-    run();
-    ms.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
-                     .count());
-  }
-  std::sort(ms.begin(), ms.end());
-  return ms[ms.size() / 2];
-}
-} // namespace
+using aniso::bench::medianMs;
 
 int main(int argc, char** argv)
 {
