@@ -395,6 +395,15 @@ EnvAnalysis analyzeEquirect(const Image& equirect, const std::string& key,
   std::sort(byPower.begin(), byPower.end(),
             [&](int a, int b)
             { return components[std::size_t(a)].power > components[std::size_t(b)].power; });
+  {
+    std::vector<int> rankOf(components.size());
+    for (std::size_t rank = 0; rank < byPower.size(); ++rank)
+      rankOf[std::size_t(byPower[rank])] = int(rank);
+    result.sourceRank.assign(texels, -1);
+    for (std::size_t i = 0; i < texels; ++i)
+      if (label[i] >= 0)
+        result.sourceRank[i] = rankOf[std::size_t(label[i])];
+  }
   const std::size_t listed = std::min<std::size_t>(byPower.size(), std::size_t(options.maxSources));
   for (std::size_t rank = 0; rank < listed; ++rank)
   {

@@ -80,6 +80,11 @@ struct EnvAnalysis
   // The split, on the analysed grid: excess + residual = the analysed image (RGB float).
   Image excess;
   Image residual;
+  // Per texel of the grid (row-major): the rank by power of the connected set of texels above T
+  // holding it (0 the most powerful, as `sources`; sets beyond maxSources keep their ranks),
+  // -1 outside the source part. What the renderer's source groups are made of
+  // (core/env/env_source_groups.h).
+  std::vector<int> sourceRank;
 
   // True when a source is bright enough against the rest that lobe samples alone miss it: a
   // listed one whose peak reaches kConcentratedPeak x T and which carries at least

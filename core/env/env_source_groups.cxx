@@ -1,0 +1,216 @@
+#include "core/env/env_source_groups.h"
+
+#include "core/env/environment.h"
+#include "core/error.h"
+
+#include <algorithm>
+#include <cmath>
+#include <glm/geometric.hpp>
+
+namespace aniso
+{
+namespace
+{
+constexpr double kPi = 3.14159265358979323846;
+
+double luminance(const Image& image, std::size_t i)
+{
+  return 0.2126 * image.data[i * 3] + 0.7152 * image.data[i * 3 + 1] +
+         0.0722 * image.data[i * 3 + 2];
+}
+
+// Texel corner (x, y) of the grid, y = 0 at the zenith.
+glm::dvec3 cornerDirection(double x, double y, int w, int h)
+{
+  return equirectToDirection({x / w, 1.0 - y / h});
+}
+
+} // namespace
+
+SourceGroups buildSourceGroups(const EnvAnalysis& analysis)
+{
+  SourceGroups out;
+  const int w = analysis.width;
+  const int h = analysis.height;
+  const std::size_t texels = std::size_t(w) * std::size_t(h);
+  if (analysis.sourceRank.size() != texels || analysis.excess.data.size() != texels * 3)
+    throw errorAbout(analysis.key, "the analysis' source ranks or excess do not cover its " +
+                                       std::to_string(w) + "x" + std::to_string(h) + " grid");
+  out.width = w;
+  out.height = h;
+  out.density.assign(texels, 0.0f);
+  out.group.assign(texels, std::int8_t(-1));
+
+  std::vector<double> omega(std::size_t(std::max(h, 0)));
+  for (int y = 0; y < h; ++y)
+    omega[std::size_t(y)] =
+        2.0 * kPi / w * (std::cos(kPi * y / h) - std::cos(kPi * (y + 1) / h));
+
+  // Each texel's group: its source's rank, the ranks from kMaxGroups - 1 on together. Groups
+  // with no excess power (a source of zero excess cannot exist, but guard) are dropped.
+  int groupCount = 0;
+  for (std::size_t i = 0; i < texels; ++i)
+    if (analysis.sourceRank[i] >= 0 && luminance(analysis.excess, i) > 0.0)
+      groupCount = std::max(groupCount,
+                            std::min(analysis.sourceRank[i], SourceGroups::kMaxGroups - 1) + 1);
+  std::vector<SourceGroup> groups(static_cast<std::size_t>(groupCount));
+  std::vector<glm::dvec3> weighted(groups.size(), glm::dvec3(0.0));
+  std::vector<std::vector<std::uint32_t>> members(groups.size());
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x)
+    {
+      const std::size_t i = std::size_t(y) * std::size_t(w) + std::size_t(x);
+      const double lum = luminance(analysis.excess, i);
+      if (analysis.sourceRank[i] < 0 || !(lum > 0.0))
+        continue;
+      const int g = std::min(analysis.sourceRank[i], SourceGroups::kMaxGroups - 1);
+      const double power = lum * omega[std::size_t(y)];
+      SourceGroup& group = groups[std::size_t(g)];
+      group.power += power;
+      group.solidAngle += omega[std::size_t(y)];
+      weighted[std::size_t(g)] += power * cornerDirection(x + 0.5, y + 0.5, w, h);
+      members[std::size_t(g)].push_back(std::uint32_t(i));
+      out.group[i] = std::int8_t(g);
+    }
+
+  // Keep the groups that hold texels (ranks are dense, but a rank's texels may all be zero).
+  std::vector<int> renumber(groups.size(), -1);
+  for (std::size_t g = 0; g < groups.size(); ++g)
+  {
+    if (members[g].empty())
+      continue;
+    SourceGroup group = groups[g];
+    group.direction = glm::length(weighted[g]) > 0.0 ? glm::normalize(weighted[g])
+                                                     : glm::dvec3(0.0, 0.0, 1.0);
+    double minCos = 1.0;
+    for (const std::uint32_t i : members[g])
+    {
+      const int x = int(i % std::uint32_t(w));
+      const int y = int(i / std::uint32_t(w));
+      for (int cy = 0; cy <= 1; ++cy)
+        for (int cx = 0; cx <= 1; ++cx)
+          minCos = std::min(minCos,
+                            glm::dot(group.direction, cornerDirection(x + cx, y + cy, w, h)));
+    }
+    group.angularRadius = std::acos(std::clamp(minCos, -1.0, 1.0));
+    group.first = int(out.entryTexel.size());
+    group.count = int(members[g].size());
+    double cumulative = 0.0;
+    for (const std::uint32_t i : members[g])
+    {
+      const double lum = luminance(analysis.excess, i);
+      cumulative += lum * omega[i / std::uint32_t(w)];
+      out.entryTexel.push_back(i);
+      out.entryCdf.push_back(float(cumulative / group.power));
+      out.density[i] = float(lum / group.power);
+    }
+    out.entryCdf.back() = 1.0f;
+    renumber[g] = int(out.groups.size());
+    out.power += group.power;
+    out.groups.push_back(group);
+  }
+  for (std::size_t i = 0; i < texels; ++i)
+    if (out.group[i] >= 0)
+      out.group[i] = std::int8_t(renumber[std::size_t(out.group[i])]);
+  return out;
+}
+
+std::vector<double> SourceGroups::powerSelection() const
+{
+  std::vector<double> selection(groups.size(), 0.0);
+  for (std::size_t g = 0; g < groups.size(); ++g)
+    selection[g] = power > 0.0 ? groups[g].power / power : 0.0;
+  return selection;
+}
+
+SourceGroupSample SourceGroups::sample(const std::vector<double>& selection,
+                                       const glm::dvec2& xi) const
+{
+  SourceGroupSample out;
+  if (groups.empty())
+    return out;
+  const double u = std::clamp(xi.x, 0.0, 1.0);
+  // The group whose share of [0, 1) holds u (the last non-empty one for rounding at the end).
+  int g = -1;
+  double start = 0.0;
+  double cumulative = 0.0;
+  for (int k = 0; k < int(groups.size()); ++k)
+  {
+    const double q = selection[std::size_t(k)];
+    if (q > 0.0)
+    {
+      g = k;
+      start = cumulative;
+      if (u < cumulative + q)
+        break;
+    }
+    cumulative += q;
+  }
+  const double q = selection[std::size_t(g)];
+  const double within = std::clamp((u - start) / q, 0.0, 1.0);
+  const SourceGroup& chosen = groups[std::size_t(g)];
+  // The first entry whose cumulative end exceeds `within`.
+  const auto begin = entryCdf.begin() + chosen.first;
+  const auto end = begin + chosen.count;
+  auto it = std::upper_bound(begin, end, float(within));
+  if (it == end)
+    --it;
+  const std::size_t e = std::size_t(it - entryCdf.begin());
+  const double c0 = e == std::size_t(chosen.first) ? 0.0 : double(entryCdf[e - 1]);
+  const double c1 = entryCdf[e];
+  const double s = std::clamp((within - c0) / std::max(c1 - c0, 1e-30), 0.0, 1.0);
+  const std::uint32_t texel = entryTexel[e];
+  const int x = int(texel % std::uint32_t(width));
+  const int y = int(texel / std::uint32_t(width));
+  const double zTop = std::cos(kPi * y / height);
+  const double zBottom = std::cos(kPi * (y + 1) / height);
+  const double z = std::clamp(zTop + (zBottom - zTop) * std::clamp(xi.y, 0.0, 1.0), -1.0, 1.0);
+  out.direction = equirectToDirection({(x + s) / width, 1.0 - std::acos(z) / kPi});
+  out.pdf = q * double(density[texel]);
+  out.group = g;
+  return out;
+}
+
+double SourceGroups::pdf(const std::vector<double>& selection, const glm::dvec3& d) const
+{
+  if (groups.empty() || !(glm::length(d) > 0.0))
+    return 0.0;
+  const glm::dvec2 uv = directionToEquirect(glm::normalize(d));
+  const int x = std::clamp(int(std::floor(uv.x * width)), 0, width - 1);
+  const int y = std::clamp(int(std::floor((1.0 - uv.y) * height)), 0, height - 1);
+  const std::size_t i = std::size_t(y) * std::size_t(width) + std::size_t(x);
+  const int g = group[i];
+  return g < 0 ? 0.0 : selection[std::size_t(g)] * double(density[i]);
+}
+
+std::vector<double> lobeAwareSelection(const SourceGroups& groups, const glm::dvec3& mirror,
+                                       const std::function<double(const glm::dvec3&)>& lobePdf,
+                                       double defensive)
+{
+  const std::size_t n = groups.groups.size();
+  std::vector<double> weight(n, 0.0);
+  double sum = 0.0;
+  const glm::dvec3 r = glm::normalize(mirror);
+  for (std::size_t g = 0; g < n; ++g)
+  {
+    const SourceGroup& group = groups.groups[g];
+    const double cosAngle = std::clamp(glm::dot(group.direction, r), -1.0, 1.0);
+    glm::dvec3 nearest = r;
+    if (std::acos(cosAngle) > group.angularRadius)
+    {
+      const glm::dvec3 across = r - cosAngle * group.direction;
+      const double length = glm::length(across);
+      const glm::dvec3 side = length > 0.0 ? across / length : glm::dvec3(0.0);
+      nearest = std::cos(group.angularRadius) * group.direction +
+                std::sin(group.angularRadius) * side;
+    }
+    weight[g] = group.power * std::min(lobePdf(nearest), 1.0 / group.solidAngle);
+    sum += weight[g];
+  }
+  std::vector<double> selection = groups.powerSelection();
+  if (sum > 0.0)
+    for (std::size_t g = 0; g < n; ++g)
+      selection[g] = (1.0 - defensive) * weight[g] / sum + defensive * selection[g];
+  return selection;
+}
+} // namespace aniso

@@ -1,0 +1,80 @@
+#pragma once
+// The source part of an analysed environment (core/env/env_sources.h, the excess above T) as a
+// few groups the renderer chooses between per pixel, so that a pixel's source samples go to the
+// sources its lobe sees: the seven most powerful sources each a group of its own, every other
+// source together the last (kMaxGroups in all). A source sample picks group g with probability
+// q_g (the pixel's selection, lobeAwareSelection), then a texel of the group with probability
+// proportional to its excess luminance power, then a point uniform in (phi, cos theta) inside
+// the texel: the density per solid angle is q_g x excess luminance / P_g there (P_g the group's
+// luminance power), so the excess over the density is P_g / q_g across a source of one colour.
+// docs/METHOD.md, "The sources split off".
+//
+// Layout (shader tables): the entries, group after group, each group's texels in row-major
+// order: entryTexel the texel index y W + x, entryCdf the cumulative probability within its
+// group at the entry's end (the group's last is 1). Per texel of the grid: density (per solid
+// angle, within its group) and group (-1 outside the source part).
+#include "core/env/env_sources.h"
+
+#include <cstdint>
+#include <functional>
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+#include <vector>
+
+namespace aniso
+{
+struct SourceGroup
+{
+  glm::dvec3 direction{0.0, 0.0, 1.0}; // excess-power-weighted mean direction (unit, env coords)
+  double angularRadius = 0.0;          // largest angle from direction to a texel corner
+  double solidAngle = 0.0;             // of its texels
+  double power = 0.0;                  // integral of the excess luminance over its texels
+  int first = 0;                       // its entries: [first, first + count)
+  int count = 0;
+};
+
+struct SourceGroupSample
+{
+  glm::dvec3 direction{0.0, 0.0, 1.0}; // env coords, unit
+  double pdf = 0.0;                    // per solid angle, the selection's
+  int group = -1;
+};
+
+struct SourceGroups
+{
+  static constexpr int kMaxGroups = 8;
+
+  int width = 0; // the analysis grid
+  int height = 0;
+  double power = 0.0; // of the whole source part (luminance)
+  std::vector<SourceGroup> groups;
+  std::vector<std::uint32_t> entryTexel;
+  std::vector<float> entryCdf;
+  std::vector<float> density;     // width x height
+  std::vector<std::int8_t> group; // width x height
+
+  // The CPU twin of the shader's source samples: a direction from xi in [0, 1)^2 (xi.x picks the
+  // group by the selection's cumulative sum, then the entry; xi.y the height inside the texel),
+  // and its density under the selection (one weight per group, summing to 1). Density zero and
+  // group -1 when the selected group is empty of power.
+  SourceGroupSample sample(const std::vector<double>& selection, const glm::dvec2& xi) const;
+  // Density per solid angle of sample() under the selection at direction d (env coords).
+  double pdf(const std::vector<double>& selection, const glm::dvec3& d) const;
+  // The selection in proportion to the groups' power alone.
+  std::vector<double> powerSelection() const;
+};
+
+// The groups of an analysis (its sourceRank and excess); none when it has no source part.
+// Throws aniso::Error naming the analysis' key when its sourceRank does not cover its grid.
+SourceGroups buildSourceGroups(const EnvAnalysis& analysis);
+
+// A pixel's selection: group g weighs w_g = P_g min(p(l_g), 1 / solidAngle_g), where p is the
+// lobe's density per solid angle (what the pixel's lobe samples draw) and l_g the direction of
+// the group's cap (direction, angularRadius) nearest to the mirror direction (env coords): an
+// upper bound of the share of the group's power the lobe's samples see, up to its colour. Then
+// q_g = (1 - defensive) w_g / sum w + defensive P_g / sum P (all by power when sum w is 0), so
+// that no group a lobe might see is left to the lobe samples alone.
+std::vector<double> lobeAwareSelection(const SourceGroups& groups, const glm::dvec3& mirror,
+                                       const std::function<double(const glm::dvec3&)>& lobePdf,
+                                       double defensive);
+} // namespace aniso
