@@ -1,5 +1,6 @@
 #include "vtkpasses/render/AnisoMaterial.h"
 
+#include "core/env/env_source_groups.h"
 #include "core/error.h"
 #include "core/fields/color_map.h"
 #include "core/lut/lut.h"
@@ -51,6 +52,11 @@ constexpr int kMaxSamples = 1 << 16;
 // to them at every N (docs/BENCHMARKS.md, "Filtered importance sampling and MIS in the shader").
 constexpr double kLodAnisotropyWeight = 0.25;
 constexpr double kLodBias = 0.0;
+
+// Share of a pixel's choice between the source groups kept in proportion to their power
+// (core/env/env_source_groups.h, lobeAwareSelection): a group whose cap the lobe's bound misses
+// keeps at least this part of the samples power alone gives it.
+constexpr double kSourceDefensive = 0.1;
 
 // Which points a set of COUNT samples takes in progressive frame FRAME: COUNT_NAME is the count
 // when the set is a block of the sequence (0: the rotated Hammersley set), BLOCK_NAME the bits
@@ -541,11 +547,9 @@ public:
     if (installed.environmentSources)
     {
       hook.bindTexture(program, "anisoSourceRadiance", lighting->sourceRadianceTexture(window));
-      hook.bindTexture(program, "anisoSourceCdf", lighting->sourceCdfTexture(window));
-      hook.bindTexture(program, "anisoSourcePdf", lighting->sourcePdfTexture(window));
-      hook.bindTexture(program, "anisoSourceGuide", lighting->sourceGuideTexture(window));
-      const EnvironmentDistribution& d = *lighting->sourceSplit().distribution;
-      program->SetUniform2i("anisoSourceGrid", std::array<int, 2>{d.width(), d.height()}.data());
+      hook.bindTexture(program, "anisoSourceEntries", lighting->sourceEntryTexture(window));
+      hook.bindTexture(program, "anisoSourceDensity", lighting->sourceDensityTexture(window));
+      setSourceGroupUniforms(program, *lighting->sourceSplit().groups);
       const int sourceCount =
           settings.sourceSamples > 0 ? settings.sourceSamples : std::max(1, settings.samples / 4);
       program->SetUniformi("anisoSourceSampleCount", sourceCount);
@@ -587,6 +591,36 @@ public:
       }
     }
     program->SetUniformf("anisoHeightScale", static_cast<float>(settings.heightScale));
+  }
+
+  // The source groups' caps, shares and entries (anisoSourceSelection, anisoSampleSources).
+  static void setSourceGroupUniforms(vtkShaderProgram* program, const SourceGroups& groups)
+  {
+    program->SetUniform2i("anisoSourceGrid",
+                          std::array<int, 2>{groups.width, groups.height}.data());
+    constexpr int kGroups = SourceGroups::kMaxGroups;
+    std::array<float, 4 * kGroups> cone{};
+    std::array<float, 4 * kGroups> info{};
+    const int count = std::min(int(groups.groups.size()), kGroups);
+    for (int g = 0; g < count; ++g)
+    {
+      const SourceGroup& group = groups.groups[std::size_t(g)];
+      const std::size_t i = 4 * std::size_t(g);
+      cone[i] = float(group.direction.x);
+      cone[i + 1] = float(group.direction.y);
+      cone[i + 2] = float(group.direction.z);
+      cone[i + 3] = float(std::cos(group.angularRadius));
+      info[i] = float(group.power / groups.power);
+      info[i + 1] = float(1.0 / group.solidAngle);
+      info[i + 2] = float(group.first);
+      info[i + 3] = float(group.count);
+    }
+    program->SetUniformi("anisoSourceGroupCount", count);
+    program->SetUniform4fv("anisoSourceGroupCone", kGroups,
+                           reinterpret_cast<const float(*)[4]>(cone.data()));
+    program->SetUniform4fv("anisoSourceGroupInfo", kGroups,
+                           reinterpret_cast<const float(*)[4]>(info.data()));
+    program->SetUniformf("anisoSourceDefensive", static_cast<float>(kSourceDefensive));
   }
 
   // The field's range (relative to the values' offset), the target's values and its colours.

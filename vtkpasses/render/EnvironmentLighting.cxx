@@ -258,26 +258,6 @@ bool EnvironmentLighting::prepared(EnvironmentSampling requested) const
   }
 }
 
-namespace
-{
-// Luminance of each texel: the sources' density, so that a sample's excess over its density is
-// the same wherever it lands on a source of one colour (the excess is read nearest, as the
-// density is constant per texel).
-Image luminanceOf(const Image& rgb)
-{
-  Image out(rgb.width, rgb.height, 1);
-  for (int y = 0; y < rgb.height; ++y)
-  {
-    for (int x = 0; x < rgb.width; ++x)
-    {
-      out.at(x, y, 0) =
-          0.2126f * rgb.at(x, y, 0) + 0.7152f * rgb.at(x, y, 1) + 0.0722f * rgb.at(x, y, 2);
-    }
-  }
-  return out;
-}
-} // namespace
-
 const EnvironmentLighting::SourceSplit& EnvironmentLighting::sourceSplit()
 {
   if (!split_)
@@ -292,8 +272,7 @@ const EnvironmentLighting::SourceSplit& EnvironmentLighting::sourceSplit()
     const EquirectEnvironment residual(analysis_->residual, analysis_->key + ":residual");
     split->residualCube = buildCubemap(residual, cubemap_.size);
     split->residualIrradiance = irradianceSh9(residual);
-    split->distribution = std::make_shared<const EnvironmentDistribution>(
-        luminanceOf(analysis_->excess), 0.0, analysis_->key + ":excess");
+    split->groups = std::make_shared<const SourceGroups>(buildSourceGroups(*analysis_));
     split_ = std::move(split);
   }
   return *split_;
@@ -315,23 +294,33 @@ void EnvironmentLighting::uploadSourceTextures(vtkOpenGLRenderWindow* window)
   }
   const SourceSplit& split = sourceSplit();
   const Image& excess = split.analysis->excess;
-  const Image cdf = split.distribution->cdfTable();
-  const Image pdf = split.distribution->pdfTable();
-  const Image guide =
-      samplingGuideTable(cdf, split.distribution->width(), split.distribution->height());
+  const SourceGroups& groups = *split.groups;
+  // Entries: (cumulative within the group, texel index), kSourceEntryWidth a row; at least one
+  // texel so that the sampler is complete (a group-less split draws no source sample).
+  const std::size_t entries = std::max<std::size_t>(groups.entryTexel.size(), 1);
+  const int entryRows = int((entries + kSourceEntryWidth - 1) / kSourceEntryWidth);
+  std::vector<float> entryData(std::size_t(entryRows) * kSourceEntryWidth * 2, 0.0f);
+  for (std::size_t e = 0; e < groups.entryTexel.size(); ++e)
+  {
+    entryData[2 * e] = groups.entryCdf[e];
+    entryData[2 * e + 1] = float(groups.entryTexel[e]);
+  }
+  std::vector<float> densityData(std::size_t(excess.width) * std::size_t(excess.height) * 2);
+  for (std::size_t i = 0; i < densityData.size() / 2; ++i)
+  {
+    densityData[2 * i] = groups.density.empty() ? 0.0f : groups.density[i];
+    densityData[2 * i + 1] = groups.group.empty() ? -1.0f : float(groups.group[i]);
+  }
   sourceTextures_[0] = uploadCubemap(window, split.residualCube, "residual environment cubemap");
   sourceTextures_[1] = uploadFloatTexture(window, excess.width, excess.height, 3,
                                           excess.data.data(), TextureFiltering::Nearest,
                                           TextureWrap::RepeatSClampT, "environment sources");
   sourceTextures_[2] =
-      uploadFloatTexture(window, cdf.width, cdf.height, 1, cdf.data.data(),
-                         TextureFiltering::Nearest, TextureWrap::Clamp, "sources sampling CDF");
+      uploadFloatTexture(window, kSourceEntryWidth, entryRows, 2, entryData.data(),
+                         TextureFiltering::Nearest, TextureWrap::Clamp, "source group entries");
   sourceTextures_[3] =
-      uploadFloatTexture(window, pdf.width, pdf.height, 1, pdf.data.data(),
-                         TextureFiltering::Nearest, TextureWrap::Clamp, "sources sampling density");
-  sourceTextures_[4] =
-      uploadFloatTexture(window, guide.width, guide.height, 1, guide.data.data(),
-                         TextureFiltering::Nearest, TextureWrap::Clamp, "sources sampling guide");
+      uploadFloatTexture(window, excess.width, excess.height, 2, densityData.data(),
+                         TextureFiltering::Nearest, TextureWrap::Clamp, "source group densities");
   sourceWindow_ = window;
 }
 
@@ -347,22 +336,16 @@ vtkTextureObject* EnvironmentLighting::sourceRadianceTexture(vtkOpenGLRenderWind
   return sourceTextures_[1];
 }
 
-vtkTextureObject* EnvironmentLighting::sourceCdfTexture(vtkOpenGLRenderWindow* window)
+vtkTextureObject* EnvironmentLighting::sourceEntryTexture(vtkOpenGLRenderWindow* window)
 {
   uploadSourceTextures(window);
   return sourceTextures_[2];
 }
 
-vtkTextureObject* EnvironmentLighting::sourcePdfTexture(vtkOpenGLRenderWindow* window)
+vtkTextureObject* EnvironmentLighting::sourceDensityTexture(vtkOpenGLRenderWindow* window)
 {
   uploadSourceTextures(window);
   return sourceTextures_[3];
-}
-
-vtkTextureObject* EnvironmentLighting::sourceGuideTexture(vtkOpenGLRenderWindow* window)
-{
-  uploadSourceTextures(window);
-  return sourceTextures_[4];
 }
 
 void EnvironmentLighting::releaseGraphicsResources(vtkWindow* window)

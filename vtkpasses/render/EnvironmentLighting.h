@@ -4,6 +4,7 @@
 // Shared by every anisotropic material of a renderer and by the accumulation pass.
 #include "core/env/cubemap.h"
 #include "core/env/env_sampling.h"
+#include "core/env/env_source_groups.h"
 #include "core/env/env_sources.h"
 #include "core/parameters/choices.h"
 #include "core/env/environment.h"
@@ -98,12 +99,13 @@ public:
 
   // The sources split off (Sources): the residual's cubemap (the analysed image less its
   // excess, core/env/env_sources.h, with its mip chain: what the lobe samples read) and the
-  // excess's own sampling distribution on the grid of the analysis (each texel's density
+  // excess's source groups on the grid of the analysis (core/env/env_source_groups.h: the
+  // strongest sources each a group, the rest together; within a group each texel's density
   // proportional to its excess luminance, uniform inside it, so the excess, read nearest, over
-  // the density is constant across a source of one colour). What is drawn is the analysed image
-  // (the image itself for an equirectangular environment at most EnvAnalysisOptions::maxWidth
-  // wide; an analytic one sampled into texel means, which keep a small sun's power). Baked on
-  // first use.
+  // the density is constant across a source of one colour; each pixel chooses between the
+  // groups by its lobe). What is drawn is the analysed image (the image itself for an
+  // equirectangular environment at most EnvAnalysisOptions::maxWidth wide; an analytic one
+  // sampled into texel means, which keep a small sun's power). Baked on first use.
   struct SourceSplit
   {
     std::shared_ptr<const EnvAnalysis> analysis;
@@ -111,16 +113,18 @@ public:
     // The residual's irradiance SH9 (as irradianceCoefficients): the diffuse of a material whose
     // lights are the sources (LEADR with env-lights, core/lights/env_lights.h).
     std::array<glm::vec3, 9> residualIrradiance{};
-    std::shared_ptr<const EnvironmentDistribution> distribution;
+    std::shared_ptr<const SourceGroups> groups;
   };
   const SourceSplit& sourceSplit();
   // In WINDOW's context: the residual cube (as cubeTexture), the excess (RGB float,
-  // equirectangular, nearest) and the excess distribution's tables (as the sampling tables).
+  // equirectangular, nearest), the groups' entries (RG float, kSourceEntryWidth wide, entry e at
+  // (e mod width, e / width): its cumulative probability within its group, its texel index) and
+  // per texel of the grid its density within its group and its group (RG float, -1 outside).
+  static constexpr int kSourceEntryWidth = 4096;
   vtkTextureObject* residualCubeTexture(vtkOpenGLRenderWindow* window);
   vtkTextureObject* sourceRadianceTexture(vtkOpenGLRenderWindow* window);
-  vtkTextureObject* sourceCdfTexture(vtkOpenGLRenderWindow* window);
-  vtkTextureObject* sourcePdfTexture(vtkOpenGLRenderWindow* window);
-  vtkTextureObject* sourceGuideTexture(vtkOpenGLRenderWindow* window);
+  vtkTextureObject* sourceEntryTexture(vtkOpenGLRenderWindow* window);
+  vtkTextureObject* sourceDensityTexture(vtkOpenGLRenderWindow* window);
 
   void releaseGraphicsResources(vtkWindow* window);
 
@@ -143,8 +147,8 @@ private:
   std::shared_ptr<const EnvAnalysis> analysis_;
   bool analysisFailed_ = false; // resolveSampling found no analysis: auto is off
   std::unique_ptr<SourceSplit> split_;
-  // residual cube, excess, CDF, pdf, guide
-  std::array<vtkSmartPointer<vtkTextureObject>, 5> sourceTextures_;
+  // residual cube, excess, entries, density and group
+  std::array<vtkSmartPointer<vtkTextureObject>, 4> sourceTextures_;
   vtkWeakPointer<vtkOpenGLRenderWindow> sourceWindow_;
 
   void uploadSamplingTables(vtkOpenGLRenderWindow* window);

@@ -76,13 +76,19 @@ uniform float anisoLobeFraction; // share of the lobe technique in the one-sampl
 #endif
 #ifdef ANISO_ENVIRONMENT_SOURCES
 // The environment's sources split off (core/env/env_sources.h): anisoEnvironment holds the
-// residual; the excess is an equirectangular texture (environment coordinates) with its own
-// sampling tables, laid out as the environment's.
+// residual; the excess is an equirectangular texture (environment coordinates), sampled by
+// groups (core/env/env_source_groups.h): each pixel chooses a group by its lobe, then a texel of
+// the group by its excess power.
+#define ANISO_SOURCE_GROUPS 8
 uniform sampler2D anisoSourceRadiance; // RGB32F excess, nearest (constant per texel)
-uniform sampler2D anisoSourceCdf;
-uniform sampler2D anisoSourcePdf;
-uniform sampler2D anisoSourceGuide;
-uniform ivec2 anisoSourceGrid;
+uniform sampler2D anisoSourceEntries;  // RG32F, 4096 wide: cumulative within the group, texel
+uniform sampler2D anisoSourceDensity;  // RG32F, W x H: density within the group, group (-1)
+uniform ivec2 anisoSourceGrid;         // (W, H)
+uniform int anisoSourceGroupCount;
+uniform vec4 anisoSourceGroupCone[ANISO_SOURCE_GROUPS]; // direction (env), cos of its radius
+// Its share of the sources' power, 1 / its solid angle, its first entry, its entry count.
+uniform vec4 anisoSourceGroupInfo[ANISO_SOURCE_GROUPS];
+uniform float anisoSourceDefensive; // share of the selection kept in proportion to the power
 uniform int anisoSourceSampleCount; // M, source samples per fragment and frame
 // The source samples' own block of the sequence, as anisoSequenceCount and anisoSequenceBlock
 // for the lobe's (0: the rotated Hammersley set).
@@ -322,7 +328,7 @@ float anisoLog2HalfVectorPdf(vec3 h)
 }
 #endif
 
-#if defined(ANISO_ENVIRONMENT_MIS) || defined(ANISO_ENVIRONMENT_SOURCES)
+#ifdef ANISO_ENVIRONMENT_MIS
 // Index i in [0, count) with cdf(i) <= x < cdf(i + 1) in row `row` of the CDF table, by
 // bisection between the guide table's entries for floor(x count) and the next (few steps or
 // none, instead of log2(count)): never an interval of zero width.
@@ -346,8 +352,8 @@ int anisoFindInterval(sampler2D cdf, sampler2D guide, int row, int count, float 
   return lo;
 }
 
-// A direction (environment coordinates) of a distribution's tables (the environment's or the
-// sources') and its density: a row from the marginal CDF, a column from the row's CDF, then
+// A direction (environment coordinates) of a distribution's tables (the environment's) and its
+// density: a row from the marginal CDF, a column from the row's CDF, then
 // uniform in (phi, cos theta) inside the texel, as EnvironmentDistribution::sample does.
 vec4 anisoSampleTables(sampler2D cdf, sampler2D guide, sampler2D pdf, ivec2 grid, vec2 xi)
 {
@@ -368,7 +374,9 @@ vec4 anisoSampleTables(sampler2D cdf, sampler2D guide, sampler2D pdf, ivec2 grid
   float phi = anisoPi - 2.0 * anisoPi * (float(x) + s) / float(w);
   return vec4(sinTheta * cos(phi), sinTheta * sin(phi), z, texelFetch(pdf, ivec2(x, y), 0).r);
 }
+#endif
 
+#if defined(ANISO_ENVIRONMENT_MIS) || defined(ANISO_ENVIRONMENT_SOURCES)
 // (u, theta / pi) of direction d (environment coordinates, need not be unit): the
 // equirectangular coordinates, texture t = 0 at the zenith.
 vec2 anisoEquirectCoords(vec3 d)
@@ -377,12 +385,6 @@ vec2 anisoEquirectCoords(vec3 d)
   return vec2(u, acos(clamp(d.z / max(length(d), 1e-30), -1.0, 1.0)) * (1.0 / anisoPi));
 }
 
-// Density of a distribution's tables at equirectangular coordinates uv.
-float anisoTablePdf(sampler2D pdf, ivec2 grid, vec2 uv)
-{
-  ivec2 texel = clamp(ivec2(uv * vec2(grid)), ivec2(0), grid - 1);
-  return texelFetch(pdf, texel, 0).r;
-}
 #endif
 
 #ifdef ANISO_ENVIRONMENT_MIS
@@ -418,6 +420,137 @@ vec2 anisoBrdfLutCoords(vec3 t, vec3 b, vec3 n, vec3 v)
 #endif
 
 #ifdef ANISO_ENVIRONMENT_SOURCES
+// The pixel's choice between the source groups (lobeAwareSelection in
+// core/env/env_source_groups.h): group g weighs P_g min(p_lobe(l_g), 1 / solid angle_g), l_g the
+// direction of its cap nearest to the mirror direction (p_lobe zero below the surface), and
+// q_g = (1 - d) w_g / sum w + d P_g / P (by power alone when no group is seen).
+void anisoSourceSelection(vec3 t, vec3 b, vec3 n, vec3 v, out float q[ANISO_SOURCE_GROUPS])
+{
+  mat3 environmentToWorld = transpose(anisoWorldToEnvironment);
+  vec3 r = anisoWorldToEnvironment * (2.0 * dot(n, v) * n - v);
+  float w[ANISO_SOURCE_GROUPS];
+  float sum = 0.0;
+  for (int g = 0; g < ANISO_SOURCE_GROUPS; ++g)
+  {
+    w[g] = 0.0;
+    if (g >= anisoSourceGroupCount)
+    {
+      continue;
+    }
+    vec3 c = anisoSourceGroupCone[g].xyz;
+    float cosRadius = anisoSourceGroupCone[g].w;
+    float cosAngle = clamp(dot(c, r), -1.0, 1.0);
+    vec3 nearest = r;
+    if (cosAngle < cosRadius)
+    {
+      vec3 across = r - cosAngle * c;
+      float len = length(across);
+      nearest = cosRadius * c +
+        sqrt(max(1.0 - cosRadius * cosRadius, 0.0)) * (len > 0.0 ? across / len : vec3(0.0));
+    }
+    vec3 l = environmentToWorld * nearest;
+    vec3 h = v + l;
+    float hLength = length(h);
+    if (dot(n, l) <= 0.0 || hLength <= 0.0)
+    {
+      continue;
+    }
+    h /= hLength;
+    float vDotH = dot(v, h);
+    if (vDotH <= 0.0)
+    {
+      continue;
+    }
+    float pdf =
+      exp2(anisoLog2HalfVectorPdf(vec3(dot(h, t), dot(h, b), dot(h, n))) - log2(4.0 * vDotH));
+    w[g] = anisoSourceGroupInfo[g].x * min(pdf, anisoSourceGroupInfo[g].y);
+    sum += w[g];
+  }
+  for (int g = 0; g < ANISO_SOURCE_GROUPS; ++g)
+  {
+    float share = g < anisoSourceGroupCount ? anisoSourceGroupInfo[g].x : 0.0;
+    q[g] = sum > 0.0 ? (1.0 - anisoSourceDefensive) * w[g] / sum + anisoSourceDefensive * share
+                     : share;
+  }
+}
+
+vec2 anisoSourceEntry(int e)
+{
+  return texelFetch(anisoSourceEntries, ivec2(e % 4096, e / 4096), 0).rg;
+}
+
+// A direction (environment coordinates) of the source groups under the selection q and its
+// density (SourceGroups::sample): xi.x picks the group by q's cumulative sum, then the entry
+// (bisection in the group's cumulative probabilities), its remainder the column inside the
+// texel; xi.y the height (uniform in cos theta). w = 0 when no group has a share.
+vec4 anisoSampleSources(float q[ANISO_SOURCE_GROUPS], vec2 xi)
+{
+  int g = -1;
+  float start = 0.0;
+  float cumulative = 0.0;
+  for (int k = 0; k < ANISO_SOURCE_GROUPS; ++k)
+  {
+    if (k >= anisoSourceGroupCount)
+    {
+      break;
+    }
+    if (q[k] > 0.0)
+    {
+      g = k;
+      start = cumulative;
+      if (xi.x < cumulative + q[k])
+      {
+        break;
+      }
+    }
+    cumulative += q[k];
+  }
+  if (g < 0)
+  {
+    return vec4(0.0, 0.0, 1.0, 0.0);
+  }
+  float within = clamp((xi.x - start) / q[g], 0.0, 1.0);
+  int first = int(anisoSourceGroupInfo[g].z);
+  int lo = first;
+  int hi = first + int(anisoSourceGroupInfo[g].w) - 1;
+  while (lo < hi)
+  {
+    int mid = (lo + hi) / 2;
+    if (anisoSourceEntry(mid).r > within)
+    {
+      hi = mid;
+    }
+    else
+    {
+      lo = mid + 1;
+    }
+  }
+  vec2 entry = anisoSourceEntry(lo);
+  float c0 = lo == first ? 0.0 : anisoSourceEntry(lo - 1).r;
+  float s = clamp((within - c0) / max(entry.r - c0, 1e-30), 0.0, 1.0);
+  int texel = int(entry.g + 0.5);
+  int w = anisoSourceGrid.x;
+  int h = anisoSourceGrid.y;
+  int x = texel % w;
+  int y = texel / w;
+  float zTop = cos(anisoPi * float(y) / float(h));
+  float zBottom = cos(anisoPi * float(y + 1) / float(h));
+  float z = clamp(mix(zTop, zBottom, xi.y), -1.0, 1.0);
+  float sinTheta = sqrt(max(1.0 - z * z, 0.0));
+  float phi = anisoPi - 2.0 * anisoPi * (float(x) + s) / float(w);
+  return vec4(sinTheta * cos(phi), sinTheta * sin(phi), z,
+              q[g] * texelFetch(anisoSourceDensity, ivec2(x, y), 0).r);
+}
+
+// Density of anisoSampleSources under q at equirectangular coordinates uv.
+float anisoSourcePdf(float q[ANISO_SOURCE_GROUPS], vec2 uv)
+{
+  ivec2 texel = clamp(ivec2(uv * vec2(anisoSourceGrid)), ivec2(0), anisoSourceGrid - 1);
+  vec2 densityGroup = texelFetch(anisoSourceDensity, texel, 0).rg;
+  int g = int(densityGroup.g + 0.5);
+  return densityGroup.g < -0.5 ? 0.0 : q[clamp(g, 0, ANISO_SOURCE_GROUPS - 1)] * densityGroup.r;
+}
+
 // The sources' light by multi-sample MIS of the N lobe samples and the M source samples
 // (balance heuristic): a sample of either technique in direction l adds
 // f (n.l) L_s(l) / (N p_lobe(l) + M p_s(l)) to the estimate, both densities per solid angle,
@@ -425,7 +558,8 @@ vec2 anisoBrdfLutCoords(vec3 t, vec3 b, vec3 n, vec3 v)
 // (anisoEnvironment) is integrated by the lobe samples alone. This returns
 // N L_s / (N p_lobe + M p_s) at a lobe sample (the caller multiplies by its AS weight, f (n.l)
 // / p_lobe, and the sum is divided by N).
-vec3 anisoSourceAtLobeSample(vec3 l, vec3 h, vec3 t, vec3 b, vec3 n, float vDotH, int count)
+vec3 anisoSourceAtLobeSample(vec3 l, vec3 h, vec3 t, vec3 b, vec3 n, float vDotH, int count,
+                             float q[ANISO_SOURCE_GROUPS])
 {
   vec2 uv = anisoEquirectCoords(anisoWorldToEnvironment * l);
   vec3 source = textureLod(anisoSourceRadiance, uv, 0.0).rgb;
@@ -435,7 +569,7 @@ vec3 anisoSourceAtLobeSample(vec3 l, vec3 h, vec3 t, vec3 b, vec3 n, float vDotH
   }
   float pdfLobe =
     exp2(anisoLog2HalfVectorPdf(vec3(dot(h, t), dot(h, b), dot(h, n))) - log2(4.0 * vDotH));
-  float pdfSource = anisoTablePdf(anisoSourcePdf, anisoSourceGrid, uv);
+  float pdfSource = anisoSourcePdf(q, uv);
   float n0 = float(count);
   return source * (n0 * pdfLobe / (n0 * pdfLobe + float(anisoSourceSampleCount) * pdfSource));
 }
@@ -461,6 +595,10 @@ vec3 anisoSpecular(vec3 t, vec3 b, vec3 n, vec3 v, vec3 f0)
   float c = anisoLobeFraction;
   mat3 tbn = mat3(t, b, n);
   mat3 environmentToWorld = transpose(anisoWorldToEnvironment);
+#endif
+#ifdef ANISO_ENVIRONMENT_SOURCES
+  float selection[ANISO_SOURCE_GROUPS];
+  anisoSourceSelection(t, b, n, v, selection);
 #endif
   for (int i = 0; i < count; ++i)
   {
@@ -524,7 +662,7 @@ vec3 anisoSpecular(vec3 t, vec3 b, vec3 n, vec3 v, vec3 f0)
     }
     vec3 radiance = anisoEnvironmentRadiance(l, anisoSampleLod(hs.w - log2(4.0 * vDotH), count));
 #ifdef ANISO_ENVIRONMENT_SOURCES
-    radiance += anisoSourceAtLobeSample(l, h, t, b, n, vDotH, count);
+    radiance += anisoSourceAtLobeSample(l, h, t, b, n, vDotH, count, selection);
 #endif
 #ifdef ANISO_METHOD_SPLIT_SUM
     sum += radiance * nDotL;
@@ -544,10 +682,9 @@ vec3 anisoSpecular(vec3 t, vec3 b, vec3 n, vec3 v, vec3 f0)
   int sourceCount = max(anisoSourceSampleCount, 0);
   for (int j = 0; j < sourceCount; ++j)
   {
-    vec4 ls = anisoSampleTables(anisoSourceCdf, anisoSourceGuide, anisoSourcePdf, anisoSourceGrid,
-                                anisoSamplePoint(j, sourceCount, shift,
-                                                 anisoSourceSequenceCount,
-                                                 anisoSourceSequenceBlock));
+    vec4 ls = anisoSampleSources(selection,
+                                 anisoSamplePoint(j, sourceCount, shift, anisoSourceSequenceCount,
+                                                  anisoSourceSequenceBlock));
     vec3 l = sourceToWorld * ls.xyz;
     float nDotL = dot(n, l);
     vec3 h = normalize(v + l);
