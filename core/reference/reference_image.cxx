@@ -99,6 +99,10 @@ std::string cacheKey(const std::vector<PixelSample>& geometry, int width, int he
   {
     key << " sun-cone"; // the sun integrated over its own cone (integrateSpecularSunSky)
   }
+  if (!model.ggx && sharedSourceQuadrature(environment))
+  {
+    key << " sources-split"; // the sources over their texels (integrateSpecularSources)
+  }
   return key.str();
 }
 
@@ -276,6 +280,22 @@ std::vector<int> selectPixelGrid(const std::vector<PixelSample>& geometry, int w
   return onGrid(eligiblePixels(geometry, width, height), width, height, stride);
 }
 
+namespace
+{
+// The Ashikhmin-Shirley specular by the rule the environment needs: the sun-sky's sun over its
+// own cone, an image's concentrated sources over their texels, anything else by the rules.
+ReferenceResult specularReference(const AsLobe& lobe, const glm::dvec3& f0, const Frame& frame,
+                                  const glm::dvec3& view, const Environment& environment,
+                                  const ReferenceOptions& options)
+{
+  if (const auto* sunSky = dynamic_cast<const SunSkyEnvironment*>(&environment))
+    return integrateSpecularSunSky(lobe, f0, frame, view, *sunSky, options);
+  if (const std::shared_ptr<const SourceQuadrature> sources = sharedSourceQuadrature(environment))
+    return integrateSpecularSources(lobe, f0, frame, view, environment, *sources, options);
+  return integrateSpecular(lobe, f0, frame, view, environment, options);
+}
+} // namespace
+
 ReferenceImage computeReference(const std::vector<PixelSample>& geometry, int width, int height,
                                 const std::vector<int>& selected, const ReferenceModel& model,
                                 const Environment& environment, const ReferenceOptions& options,
@@ -318,9 +338,7 @@ ReferenceImage computeReference(const std::vector<PixelSample>& geometry, int wi
         }
         else
         {
-          r = sunSky
-                  ? integrateSpecularSunSky(model.asLobe, model.f0, frame, s.view, *sunSky, options)
-                  : integrateSpecular(model.asLobe, model.f0, frame, s.view, environment, options);
+          r = specularReference(model.asLobe, model.f0, frame, s.view, environment, options);
         }
         image.pixels[std::size_t(i)] = {index % width, index / width, r.value, r.errorEstimate,
                                         r.converged};
@@ -351,10 +369,8 @@ ReferencePixel referencePixel(const PixelSample& s, int x, int y, const Referenc
   const Frame frame = Frame::fromNormalTangent(worldToEnvironment * world.n,
                                                worldToEnvironment * world.t);
   const glm::dvec3 view = worldToEnvironment * s.view;
-  const auto* sunSky = dynamic_cast<const SunSkyEnvironment*>(&environment);
   const ReferenceResult specular =
-      sunSky ? integrateSpecularSunSky(material.lobe, material.f0, frame, view, *sunSky, options)
-             : integrateSpecular(material.lobe, material.f0, frame, view, environment, options);
+      specularReference(material.lobe, material.f0, frame, view, environment, options);
   ReferencePixel p{x, y, specular.value, specular.errorEstimate, specular.converged};
   uint64_t count = specular.evaluations;
   if (material.albedo != glm::dvec3(0.0))

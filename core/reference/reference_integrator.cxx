@@ -1,5 +1,6 @@
 #include "core/reference/reference_integrator.h"
 
+#include "core/env/env_sources.h"
 #include "core/env/parallel.h"
 #include "core/env/quadrature.h"
 #include "core/error.h"
@@ -10,6 +11,7 @@
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
 #include <limits>
+#include <mutex>
 #include <string>
 #include <vector>
 
@@ -442,6 +444,119 @@ ReferenceResult sunSkySum(const SunSkyEnvironment& env, const Frame& frame, cons
   return result;
 }
 
+// f_s (n.l) of Ashikhmin-Shirley written out (see the file's header comment), for a tangent-space
+// light direction l and view v (v.z > 0).
+struct AsBrdfCos
+{
+  AsLobe lobe;
+  glm::dvec3 f0;
+  glm::dvec3 v;
+  glm::dvec3 operator()(const glm::dvec3& l) const
+  {
+    if (l.z <= 0.0)
+      return glm::dvec3(0.0);
+    const glm::dvec3 h = glm::normalize(v + l);
+    const double vDotH = glm::dot(v, h);
+    if (vDotH <= 0.0)
+      return glm::dvec3(0.0);
+    const double scale = std::sqrt((lobe.nu + 1.0) * (lobe.nv + 1.0)) / kTwoPi;
+    const double tangential = h.x * h.x + h.y * h.y;
+    const double exponent = tangential > 0.0
+                                ? (lobe.nu * h.x * h.x + lobe.nv * h.y * h.y) / tangential
+                                : 0.5 * (lobe.nu + lobe.nv);
+    const double logCos = tangential < 0.5 ? 0.5 * std::log1p(-tangential) : std::log(h.z);
+    const double ph = scale * std::exp(exponent * logCos);
+    return (ph * l.z / (4.0 * vDotH * std::max(v.z, l.z))) * schlick(f0, vDotH);
+  }
+};
+
+// The excess over its support at k x k cells a texel: midpoints in (phi, cos theta), each cell
+// 1 / k^2 of its texel's solid angle.
+template <class BrdfCos>
+glm::dvec3 excessAtCells(const SourceQuadrature& q, const Frame& frame, const BrdfCos& brdfCos,
+                         int k)
+{
+  const int w = q.width;
+  const int h = q.height;
+  return sumRows(int(q.support.size()), std::size_t(k) * std::size_t(k),
+                 [&](int i)
+                 {
+                   const std::uint32_t texel = q.support[std::size_t(i)];
+                   const int x = int(texel % std::uint32_t(w));
+                   const int y = int(texel / std::uint32_t(w));
+                   const double zTop = std::cos(kPi * y / h);
+                   const double zBottom = std::cos(kPi * (y + 1) / h);
+                   const double cell = kTwoPi / w * (zTop - zBottom) / (double(k) * k);
+                   glm::dvec3 sum(0.0);
+                   for (int j = 0; j < k; ++j)
+                   {
+                     const double z = zTop + (zBottom - zTop) * (j + 0.5) / k;
+                     const double r = std::sqrt(std::max(0.0, 1.0 - z * z));
+                     for (int c = 0; c < k; ++c)
+                     {
+                       const double phi = kPi - kTwoPi * (x + (c + 0.5) / k) / w;
+                       const glm::dvec3 d(r * std::cos(phi), r * std::sin(phi), z);
+                       const glm::dvec3 f = brdfCos(frame.toLocal(d));
+                       if (f != glm::dvec3(0.0))
+                         sum += f * q.excess->radiance(d);
+                     }
+                   }
+                   return sum * cell;
+                 });
+}
+
+// refine()'s rule over k = 2^level cells a side, its cost the support's cells.
+template <class BrdfCos>
+ReferenceResult refineExcess(const SourceQuadrature& q, const Frame& frame,
+                             const BrdfCos& brdfCos, const ReferenceOptions& options)
+{
+  ReferenceResult result;
+  const uint64_t texels = q.support.size();
+  glm::dvec3 previous = excessAtCells(q, frame, brdfCos, 1);
+  result.value = previous;
+  result.evaluations = texels;
+  double previousDifference = std::numeric_limits<double>::infinity();
+  for (int level = 1; level <= 8; ++level)
+  {
+    const uint64_t cost = texels << (2 * level);
+    if (result.evaluations + cost > options.maxEvaluations)
+      break;
+    const glm::dvec3 current = excessAtCells(q, frame, brdfCos, 1 << level);
+    result.evaluations += cost;
+    result.value = current;
+    const double difference = luminance(glm::abs(current - previous));
+    result.errorEstimate = level > 1 ? std::max(difference, previousDifference) : difference;
+    const double allowed = std::max(options.relativeTolerance * std::abs(luminance(current)),
+                                    options.absoluteTolerance);
+    if (difference <= allowed && previousDifference <= allowed)
+    {
+      result.converged = true;
+      break;
+    }
+    previousDifference = difference;
+    previous = current;
+  }
+  return result;
+}
+
+// env less the excess: the residual the rules integrate.
+class ResidualOf : public Environment
+{
+public:
+  ResidualOf(const Environment& whole, const Environment& excess) : whole_(whole), excess_(excess)
+  {
+  }
+  glm::dvec3 radiance(const glm::dvec3& d) const override
+  {
+    return whole_.radiance(d) - excess_.radiance(d);
+  }
+  std::string key() const override { return whole_.key() + ":less-excess"; }
+
+private:
+  const Environment& whole_;
+  const Environment& excess_;
+};
+
 // The unit view in tangent space.
 glm::dvec3 localView(const Frame& frame, const glm::dvec3& viewWorld)
 {
@@ -488,24 +603,7 @@ ReferenceResult integrateSpecularSunSky(const AsLobe& lobe, const glm::dvec3& f0
   const glm::dvec3 v = localView(frame, viewWorld);
   if (v.z <= 0.0)
     return reflectsNothing();
-  const double scale = std::sqrt((lobe.nu + 1.0) * (lobe.nv + 1.0)) / kTwoPi;
-  // f_s (n.l) with the Ashikhmin-Shirley formula written out (see the file's header comment).
-  auto brdfCos = [&](const glm::dvec3& l) -> glm::dvec3
-  {
-    if (l.z <= 0.0)
-      return glm::dvec3(0.0);
-    const glm::dvec3 h = glm::normalize(v + l);
-    const double vDotH = glm::dot(v, h);
-    if (vDotH <= 0.0)
-      return glm::dvec3(0.0);
-    const double tangential = h.x * h.x + h.y * h.y;
-    const double exponent = tangential > 0.0
-                                ? (lobe.nu * h.x * h.x + lobe.nv * h.y * h.y) / tangential
-                                : 0.5 * (lobe.nu + lobe.nv);
-    const double logCos = tangential < 0.5 ? 0.5 * std::log1p(-tangential) : std::log(h.z);
-    const double ph = scale * std::exp(exponent * logCos);
-    return (ph * l.z / (4.0 * vDotH * std::max(v.z, l.z))) * schlick(f0, vDotH);
-  };
+  const AsBrdfCos brdfCos{lobe, f0, v};
   return sunSkySum(
       env, frame,
       [&](const Environment& sky)
@@ -546,5 +644,76 @@ ReferenceResult integrateSpecularGgxSunSky(const GgxLobe& lobe, const glm::dvec3
       [&](const Environment& sky)
       { return integrateSpecularGgx(lobe, f0, frame, viewWorld, sky, options); },
       brdfCos, options);
+}
+
+std::shared_ptr<const SourceQuadrature> sharedSourceQuadrature(const Environment& env)
+{
+  if (!dynamic_cast<const EquirectEnvironment*>(&env))
+    return nullptr;
+  // The last few environments' verdicts, null ones too (a reference asks pixel by pixel); one
+  // thread computes while the others wait for it.
+  static std::mutex mutex;
+  static std::vector<std::pair<std::string, std::shared_ptr<const SourceQuadrature>>> recent;
+  const std::string key = env.key();
+  const std::lock_guard<std::mutex> lock(mutex);
+  for (const auto& [k, q] : recent)
+    if (k == key)
+      return q;
+  const std::shared_ptr<const EnvAnalysis> analysis = sharedEnvironmentAnalysis(env);
+  std::shared_ptr<SourceQuadrature> result;
+  if (analysis->concentrated())
+  {
+    result = std::make_shared<SourceQuadrature>();
+    result->width = analysis->width;
+    result->height = analysis->height;
+    result->excess =
+        std::make_shared<EquirectEnvironment>(analysis->excess, analysis->key + ":excess");
+    const int w = result->width;
+    const int h = result->height;
+    std::vector<char> reached(std::size_t(w) * std::size_t(h), 0);
+    for (int y = 0; y < h; ++y)
+      for (int x = 0; x < w; ++x)
+      {
+        const std::size_t i = std::size_t(y) * std::size_t(w) + std::size_t(x);
+        const float* e = &analysis->excess.data[i * 3];
+        if (!(e[0] > 0.0f || e[1] > 0.0f || e[2] > 0.0f))
+          continue;
+        for (int dy = -1; dy <= 1; ++dy)
+          for (int dx = -1; dx <= 1; ++dx)
+          {
+            const int ny = std::clamp(y + dy, 0, h - 1);
+            const int nx = (x + dx + w) % w;
+            reached[std::size_t(ny) * std::size_t(w) + std::size_t(nx)] = 1;
+          }
+      }
+    for (std::size_t i = 0; i < reached.size(); ++i)
+      if (reached[i])
+        result->support.push_back(std::uint32_t(i));
+  }
+  recent.emplace_back(key, result);
+  if (recent.size() > 4)
+    recent.erase(recent.begin());
+  return result;
+}
+
+ReferenceResult integrateSpecularSources(const AsLobe& lobe, const glm::dvec3& f0,
+                                         const Frame& frame, const glm::dvec3& viewWorld,
+                                         const Environment& env, const SourceQuadrature& sources,
+                                         const ReferenceOptions& options)
+{
+  validate(options);
+  validateLobe(lobe);
+  validateSpecularInputs(f0, viewWorld);
+  const glm::dvec3 v = localView(frame, viewWorld);
+  if (v.z <= 0.0)
+    return reflectsNothing();
+  const ResidualOf residual(env, *sources.excess);
+  ReferenceResult result = integrateSpecular(lobe, f0, frame, viewWorld, residual, options);
+  const ReferenceResult excess = refineExcess(sources, frame, AsBrdfCos{lobe, f0, v}, options);
+  result.value += excess.value;
+  result.errorEstimate += excess.errorEstimate;
+  result.evaluations += excess.evaluations;
+  result.converged = result.converged && excess.converged;
+  return result;
 }
 } // namespace aniso

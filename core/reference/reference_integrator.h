@@ -13,6 +13,8 @@
 
 #include <cstdint>
 #include <glm/vec3.hpp>
+#include <memory>
+#include <vector>
 
 namespace aniso
 {
@@ -72,6 +74,35 @@ ReferenceResult integrateSpecularGgxSunSky(const GgxLobe& lobe, const glm::dvec3
                                            const Frame& frame, const glm::dvec3& viewWorld,
                                            const SunSkyEnvironment& env,
                                            const ReferenceOptions& options = {});
+
+// An equirectangular environment's bright sources, for integrating them on their own: the
+// analysis' excess (core/env/env_sources.h) as an environment, the bilinear interpolation of its
+// image (EquirectEnvironment's), and the texels that interpolation reaches (each texel above T
+// and its eight neighbours). env(d) - excess(d) is the residual, bounded by T up to the
+// interpolation, so the two parts add up to env exactly.
+struct SourceQuadrature
+{
+  std::shared_ptr<const Environment> excess;
+  int width = 0; // the excess image's grid
+  int height = 0;
+  std::vector<std::uint32_t> support; // texel indices y W + x
+};
+
+// Per process and environment key (thread-safe): the sources of ENV when it is an
+// EquirectEnvironment whose analysis (sharedEnvironmentAnalysis) finds concentrated ones
+// (EnvAnalysis::concentrated: suns and lamps, where the rules above converge slowly because the
+// sources are smaller than their coarse grids), else null.
+std::shared_ptr<const SourceQuadrature> sharedSourceQuadrature(const Environment& env);
+
+// integrateSpecular under env = residual + excess: the residual (env less the excess) through
+// integrateSpecular's rule, the excess over its support, each texel cut into k x k cells of equal
+// solid angle (midpoints in phi and cos theta), k = 1, 2, 4, ... refined as the rules are; the
+// parts summed as integrateSpecularSunSky sums its two (errorEstimate and evaluations added,
+// converged needs both, maxEvaluations applies to each part). Throws as integrateSpecular.
+ReferenceResult integrateSpecularSources(const AsLobe& lobe, const glm::dvec3& f0,
+                                         const Frame& frame, const glm::dvec3& viewWorld,
+                                         const Environment& env, const SourceQuadrature& sources,
+                                         const ReferenceOptions& options = {});
 
 // Irradiance E(n) = integral of L (n.l)+ dw by brute-force quadrature (checks the SH9 path).
 ReferenceResult integrateIrradiance(const glm::dvec3& normalWorld, const Environment& env,

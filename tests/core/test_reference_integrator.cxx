@@ -335,3 +335,88 @@ TEST(ReferenceSpecular, ArgumentsAndBelowHorizon)
   EXPECT_EQ(below.value, glm::dvec3(0.0));
   EXPECT_TRUE(below.converged);
 }
+
+namespace
+{
+// A 64 x 32 grey sky (1) with a lamp of 3 x 3 texels (luminance 2000, warm) above the horizon:
+// large enough in texels (5.6 degrees each) that the rules resolve it, so they are an
+// independent reference for the split.
+std::shared_ptr<aniso::EquirectEnvironment> lampImage(int lampTexels)
+{
+  aniso::Image image(64, 32, 3);
+  for (float& v : image.data)
+    v = 1.0f;
+  for (int y = 10; y < 10 + lampTexels; ++y)
+    for (int x = 20; x < 20 + lampTexels; ++x)
+    {
+      image.at(x, y, 0) = 2400.0f;
+      image.at(x, y, 1) = 2000.0f;
+      image.at(x, y, 2) = 1500.0f;
+    }
+  return std::make_shared<aniso::EquirectEnvironment>(
+      image, "test:lamp" + std::to_string(lampTexels));
+}
+} // namespace
+
+// The support: the lamp's texels and their eight neighbours; none for an environment that is
+// not an image or has no concentrated source.
+TEST(ReferenceSources, SupportIsTheExcessAndItsNeighbours)
+{
+  const auto one = aniso::sharedSourceQuadrature(*lampImage(1));
+  ASSERT_NE(one, nullptr);
+  EXPECT_EQ(one->support.size(), 9u);
+  EXPECT_EQ(one->width, 64);
+  const auto three = aniso::sharedSourceQuadrature(*lampImage(3));
+  ASSERT_NE(three, nullptr);
+  EXPECT_EQ(three->support.size(), 25u);
+  EXPECT_EQ(aniso::sharedSourceQuadrature(LinearEnvironment()), nullptr);
+  aniso::Image grey(64, 32, 3);
+  for (float& v : grey.data)
+    v = 1.0f;
+  EXPECT_EQ(aniso::sharedSourceQuadrature(aniso::EquirectEnvironment(grey, "test:grey")), nullptr);
+}
+
+// Residual by the rules plus the excess over its texels against the rules over the whole image
+// at a tighter tolerance, for a wide and a sharp lobe looking at the lamp and beside it: equal
+// within the two error estimates (and 1e-3 relative).
+TEST(ReferenceSources, SplitAgreesWithTheRulesOverTheWholeImage)
+{
+  const auto env = lampImage(3);
+  const auto sources = aniso::sharedSourceQuadrature(*env);
+  ASSERT_NE(sources, nullptr);
+  // The lamp's centre direction: texel (21.5, 11.5) of 64 x 32.
+  const double phi = kPi - 2.0 * kPi * 21.5 / 64.0;
+  const double theta = kPi * 11.5 / 32.0;
+  const glm::dvec3 lamp(std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi),
+                        std::cos(theta));
+  const glm::dvec3 view(0.0, -1.0, 0.3);
+  aniso::ReferenceOptions options;
+  options.relativeTolerance = 1e-4;
+  aniso::ReferenceOptions tight = options;
+  tight.relativeTolerance = 1e-5;
+  tight.maxEvaluations = 1ull << 28;
+  for (const aniso::AsLobe lobe : {aniso::AsLobe{10.0, 10.0}, aniso::AsLobe{300.0, 30.0}})
+    for (const double turn : {0.0, 0.15})
+    {
+      // A normal halfway between the view and the lamp (turned away from it by `turn` rad).
+      const glm::dvec3 v = glm::normalize(view);
+      glm::dvec3 n = glm::normalize(v + lamp);
+      n = glm::normalize(n + turn * glm::normalize(glm::cross(n, glm::dvec3(0.0, 0.0, 1.0))));
+      const aniso::Frame frame = aniso::Frame::fromNormalTangent(n, glm::dvec3(0.0, 0.0, 1.0));
+      const aniso::ReferenceResult split =
+          aniso::integrateSpecularSources(lobe, glm::dvec3(1.0), frame, v, *env, *sources, options);
+      const aniso::ReferenceResult whole =
+          aniso::integrateSpecular(lobe, glm::dvec3(1.0), frame, v, *env, tight);
+      std::printf("(%g, %g) turn %.2f: split %.8g (+- %.1e, %llu evaluations), rules %.8g (+- "
+                  "%.1e, %llu)\n",
+                  lobe.nu, lobe.nv, turn, luminance(split.value), split.errorEstimate,
+                  static_cast<unsigned long long>(split.evaluations), luminance(whole.value),
+                  whole.errorEstimate, static_cast<unsigned long long>(whole.evaluations));
+      EXPECT_TRUE(split.converged);
+      ASSERT_TRUE(whole.converged);
+      const double difference = std::abs(luminance(split.value) - luminance(whole.value));
+      EXPECT_LE(difference, std::max(split.errorEstimate + whole.errorEstimate,
+                                     1e-3 * luminance(whole.value)));
+      EXPECT_GT(luminance(split.value), 2.0); // the lamp is in the lobe
+    }
+}
