@@ -93,18 +93,39 @@ SourceGroups buildSourceGroups(const EnvAnalysis& analysis)
                             glm::dot(group.direction, cornerDirection(x + cx, y + cy, w, h)));
     }
     group.angularRadius = std::acos(std::clamp(minCos, -1.0, 1.0));
-    group.first = int(out.entryTexel.size());
-    group.count = int(members[g].size());
-    double cumulative = 0.0;
-    for (const std::uint32_t i : members[g])
+    group.firstRow = int(out.rowY.size());
+    group.texels = int(members[g].size());
+    double groupCumulative = 0.0;
+    for (std::size_t m = 0; m < members[g].size();)
     {
-      const double lum = luminance(analysis.excess, i);
-      cumulative += lum * omega[i / std::uint32_t(w)];
-      out.entryTexel.push_back(i);
-      out.entryCdf.push_back(float(cumulative / group.power));
-      out.density[i] = float(lum / group.power);
+      // One row: the members of grid row y, in x order (members are row-major).
+      const int y = int(members[g][m] / std::uint32_t(w));
+      std::size_t end = m;
+      double rowPower = 0.0;
+      while (end < members[g].size() && int(members[g][end] / std::uint32_t(w)) == y)
+      {
+        rowPower += luminance(analysis.excess, members[g][end]) * omega[std::size_t(y)];
+        ++end;
+      }
+      out.rowY.push_back(y);
+      out.rowFirst.push_back(int(out.entryTexel.size()));
+      out.rowCount.push_back(int(end - m));
+      double rowCumulative = 0.0;
+      for (; m < end; ++m)
+      {
+        const std::uint32_t i = members[g][m];
+        const double lum = luminance(analysis.excess, i);
+        rowCumulative += lum * omega[std::size_t(y)];
+        out.entryTexel.push_back(i);
+        out.entryCdf.push_back(float(rowCumulative / rowPower));
+        out.density[i] = float(lum / group.power);
+      }
+      out.entryCdf.back() = 1.0f;
+      groupCumulative += rowPower;
+      out.rowCdf.push_back(float(groupCumulative / group.power));
     }
-    out.entryCdf.back() = 1.0f;
+    out.rowCdf.back() = 1.0f;
+    group.rowCount = int(out.rowY.size()) - group.firstRow;
     renumber[g] = int(out.groups.size());
     out.power += group.power;
     out.groups.push_back(group);
@@ -149,22 +170,30 @@ SourceGroupSample SourceGroups::sample(const std::vector<double>& selection,
   const double q = selection[std::size_t(g)];
   const double within = std::clamp((u - start) / q, 0.0, 1.0);
   const SourceGroup& chosen = groups[std::size_t(g)];
-  // The first entry whose cumulative end exceeds `within`.
-  const auto begin = entryCdf.begin() + chosen.first;
-  const auto end = begin + chosen.count;
-  auto it = std::upper_bound(begin, end, float(within));
-  if (it == end)
-    --it;
-  const std::size_t e = std::size_t(it - entryCdf.begin());
-  const double c0 = e == std::size_t(chosen.first) ? 0.0 : double(entryCdf[e - 1]);
-  const double c1 = entryCdf[e];
-  const double s = std::clamp((within - c0) / std::max(c1 - c0, 1e-30), 0.0, 1.0);
+  // The first row, then the first entry of the row, whose cumulative end exceeds the number.
+  auto pick = [](const std::vector<float>& cdf, int first, int count, double number, double* rest)
+  {
+    const auto begin = cdf.begin() + first;
+    const auto end = begin + count;
+    auto it = std::upper_bound(begin, end, float(number));
+    if (it == end)
+      --it;
+    const std::size_t k = std::size_t(it - cdf.begin());
+    const double c0 = k == std::size_t(first) ? 0.0 : double(cdf[k - 1]);
+    *rest = std::clamp((number - c0) / std::max(double(cdf[k]) - c0, 1e-30), 0.0, 1.0);
+    return k;
+  };
+  double t = 0.0;
+  const std::size_t row =
+      pick(rowCdf, chosen.firstRow, chosen.rowCount, std::clamp(xi.y, 0.0, 1.0), &t);
+  double s = 0.0;
+  const std::size_t e = pick(entryCdf, rowFirst[row], rowCount[row], within, &s);
   const std::uint32_t texel = entryTexel[e];
   const int x = int(texel % std::uint32_t(width));
   const int y = int(texel / std::uint32_t(width));
   const double zTop = std::cos(kPi * y / height);
   const double zBottom = std::cos(kPi * (y + 1) / height);
-  const double z = std::clamp(zTop + (zBottom - zTop) * std::clamp(xi.y, 0.0, 1.0), -1.0, 1.0);
+  const double z = std::clamp(zTop + (zBottom - zTop) * t, -1.0, 1.0);
   out.direction = equirectToDirection({(x + s) / width, 1.0 - std::acos(z) / kPi});
   out.pdf = q * double(density[texel]);
   out.group = g;

@@ -4,15 +4,19 @@
 // sources its lobe sees: the seven most powerful sources each a group of its own, every other
 // source together the last (kMaxGroups in all). A source sample picks group g with probability
 // q_g (the pixel's selection, lobeAwareSelection), then a texel of the group with probability
-// proportional to its excess luminance power, then a point uniform in (phi, cos theta) inside
-// the texel: the density per solid angle is q_g x excess luminance / P_g there (P_g the group's
-// luminance power), so the excess over the density is P_g / q_g across a source of one colour.
+// proportional to its excess luminance power (a row of the group's texels by its power, then a
+// texel of the row, so that the group's samples stratify in both directions as the whole
+// environment's tables do), then a point uniform in (phi, cos theta) inside the texel: the
+// density per solid angle is q_g x excess luminance / P_g there (P_g the group's luminance
+// power), so the excess over the density is P_g / q_g across a source of one colour.
 // docs/METHOD.md, "The sources split off".
 //
-// Layout (shader tables): the entries, group after group, each group's texels in row-major
-// order: entryTexel the texel index y W + x, entryCdf the cumulative probability within its
-// group at the entry's end (the group's last is 1). Per texel of the grid: density (per solid
-// angle, within its group) and group (-1 outside the source part).
+// Layout (shader tables): the rows, group after group, each group's from the top: rowY the grid
+// row, rowCdf the cumulative probability within its group at the row's end (the group's last is
+// 1), rowFirst and rowCount its entries; the entries, row after row in x order: entryTexel the
+// texel index y W + x, entryCdf the cumulative probability within its row at the entry's end
+// (the row's last is 1). Per texel of the grid: density (per solid angle, within its group) and
+// group (-1 outside the source part).
 #include "core/env/env_sources.h"
 
 #include <cstdint>
@@ -29,8 +33,9 @@ struct SourceGroup
   double angularRadius = 0.0;          // largest angle from direction to a texel corner
   double solidAngle = 0.0;             // of its texels
   double power = 0.0;                  // integral of the excess luminance over its texels
-  int first = 0;                       // its entries: [first, first + count)
-  int count = 0;
+  int firstRow = 0;                    // its rows: [firstRow, firstRow + rowCount)
+  int rowCount = 0;
+  int texels = 0;
 };
 
 struct SourceGroupSample
@@ -48,13 +53,18 @@ struct SourceGroups
   int height = 0;
   double power = 0.0; // of the whole source part (luminance)
   std::vector<SourceGroup> groups;
+  std::vector<int> rowY;
+  std::vector<float> rowCdf;
+  std::vector<int> rowFirst;
+  std::vector<int> rowCount;
   std::vector<std::uint32_t> entryTexel;
   std::vector<float> entryCdf;
   std::vector<float> density;     // width x height
   std::vector<std::int8_t> group; // width x height
 
   // The CPU twin of the shader's source samples: a direction from xi in [0, 1)^2 (xi.x picks the
-  // group by the selection's cumulative sum, then the entry; xi.y the height inside the texel),
+  // group by the selection's cumulative sum, then, rescaled, the texel of the row and the
+  // column inside it; xi.y the row and the height inside the texel),
   // and its density under the selection (one weight per group, summing to 1). Density zero and
   // group -1 when the selected group is empty of power.
   SourceGroupSample sample(const std::vector<double>& selection, const glm::dvec2& xi) const;

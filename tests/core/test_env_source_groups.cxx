@@ -95,8 +95,19 @@ TEST(SourceGroups, EveryExcessTexelInOneGroupWithItsPower)
   for (std::size_t g = 0; g < 8; ++g)
   {
     EXPECT_NEAR(groups.groups[g].power / power[g], 1.0, 1e-12);
-    EXPECT_FLOAT_EQ(groups.entryCdf[std::size_t(groups.groups[g].first + groups.groups[g].count - 1)],
-                    1.0f);
+    const aniso::SourceGroup& group = groups.groups[g];
+    EXPECT_FLOAT_EQ(groups.rowCdf[std::size_t(group.firstRow + group.rowCount - 1)], 1.0f);
+    int texels = 0;
+    for (int r = group.firstRow; r < group.firstRow + group.rowCount; ++r)
+    {
+      const std::size_t row = std::size_t(r);
+      EXPECT_FLOAT_EQ(groups.entryCdf[std::size_t(groups.rowFirst[row] + groups.rowCount[row] - 1)],
+                      1.0f);
+      for (int e = groups.rowFirst[row]; e < groups.rowFirst[row] + groups.rowCount[row]; ++e)
+        EXPECT_EQ(int(groups.entryTexel[std::size_t(e)]) / kW, groups.rowY[row]);
+      texels += groups.rowCount[row];
+    }
+    EXPECT_EQ(texels, group.texels);
   }
   for (std::size_t g = 0; g < 7; ++g)
   {
@@ -107,7 +118,8 @@ TEST(SourceGroups, EveryExcessTexelInOneGroupWithItsPower)
     EXPECT_NEAR(groups.groups[g].angularRadius, s.angularRadius, 1e-12);
   }
   // The last group holds the four weakest lamps: 1500 ... 3000 less T, one texel each.
-  EXPECT_EQ(groups.groups[7].count, 4);
+  EXPECT_EQ(groups.groups[7].texels, 4);
+  EXPECT_EQ(groups.groups[7].rowCount, 1); // all in row 40
 }
 
 // Samples of a selection that is neither by power nor uniform: their histogram over texels
@@ -193,7 +205,7 @@ TEST(SourceGroups, SelectionFollowsTheLobe)
   {
     if (glm::dot(groups.groups[g].direction, texelCentre(16, 40)) > 1.0 - 1e-9)
       lamp1 = int(g);
-    if (groups.groups[g].count == 72)
+    if (groups.groups[g].texels == 72)
       window = int(g);
   }
   ASSERT_GE(lamp1, 0);

@@ -547,7 +547,7 @@ public:
     if (installed.environmentSources)
     {
       hook.bindTexture(program, "anisoSourceRadiance", lighting->sourceRadianceTexture(window));
-      hook.bindTexture(program, "anisoSourceEntries", lighting->sourceEntryTexture(window));
+      hook.bindTexture(program, "anisoSourceTables", lighting->sourceTableTexture(window));
       hook.bindTexture(program, "anisoSourceDensity", lighting->sourceDensityTexture(window));
       setSourceGroupUniforms(program, *lighting->sourceSplit().groups);
       const int sourceCount =
@@ -612,8 +612,8 @@ public:
       cone[i + 3] = float(std::cos(group.angularRadius));
       info[i] = float(group.power / groups.power);
       info[i + 1] = float(1.0 / group.solidAngle);
-      info[i + 2] = float(group.first);
-      info[i + 3] = float(group.count);
+      info[i + 2] = float(group.firstRow);
+      info[i + 3] = float(group.rowCount);
     }
     program->SetUniformi("anisoSourceGroupCount", count);
     program->SetUniform4fv("anisoSourceGroupCone", kGroups,

@@ -295,15 +295,25 @@ void EnvironmentLighting::uploadSourceTextures(vtkOpenGLRenderWindow* window)
   const SourceSplit& split = sourceSplit();
   const Image& excess = split.analysis->excess;
   const SourceGroups& groups = *split.groups;
-  // Entries: (cumulative within the group, texel index), kSourceEntryWidth a row; at least one
-  // texel so that the sampler is complete (a group-less split draws no source sample).
-  const std::size_t entries = std::max<std::size_t>(groups.entryTexel.size(), 1);
-  const int entryRows = int((entries + kSourceEntryWidth - 1) / kSourceEntryWidth);
-  std::vector<float> entryData(std::size_t(entryRows) * kSourceEntryWidth * 2, 0.0f);
+  // The rows, then the entries, kSourceTableWidth a texture row (at least one texel, so that
+  // the sampler is complete; a group-less split draws no source sample): a row (cumulative
+  // within its group, grid row, index of its first entry here, entry count), an entry
+  // (cumulative within its row, texel index, 0, 0).
+  const std::size_t rows = groups.rowY.size();
+  const std::size_t cells = std::max<std::size_t>(rows + groups.entryTexel.size(), 1);
+  const int tableRows = int((cells + kSourceTableWidth - 1) / kSourceTableWidth);
+  std::vector<float> tableData(std::size_t(tableRows) * kSourceTableWidth * 4, 0.0f);
+  for (std::size_t r = 0; r < rows; ++r)
+  {
+    tableData[4 * r] = groups.rowCdf[r];
+    tableData[4 * r + 1] = float(groups.rowY[r]);
+    tableData[4 * r + 2] = float(rows + std::size_t(groups.rowFirst[r]));
+    tableData[4 * r + 3] = float(groups.rowCount[r]);
+  }
   for (std::size_t e = 0; e < groups.entryTexel.size(); ++e)
   {
-    entryData[2 * e] = groups.entryCdf[e];
-    entryData[2 * e + 1] = float(groups.entryTexel[e]);
+    tableData[4 * (rows + e)] = groups.entryCdf[e];
+    tableData[4 * (rows + e) + 1] = float(groups.entryTexel[e]);
   }
   std::vector<float> densityData(std::size_t(excess.width) * std::size_t(excess.height) * 2);
   for (std::size_t i = 0; i < densityData.size() / 2; ++i)
@@ -316,8 +326,8 @@ void EnvironmentLighting::uploadSourceTextures(vtkOpenGLRenderWindow* window)
                                           excess.data.data(), TextureFiltering::Nearest,
                                           TextureWrap::RepeatSClampT, "environment sources");
   sourceTextures_[2] =
-      uploadFloatTexture(window, kSourceEntryWidth, entryRows, 2, entryData.data(),
-                         TextureFiltering::Nearest, TextureWrap::Clamp, "source group entries");
+      uploadFloatTexture(window, kSourceTableWidth, tableRows, 4, tableData.data(),
+                         TextureFiltering::Nearest, TextureWrap::Clamp, "source group tables");
   sourceTextures_[3] =
       uploadFloatTexture(window, excess.width, excess.height, 2, densityData.data(),
                          TextureFiltering::Nearest, TextureWrap::Clamp, "source group densities");
@@ -336,7 +346,7 @@ vtkTextureObject* EnvironmentLighting::sourceRadianceTexture(vtkOpenGLRenderWind
   return sourceTextures_[1];
 }
 
-vtkTextureObject* EnvironmentLighting::sourceEntryTexture(vtkOpenGLRenderWindow* window)
+vtkTextureObject* EnvironmentLighting::sourceTableTexture(vtkOpenGLRenderWindow* window)
 {
   uploadSourceTextures(window);
   return sourceTextures_[2];

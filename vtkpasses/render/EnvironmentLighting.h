@@ -117,13 +117,14 @@ public:
   };
   const SourceSplit& sourceSplit();
   // In WINDOW's context: the residual cube (as cubeTexture), the excess (RGB float,
-  // equirectangular, nearest), the groups' entries (RG float, kSourceEntryWidth wide, entry e at
-  // (e mod width, e / width): its cumulative probability within its group, its texel index) and
-  // per texel of the grid its density within its group and its group (RG float, -1 outside).
-  static constexpr int kSourceEntryWidth = 4096;
+  // equirectangular, nearest), the groups' tables (RGBA float, kSourceTableWidth wide, cell i at
+  // (i mod width, i / width): the rows, then the entries, as SourceGroups lays them out, a row's
+  // first entry given as its cell) and per texel of the grid its density within its group and
+  // its group (RG float, -1 outside).
+  static constexpr int kSourceTableWidth = 4096;
   vtkTextureObject* residualCubeTexture(vtkOpenGLRenderWindow* window);
   vtkTextureObject* sourceRadianceTexture(vtkOpenGLRenderWindow* window);
-  vtkTextureObject* sourceEntryTexture(vtkOpenGLRenderWindow* window);
+  vtkTextureObject* sourceTableTexture(vtkOpenGLRenderWindow* window);
   vtkTextureObject* sourceDensityTexture(vtkOpenGLRenderWindow* window);
 
   void releaseGraphicsResources(vtkWindow* window);

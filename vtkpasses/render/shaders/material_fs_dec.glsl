@@ -81,12 +81,14 @@ uniform float anisoLobeFraction; // share of the lobe technique in the one-sampl
 // the group by its excess power.
 #define ANISO_SOURCE_GROUPS 8
 uniform sampler2D anisoSourceRadiance; // RGB32F excess, nearest (constant per texel)
-uniform sampler2D anisoSourceEntries;  // RG32F, 4096 wide: cumulative within the group, texel
+// RGBA32F, 4096 wide: the groups' rows (cumulative within the group, grid row, first entry,
+// entries), then the entries (cumulative within the row, texel index)
+uniform sampler2D anisoSourceTables;
 uniform sampler2D anisoSourceDensity;  // RG32F, W x H: density within the group, group (-1)
 uniform ivec2 anisoSourceGrid;         // (W, H)
 uniform int anisoSourceGroupCount;
 uniform vec4 anisoSourceGroupCone[ANISO_SOURCE_GROUPS]; // direction (env), cos of its radius
-// Its share of the sources' power, 1 / its solid angle, its first entry, its entry count.
+// Its share of the sources' power, 1 / its solid angle, its first row, its row count.
 uniform vec4 anisoSourceGroupInfo[ANISO_SOURCE_GROUPS];
 uniform float anisoSourceDefensive; // share of the selection kept in proportion to the power
 uniform int anisoSourceSampleCount; // M, source samples per fragment and frame
@@ -474,15 +476,38 @@ void anisoSourceSelection(vec3 t, vec3 b, vec3 n, vec3 v, out float q[ANISO_SOUR
   }
 }
 
-vec2 anisoSourceEntry(int e)
+vec4 anisoSourceTable(int i)
 {
-  return texelFetch(anisoSourceEntries, ivec2(e % 4096, e / 4096), 0).rg;
+  return texelFetch(anisoSourceTables, ivec2(i % 4096, i / 4096), 0);
+}
+
+// The first cell in [first, first + count) whose cumulative end (.r) exceeds u (bisection), and
+// where u falls inside it (.y).
+vec2 anisoSourcePick(int first, int count, float u)
+{
+  int lo = first;
+  int hi = first + count - 1;
+  while (lo < hi)
+  {
+    int mid = (lo + hi) / 2;
+    if (anisoSourceTable(mid).r > u)
+    {
+      hi = mid;
+    }
+    else
+    {
+      lo = mid + 1;
+    }
+  }
+  float c0 = lo == first ? 0.0 : anisoSourceTable(lo - 1).r;
+  float c1 = anisoSourceTable(lo).r;
+  return vec2(float(lo), clamp((u - c0) / max(c1 - c0, 1e-30), 0.0, 1.0));
 }
 
 // A direction (environment coordinates) of the source groups under the selection q and its
-// density (SourceGroups::sample): xi.x picks the group by q's cumulative sum, then the entry
-// (bisection in the group's cumulative probabilities), its remainder the column inside the
-// texel; xi.y the height (uniform in cos theta). w = 0 when no group has a share.
+// density (SourceGroups::sample): xi.x picks the group by q's cumulative sum, then, rescaled,
+// the texel of the row and the column inside it; xi.y the row and the height inside the texel
+// (uniform in cos theta). w = 0 when no group has a share.
 vec4 anisoSampleSources(float q[ANISO_SOURCE_GROUPS], vec2 xi)
 {
   int g = -1;
@@ -510,34 +535,20 @@ vec4 anisoSampleSources(float q[ANISO_SOURCE_GROUPS], vec2 xi)
     return vec4(0.0, 0.0, 1.0, 0.0);
   }
   float within = clamp((xi.x - start) / q[g], 0.0, 1.0);
-  int first = int(anisoSourceGroupInfo[g].z);
-  int lo = first;
-  int hi = first + int(anisoSourceGroupInfo[g].w) - 1;
-  while (lo < hi)
-  {
-    int mid = (lo + hi) / 2;
-    if (anisoSourceEntry(mid).r > within)
-    {
-      hi = mid;
-    }
-    else
-    {
-      lo = mid + 1;
-    }
-  }
-  vec2 entry = anisoSourceEntry(lo);
-  float c0 = lo == first ? 0.0 : anisoSourceEntry(lo - 1).r;
-  float s = clamp((within - c0) / max(entry.r - c0, 1e-30), 0.0, 1.0);
-  int texel = int(entry.g + 0.5);
+  vec2 rowPick =
+    anisoSourcePick(int(anisoSourceGroupInfo[g].z), int(anisoSourceGroupInfo[g].w), xi.y);
+  vec4 row = anisoSourceTable(int(rowPick.x));
+  vec2 entryPick = anisoSourcePick(int(row.b + 0.5), int(row.a + 0.5), within);
+  int texel = int(anisoSourceTable(int(entryPick.x)).g + 0.5);
   int w = anisoSourceGrid.x;
   int h = anisoSourceGrid.y;
   int x = texel % w;
   int y = texel / w;
   float zTop = cos(anisoPi * float(y) / float(h));
   float zBottom = cos(anisoPi * float(y + 1) / float(h));
-  float z = clamp(mix(zTop, zBottom, xi.y), -1.0, 1.0);
+  float z = clamp(mix(zTop, zBottom, rowPick.y), -1.0, 1.0);
   float sinTheta = sqrt(max(1.0 - z * z, 0.0));
-  float phi = anisoPi - 2.0 * anisoPi * (float(x) + s) / float(w);
+  float phi = anisoPi - 2.0 * anisoPi * (float(x) + entryPick.y) / float(w);
   return vec4(sinTheta * cos(phi), sinTheta * sin(phi), z,
               q[g] * texelFetch(anisoSourceDensity, ivec2(x, y), 0).r);
 }
