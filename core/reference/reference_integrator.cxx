@@ -666,16 +666,41 @@ std::shared_ptr<const SourceQuadrature> sharedSourceQuadrature(const Environment
     result = std::make_shared<SourceQuadrature>();
     result->width = analysis->width;
     result->height = analysis->height;
-    result->excess =
-        std::make_shared<EquirectEnvironment>(analysis->excess, analysis->key + ":excess");
     const int w = result->width;
     const int h = result->height;
-    std::vector<char> reached(std::size_t(w) * std::size_t(h), 0);
+    const std::size_t texels = std::size_t(w) * std::size_t(h);
+    // Only the sources whose peak reaches kConcentratedPeak x T (suns, lamps, bright panels):
+    // a broad dim region above T (a bright sky) stays with the rules, which resolve it, where
+    // its texels would make the quadrature long. Any subset of the excess keeps the sum exact.
+    std::vector<double> peak;
+    for (std::size_t i = 0; i < texels; ++i)
+    {
+      const int rank = analysis->sourceRank[i];
+      if (rank < 0)
+        continue;
+      if (std::size_t(rank) >= peak.size())
+        peak.resize(std::size_t(rank) + 1, 0.0);
+      const float* e = &analysis->excess.data[i * 3];
+      const float* r = &analysis->residual.data[i * 3];
+      peak[std::size_t(rank)] =
+          std::max(peak[std::size_t(rank)], luminance(glm::dvec3(e[0] + r[0], e[1] + r[1],
+                                                                 e[2] + r[2])));
+    }
+    Image excess(w, h, 3);
+    for (std::size_t i = 0; i < texels; ++i)
+    {
+      const int rank = analysis->sourceRank[i];
+      if (rank >= 0 &&
+          peak[std::size_t(rank)] >= EnvAnalysis::kConcentratedPeak * analysis->threshold)
+        for (std::size_t c = 0; c < 3; ++c)
+          excess.data[i * 3 + c] = analysis->excess.data[i * 3 + c];
+    }
+    std::vector<char> reached(texels, 0);
     for (int y = 0; y < h; ++y)
       for (int x = 0; x < w; ++x)
       {
         const std::size_t i = std::size_t(y) * std::size_t(w) + std::size_t(x);
-        const float* e = &analysis->excess.data[i * 3];
+        const float* e = &excess.data[i * 3];
         if (!(e[0] > 0.0f || e[1] > 0.0f || e[2] > 0.0f))
           continue;
         for (int dy = -1; dy <= 1; ++dy)
@@ -689,6 +714,8 @@ std::shared_ptr<const SourceQuadrature> sharedSourceQuadrature(const Environment
     for (std::size_t i = 0; i < reached.size(); ++i)
       if (reached[i])
         result->support.push_back(std::uint32_t(i));
+    result->excess =
+        std::make_shared<EquirectEnvironment>(std::move(excess), analysis->key + ":excess");
   }
   recent.emplace_back(key, result);
   if (recent.size() > 4)

@@ -76,10 +76,12 @@ ReferenceResult integrateSpecularGgxSunSky(const GgxLobe& lobe, const glm::dvec3
                                            const ReferenceOptions& options = {});
 
 // An equirectangular environment's bright sources, for integrating them on their own: the
-// analysis' excess (core/env/env_sources.h) as an environment, the bilinear interpolation of its
-// image (EquirectEnvironment's), and the texels that interpolation reaches (each texel above T
-// and its eight neighbours). env(d) - excess(d) is the residual, bounded by T up to the
-// interpolation, so the two parts add up to env exactly.
+// analysis' excess (core/env/env_sources.h) of the sources whose peak reaches
+// EnvAnalysis::kConcentratedPeak x T (suns, lamps, bright panels; a broad dim region above T, a
+// bright sky, stays with the rules, which resolve it) as an environment, the bilinear
+// interpolation of that image (EquirectEnvironment's), and the texels the interpolation reaches
+// (each of those texels and its eight neighbours). env(d) - excess(d) is what the rules
+// integrate, so the two parts add up to env exactly.
 struct SourceQuadrature
 {
   std::shared_ptr<const Environment> excess;
