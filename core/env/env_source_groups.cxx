@@ -43,16 +43,15 @@ SourceGroups buildSourceGroups(const EnvAnalysis& analysis)
 
   std::vector<double> omega(std::size_t(std::max(h, 0)));
   for (int y = 0; y < h; ++y)
-    omega[std::size_t(y)] =
-        2.0 * kPi / w * (std::cos(kPi * y / h) - std::cos(kPi * (y + 1) / h));
+    omega[std::size_t(y)] = 2.0 * kPi / w * (std::cos(kPi * y / h) - std::cos(kPi * (y + 1) / h));
 
   // Each texel's group: its source's rank, the ranks from kMaxGroups - 1 on together. Groups
   // with no excess power (a source of zero excess cannot exist, but guard) are dropped.
   int groupCount = 0;
   for (std::size_t i = 0; i < texels; ++i)
     if (analysis.sourceRank[i] >= 0 && luminance(analysis.excess, i) > 0.0)
-      groupCount = std::max(groupCount,
-                            std::min(analysis.sourceRank[i], SourceGroups::kMaxGroups - 1) + 1);
+      groupCount =
+          std::max(groupCount, std::min(analysis.sourceRank[i], SourceGroups::kMaxGroups - 1) + 1);
   std::vector<SourceGroup> groups(static_cast<std::size_t>(groupCount));
   std::vector<glm::dvec3> weighted(groups.size(), glm::dvec3(0.0));
   std::vector<std::vector<std::uint32_t>> members(groups.size());
@@ -80,8 +79,8 @@ SourceGroups buildSourceGroups(const EnvAnalysis& analysis)
     if (members[g].empty())
       continue;
     SourceGroup group = groups[g];
-    group.direction = glm::length(weighted[g]) > 0.0 ? glm::normalize(weighted[g])
-                                                     : glm::dvec3(0.0, 0.0, 1.0);
+    group.direction =
+        glm::length(weighted[g]) > 0.0 ? glm::normalize(weighted[g]) : glm::dvec3(0.0, 0.0, 1.0);
     double minCos = 1.0;
     for (const std::uint32_t i : members[g])
     {
@@ -89,8 +88,8 @@ SourceGroups buildSourceGroups(const EnvAnalysis& analysis)
       const int y = int(i / std::uint32_t(w));
       for (int cy = 0; cy <= 1; ++cy)
         for (int cx = 0; cx <= 1; ++cx)
-          minCos = std::min(minCos,
-                            glm::dot(group.direction, cornerDirection(x + cx, y + cy, w, h)));
+          minCos =
+              std::min(minCos, glm::dot(group.direction, cornerDirection(x + cx, y + cy, w, h)));
     }
     group.angularRadius = std::acos(std::clamp(minCos, -1.0, 1.0));
     group.firstRow = int(out.rowY.size());
@@ -230,8 +229,8 @@ std::vector<double> lobeAwareSelection(const SourceGroups& groups, const glm::dv
       const glm::dvec3 across = r - cosAngle * group.direction;
       const double length = glm::length(across);
       const glm::dvec3 side = length > 0.0 ? across / length : glm::dvec3(0.0);
-      nearest = std::cos(group.angularRadius) * group.direction +
-                std::sin(group.angularRadius) * side;
+      nearest =
+          std::cos(group.angularRadius) * group.direction + std::sin(group.angularRadius) * side;
     }
     weight[g] = group.power * std::min(lobePdf(nearest), 1.0 / group.solidAngle);
     sum += weight[g];

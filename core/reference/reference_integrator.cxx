@@ -507,8 +507,8 @@ glm::dvec3 excessAtCells(const SourceQuadrature& q, const Frame& frame, const Br
 
 // refine()'s rule over k = 2^level cells a side, its cost the support's cells.
 template <class BrdfCos>
-ReferenceResult refineExcess(const SourceQuadrature& q, const Frame& frame,
-                             const BrdfCos& brdfCos, const ReferenceOptions& options)
+ReferenceResult refineExcess(const SourceQuadrature& q, const Frame& frame, const BrdfCos& brdfCos,
+                             const ReferenceOptions& options)
 {
   ReferenceResult result;
   const uint64_t texels = q.support.size();
@@ -682,9 +682,8 @@ std::shared_ptr<const SourceQuadrature> sharedSourceQuadrature(const Environment
         peak.resize(std::size_t(rank) + 1, 0.0);
       const float* e = &analysis->excess.data[i * 3];
       const float* r = &analysis->residual.data[i * 3];
-      peak[std::size_t(rank)] =
-          std::max(peak[std::size_t(rank)], luminance(glm::dvec3(e[0] + r[0], e[1] + r[1],
-                                                                 e[2] + r[2])));
+      peak[std::size_t(rank)] = std::max(
+          peak[std::size_t(rank)], luminance(glm::dvec3(e[0] + r[0], e[1] + r[1], e[2] + r[2])));
     }
     Image excess(w, h, 3);
     for (std::size_t i = 0; i < texels; ++i)

@@ -113,7 +113,8 @@ TEST(SourceGroups, EveryExcessTexelInOneGroupWithItsPower)
   {
     const aniso::EnvSource& s = a.sources[g];
     EXPECT_GT(glm::dot(groups.groups[g].direction, s.direction), 1.0 - 1e-12);
-    EXPECT_NEAR(groups.groups[g].power, 0.2126 * s.power.x + 0.7152 * s.power.y + 0.0722 * s.power.z,
+    EXPECT_NEAR(groups.groups[g].power,
+                0.2126 * s.power.x + 0.7152 * s.power.y + 0.0722 * s.power.z,
                 1e-9 * groups.groups[g].power);
     EXPECT_NEAR(groups.groups[g].angularRadius, s.angularRadius, 1e-12);
   }
@@ -154,9 +155,9 @@ TEST(SourceGroups, SamplesFollowTheirDensity)
     {
       const std::size_t i = std::size_t(y * kW + x);
       const int g = groups.group[i];
-      const double expected =
-          g < 0 ? 0.0 : n * selection[std::size_t(g)] * excessLuminance(a, x, y) /
-                            groups.groups[std::size_t(g)].power * texelSolidAngle(y);
+      const double expected = g < 0 ? 0.0
+                                    : n * selection[std::size_t(g)] * excessLuminance(a, x, y) /
+                                          groups.groups[std::size_t(g)].power * texelSolidAngle(y);
       if (expected == 0.0)
       {
         EXPECT_EQ(count[i], 0.0) << x << ", " << y;
@@ -236,14 +237,15 @@ TEST(SourceGroups, SelectionFollowsTheLobe)
   // Inside the window's cap the lobe is read at the mirror direction itself.
   const glm::dvec3 inWindow = texelCentre(95, 14);
   glm::dvec3 seen(0.0);
-  aniso::lobeAwareSelection(groups, inWindow,
-                            [&](const glm::dvec3& l)
-                            {
-                              if (glm::dot(l, inWindow) > 1.0 - 1e-12)
-                                seen = l;
-                              return 1.0;
-                            },
-                            defensive);
+  aniso::lobeAwareSelection(
+      groups, inWindow,
+      [&](const glm::dvec3& l)
+      {
+        if (glm::dot(l, inWindow) > 1.0 - 1e-12)
+          seen = l;
+        return 1.0;
+      },
+      defensive);
   EXPECT_GT(glm::dot(seen, inWindow), 1.0 - 1e-12);
 }
 

@@ -353,8 +353,8 @@ std::shared_ptr<aniso::EquirectEnvironment> lampImage(int lampTexels)
       image.at(x, y, 1) = 2000.0f;
       image.at(x, y, 2) = 1500.0f;
     }
-  return std::make_shared<aniso::EquirectEnvironment>(
-      image, "test:lamp" + std::to_string(lampTexels));
+  return std::make_shared<aniso::EquirectEnvironment>(image,
+                                                      "test:lamp" + std::to_string(lampTexels));
 }
 } // namespace
 
@@ -415,8 +415,8 @@ TEST(ReferenceSources, SplitAgreesWithTheRulesOverTheWholeImage)
       EXPECT_TRUE(split.converged);
       ASSERT_TRUE(whole.converged);
       const double difference = std::abs(luminance(split.value) - luminance(whole.value));
-      EXPECT_LE(difference, std::max(split.errorEstimate + whole.errorEstimate,
-                                     1e-3 * luminance(whole.value)));
+      EXPECT_LE(difference,
+                std::max(split.errorEstimate + whole.errorEstimate, 1e-3 * luminance(whole.value)));
       EXPECT_GT(luminance(split.value), 2.0); // the lamp is in the lobe
     }
 }

@@ -15,22 +15,22 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cmath>
 #include <functional>
 #include <glm/gtc/type_ptr.hpp>
-#include <atomic>
 #include <map>
 #include <memory>
 #include <string>
 #include <tuple>
+#include <vtkCellData.h>
 #include <vtkInformation.h>
 #include <vtkInformationDoubleVectorKey.h>
 #include <vtkInformationIntegerKey.h>
-#include <vtkCellData.h>
 #include <vtkMapper.h>
 #include <vtkOpenGLRenderWindow.h>
-#include <vtkPointData.h>
 #include <vtkOpenGLState.h>
+#include <vtkPointData.h>
 #include <vtkPolyData.h>
 #include <vtkRenderer.h>
 #include <vtkShaderProgram.h>

@@ -6,8 +6,8 @@
 #include "core/env/env_sampling.h"
 #include "core/env/env_source_groups.h"
 #include "core/env/env_sources.h"
-#include "core/parameters/choices.h"
 #include "core/env/environment.h"
+#include "core/parameters/choices.h"
 
 #include <array>
 #include <cstdint>
