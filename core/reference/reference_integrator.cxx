@@ -63,16 +63,19 @@ void validate(const ReferenceOptions& options)
 // error (Blender's sunset, lobe (100, 10): converged at level 2 with a last difference of
 // 1.5e-3, an error of 1.8e-3 against a 2^20-sample estimate, the difference before 2.7e-3;
 // tests/bench/test_reference_image.cxx).
-template <class LevelFn>
-ReferenceResult refine(const LevelFn& evaluateLevel, const ReferenceOptions& options)
+// COST gives a level's evaluations, MAX_LEVEL the finest level tried.
+template <class LevelFn, class CostFn>
+ReferenceResult refine(const LevelFn& evaluateLevel, const CostFn& costOf, int maxLevel,
+                       const ReferenceOptions& options)
 {
   ReferenceResult result;
   glm::dvec3 previous = evaluateLevel(0);
-  result.evaluations = costAt(0);
+  result.value = previous;
+  result.evaluations = costOf(0);
   double previousDifference = std::numeric_limits<double>::infinity();
-  for (int level = 1; level <= kMaxLevel; ++level)
+  for (int level = 1; level <= maxLevel; ++level)
   {
-    const uint64_t cost = costAt(level);
+    const uint64_t cost = costOf(level);
     if (result.evaluations + cost > options.maxEvaluations)
       break;
     const glm::dvec3 current = evaluateLevel(level);
@@ -92,6 +95,12 @@ ReferenceResult refine(const LevelFn& evaluateLevel, const ReferenceOptions& opt
     previous = current;
   }
   return result;
+}
+
+template <class LevelFn>
+ReferenceResult refine(const LevelFn& evaluateLevel, const ReferenceOptions& options)
+{
+  return refine(evaluateLevel, costAt, kMaxLevel, options);
 }
 
 // Row sums of a (rows x columns) grid, in parallel once the grid is large enough to pay for the
@@ -505,38 +514,14 @@ glm::dvec3 excessAtCells(const SourceQuadrature& q, const Frame& frame, const Br
                  });
 }
 
-// refine()'s rule over k = 2^level cells a side, its cost the support's cells.
+// refine()'s rule over k = 2^level cells a side (up to 256), its cost the support's cells.
 template <class BrdfCos>
-ReferenceResult refineExcess(const SourceQuadrature& q, const Frame& frame, const BrdfCos& brdfCos,
-                             const ReferenceOptions& options)
+ReferenceResult refineExcess(const SourceQuadrature& q, const Frame& frame,
+                             const BrdfCos& brdfCos, const ReferenceOptions& options)
 {
-  ReferenceResult result;
   const uint64_t texels = q.support.size();
-  glm::dvec3 previous = excessAtCells(q, frame, brdfCos, 1);
-  result.value = previous;
-  result.evaluations = texels;
-  double previousDifference = std::numeric_limits<double>::infinity();
-  for (int level = 1; level <= 8; ++level)
-  {
-    const uint64_t cost = texels << (2 * level);
-    if (result.evaluations + cost > options.maxEvaluations)
-      break;
-    const glm::dvec3 current = excessAtCells(q, frame, brdfCos, 1 << level);
-    result.evaluations += cost;
-    result.value = current;
-    const double difference = luminance(glm::abs(current - previous));
-    result.errorEstimate = level > 1 ? std::max(difference, previousDifference) : difference;
-    const double allowed = std::max(options.relativeTolerance * std::abs(luminance(current)),
-                                    options.absoluteTolerance);
-    if (difference <= allowed && previousDifference <= allowed)
-    {
-      result.converged = true;
-      break;
-    }
-    previousDifference = difference;
-    previous = current;
-  }
-  return result;
+  return refine([&](int level) { return excessAtCells(q, frame, brdfCos, 1 << level); },
+                [&](int level) { return texels << (2 * level); }, 8, options);
 }
 
 // env less the excess: the residual the rules integrate.
