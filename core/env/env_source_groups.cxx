@@ -25,6 +25,11 @@ glm::dvec3 cornerDirection(double x, double y, int w, int h)
   return equirectToDirection({x / w, 1.0 - y / h});
 }
 
+// The inverse of the tent's cumulative distribution on [-1, 1] at s in [0, 1].
+double tentOffset(double s)
+{
+  return s < 0.5 ? std::sqrt(2.0 * s) - 1.0 : 1.0 - std::sqrt(2.0 * (1.0 - s));
+}
 } // namespace
 
 SourceGroups buildSourceGroups(const EnvAnalysis& analysis)
@@ -41,6 +46,8 @@ SourceGroups buildSourceGroups(const EnvAnalysis& analysis)
   out.density.assign(texels, 0.0f);
   out.group.assign(texels, std::int8_t(-1));
 
+  // A texel's probability as a density per solid angle where sin theta = 1 (docs above).
+  const double texelsPerEquatorSr = double(w) * double(h) / (2.0 * kPi * kPi);
   std::vector<double> omega(std::size_t(std::max(h, 0)));
   for (int y = 0; y < h; ++y)
     omega[std::size_t(y)] = 2.0 * kPi / w * (std::cos(kPi * y / h) - std::cos(kPi * (y + 1) / h));
@@ -81,6 +88,7 @@ SourceGroups buildSourceGroups(const EnvAnalysis& analysis)
     SourceGroup group = groups[g];
     group.direction =
         glm::length(weighted[g]) > 0.0 ? glm::normalize(weighted[g]) : glm::dvec3(0.0, 0.0, 1.0);
+    // Over the square its samples reach: one texel beyond each texel's centre.
     double minCos = 1.0;
     for (const std::uint32_t i : members[g])
     {
@@ -88,8 +96,11 @@ SourceGroups buildSourceGroups(const EnvAnalysis& analysis)
       const int y = int(i / std::uint32_t(w));
       for (int cy = 0; cy <= 1; ++cy)
         for (int cx = 0; cx <= 1; ++cx)
-          minCos =
-              std::min(minCos, glm::dot(group.direction, cornerDirection(x + cx, y + cy, w, h)));
+          minCos = std::min(minCos, glm::dot(group.direction,
+                                             cornerDirection(x - 0.5 + 2 * cx,
+                                                             std::clamp(y - 0.5 + 2 * cy, 0.0,
+                                                                        double(h)),
+                                                             w, h)));
     }
     group.angularRadius = std::acos(std::clamp(minCos, -1.0, 1.0));
     group.firstRow = int(out.rowY.size());
@@ -117,7 +128,7 @@ SourceGroups buildSourceGroups(const EnvAnalysis& analysis)
         rowCumulative += lum * omega[std::size_t(y)];
         out.entryTexel.push_back(i);
         out.entryCdf.push_back(float(rowCumulative / rowPower));
-        out.density[i] = float(lum / group.power);
+        out.density[i] = float(lum * omega[std::size_t(y)] / group.power * texelsPerEquatorSr);
       }
       out.entryCdf.back() = 1.0f;
       groupCumulative += rowPower;
@@ -129,6 +140,7 @@ SourceGroups buildSourceGroups(const EnvAnalysis& analysis)
     out.power += group.power;
     out.groups.push_back(group);
   }
+  out.residualMean = std::max(analysis.totalPower - out.power, 0.0) / (4.0 * kPi);
   for (std::size_t i = 0; i < texels; ++i)
     if (out.group[i] >= 0)
       out.group[i] = std::int8_t(renumber[std::size_t(out.group[i])]);
@@ -190,11 +202,14 @@ SourceGroupSample SourceGroups::sample(const std::vector<double>& selection,
   const std::uint32_t texel = entryTexel[e];
   const int x = int(texel % std::uint32_t(width));
   const int y = int(texel / std::uint32_t(width));
-  const double zTop = std::cos(kPi * y / height);
-  const double zBottom = std::cos(kPi * (y + 1) / height);
-  const double z = std::clamp(zTop + (zBottom - zTop) * t, -1.0, 1.0);
-  out.direction = equirectToDirection({(x + s) / width, 1.0 - std::acos(z) / kPi});
-  out.pdf = q * double(density[texel]);
+  // A point of the texel's tent (the bilinear weight of its centre), wrapped in u, reflected
+  // at the poles (where the clamped interpolation gives the edge row the weight of both).
+  double gx = x + 0.5 + tentOffset(s);
+  double gy = y + 0.5 + tentOffset(t);
+  gx -= width * std::floor(gx / width);
+  gy = gy < 0.0 ? -gy : gy > height ? 2.0 * height - gy : gy;
+  out.direction = equirectToDirection({gx / width, 1.0 - gy / height});
+  out.pdf = pdf(selection, out.direction);
   out.group = g;
   return out;
 }
@@ -203,13 +218,51 @@ double SourceGroups::pdf(const std::vector<double>& selection, const glm::dvec3&
 {
   if (groups.empty() || !(glm::length(d) > 0.0))
     return 0.0;
-  const glm::dvec2 uv = directionToEquirect(glm::normalize(d));
-  const int x = std::clamp(int(std::floor(uv.x * width)), 0, width - 1);
-  const int y = std::clamp(int(std::floor((1.0 - uv.y) * height)), 0, height - 1);
-  const std::size_t i = std::size_t(y) * std::size_t(width) + std::size_t(x);
-  const int g = group[i];
-  return g < 0 ? 0.0 : selection[std::size_t(g)] * double(density[i]);
+  const glm::dvec3 unit = glm::normalize(d);
+  const glm::dvec2 uv = directionToEquirect(unit);
+  // The texels' densities interpolated as the excess is (bilinear, wrapping in u, clamped in
+  // v), per unit of (u, v) area, then per solid angle.
+  const double fx = uv.x * width - 0.5;
+  const double fy = (1.0 - uv.y) * height - 0.5;
+  const double x0 = std::floor(fx);
+  const double y0 = std::floor(fy);
+  const double a = fx - x0;
+  const double b = fy - y0;
+  double sum = 0.0;
+  for (int j = 0; j <= 1; ++j)
+    for (int k = 0; k <= 1; ++k)
+    {
+      const int x = int(x0 + k - width * std::floor((x0 + k) / width));
+      const int y = std::clamp(int(y0) + j, 0, height - 1);
+      const std::size_t i = std::size_t(y) * std::size_t(width) + std::size_t(x);
+      const int g = group[i];
+      if (g >= 0)
+        sum += (k ? a : 1.0 - a) * (j ? b : 1.0 - b) * selection[std::size_t(g)] *
+               double(density[i]);
+    }
+  const double sinTheta = std::sqrt(std::max(1.0 - unit.z * unit.z, 0.0));
+  return sum > 0.0 ? sum / std::max(sinTheta, 1e-300) : 0.0;
 }
+
+namespace
+{
+// The lobe's density at the direction of the group's cap nearest to the mirror direction r.
+double lobePdfAtCap(const SourceGroup& group, const glm::dvec3& r,
+                    const std::function<double(const glm::dvec3&)>& lobePdf)
+{
+  const double cosAngle = std::clamp(glm::dot(group.direction, r), -1.0, 1.0);
+  glm::dvec3 nearest = r;
+  if (std::acos(cosAngle) > group.angularRadius)
+  {
+    const glm::dvec3 across = r - cosAngle * group.direction;
+    const double length = glm::length(across);
+    const glm::dvec3 side = length > 0.0 ? across / length : glm::dvec3(0.0);
+    nearest =
+        std::cos(group.angularRadius) * group.direction + std::sin(group.angularRadius) * side;
+  }
+  return lobePdf(nearest);
+}
+} // namespace
 
 std::vector<double> lobeAwareSelection(const SourceGroups& groups, const glm::dvec3& mirror,
                                        const std::function<double(const glm::dvec3&)>& lobePdf,
@@ -222,17 +275,7 @@ std::vector<double> lobeAwareSelection(const SourceGroups& groups, const glm::dv
   for (std::size_t g = 0; g < n; ++g)
   {
     const SourceGroup& group = groups.groups[g];
-    const double cosAngle = std::clamp(glm::dot(group.direction, r), -1.0, 1.0);
-    glm::dvec3 nearest = r;
-    if (std::acos(cosAngle) > group.angularRadius)
-    {
-      const glm::dvec3 across = r - cosAngle * group.direction;
-      const double length = glm::length(across);
-      const glm::dvec3 side = length > 0.0 ? across / length : glm::dvec3(0.0);
-      nearest =
-          std::cos(group.angularRadius) * group.direction + std::sin(group.angularRadius) * side;
-    }
-    weight[g] = group.power * std::min(lobePdf(nearest), 1.0 / group.solidAngle);
+    weight[g] = group.power * std::min(lobePdfAtCap(group, r, lobePdf), 1.0 / group.solidAngle);
     sum += weight[g];
   }
   std::vector<double> selection = groups.powerSelection();
@@ -240,5 +283,34 @@ std::vector<double> lobeAwareSelection(const SourceGroups& groups, const glm::dv
     for (std::size_t g = 0; g < n; ++g)
       selection[g] = (1.0 - defensive) * weight[g] / sum + defensive * selection[g];
   return selection;
+}
+} // namespace aniso
+
+namespace aniso
+{
+double smallSourceShare(const SourceGroups& groups, const glm::dvec3& mirror,
+                        const std::function<double(const glm::dvec3&)>& lobePdf)
+{
+  double seen = 0.0;
+  double small = 0.0;
+  const glm::dvec3 r = glm::normalize(mirror);
+  for (const SourceGroup& group : groups.groups)
+  {
+    const double pdf = lobePdfAtCap(group, r, lobePdf);
+    if (!(pdf > 0.0))
+      continue;
+    const double w = group.power * std::min(pdf, 1.0 / group.solidAngle);
+    seen += w;
+    small += w * std::min(1.0 / (pdf * group.solidAngle), 1.0);
+  }
+  const double whole = seen + groups.residualMean;
+  return whole > 0.0 ? small / whole : 0.0;
+}
+
+int sourceSampleCount(double smallShare, int base)
+{
+  const double share = std::clamp(smallShare, 0.0, 1.0);
+  const int k = std::clamp(int(std::lround(std::log2(1.0 + 3.0 * share))), 0, 2);
+  return std::max(base, 1) << k;
 }
 } // namespace aniso

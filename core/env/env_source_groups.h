@@ -6,17 +6,24 @@
 // q_g (the pixel's selection, lobeAwareSelection), then a texel of the group with probability
 // proportional to its excess luminance power (a row of the group's texels by its power, then a
 // texel of the row, so that the group's samples stratify in both directions as the whole
-// environment's tables do), then a point uniform in (phi, cos theta) inside the texel: the
-// density per solid angle is q_g x excess luminance / P_g there (P_g the group's luminance
-// power), so the excess over the density is P_g / q_g across a source of one colour.
-// docs/METHOD.md, "The sources split off".
+// environment's tables do), then a point of the texel's tent in (u, v) (the weight its centre
+// has in the bilinear interpolation the excess is read with: one texel either side, wrapping
+// in u, reflected at the poles). The samples' density is then the texels' probabilities
+// interpolated as the excess is: per solid angle q_g x (bilinear excess luminance) / P_g up to
+// the ratio of sin theta at the texels' centres and at the point (P_g the group's luminance
+// power), so the excess over the density stays near P_g / q_g across a source of one colour,
+// and the estimate integrates the image the reference does (bilinear), not its texels as
+// constants. docs/METHOD.md, "The sources split off".
 //
 // Layout (shader tables): the rows, group after group, each group's from the top: rowY the grid
 // row, rowCdf the cumulative probability within its group at the row's end (the group's last is
 // 1), rowFirst and rowCount its entries; the entries, row after row in x order: entryTexel the
 // texel index y W + x, entryCdf the cumulative probability within its row at the entry's end
-// (the row's last is 1). Per texel of the grid: density (per solid angle, within its group) and
-// group (-1 outside the source part).
+// (the row's last is 1). Per texel of the grid: density (its probability within its group
+// times W H / (2 pi^2), the density per solid angle of the tent's mass where sin theta = 1)
+// and group (-1 outside the source part). The density at direction d is
+// sum_k w_k q_{g_k} density_k / sin theta(d) over the four texels of d's bilinear
+// interpolation (weights w_k).
 #include "core/env/env_sources.h"
 
 #include <cstdint>
@@ -30,7 +37,7 @@ namespace aniso
 struct SourceGroup
 {
   glm::dvec3 direction{0.0, 0.0, 1.0}; // excess-power-weighted mean direction (unit, env coords)
-  double angularRadius = 0.0;          // largest angle from direction to a texel corner
+  double angularRadius = 0.0; // largest angle from direction to where its samples reach
   double solidAngle = 0.0;             // of its texels
   double power = 0.0;                  // integral of the excess luminance over its texels
   int firstRow = 0;                    // its rows: [firstRow, firstRow + rowCount)
@@ -51,7 +58,8 @@ struct SourceGroups
 
   int width = 0; // the analysis grid
   int height = 0;
-  double power = 0.0; // of the whole source part (luminance)
+  double power = 0.0;        // of the whole source part (luminance)
+  double residualMean = 0.0; // mean luminance of the residual: (total - power) / (4 pi)
   std::vector<SourceGroup> groups;
   std::vector<int> rowY;
   std::vector<float> rowCdf;
@@ -87,4 +95,18 @@ SourceGroups buildSourceGroups(const EnvAnalysis& analysis);
 std::vector<double> lobeAwareSelection(const SourceGroups& groups, const glm::dvec3& mirror,
                                        const std::function<double(const glm::dvec3&)>& lobePdf,
                                        double defensive);
+
+// How much of what a pixel's lobe sees comes from groups smaller than the lobe: group g seen
+// as w_g = P_g min(p(l_g), 1 / solidAngle_g) (lobeAwareSelection's weight), r_g = p(l_g)
+// solidAngle_g (the group's solid angle against the lobe's, where the lobe reaches it), and
+// share = sum_g w_g min(1 / r_g, 1) / (sum_g w_g + residualMean): a group the lobe fits inside
+// (r > 1) is found by the lobe's own samples, a smaller one by the source samples. In [0, 1].
+// (Also leaving out groups across which the lobe is flat, r below 0.01, was measured: no better
+// at equal time, docs/BENCHMARKS.md.)
+double smallSourceShare(const SourceGroups& groups, const glm::dvec3& mirror,
+                        const std::function<double(const glm::dvec3&)>& lobePdf);
+
+// A pixel's source samples per frame from its share: base x 2^k, k = round(log2(1 + 3 share))
+// (0 to 2), so 4 base when all it sees is such groups, base when none.
+int sourceSampleCount(double smallShare, int base);
 } // namespace aniso

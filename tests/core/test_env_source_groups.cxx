@@ -1,12 +1,14 @@
 // The source groups (core/env/env_source_groups.h) of an image built here: ten lamps of known
 // texels and a window on a grey sky. Checked against what the test computes from the grid
 // itself: every texel above T in exactly one group, the groups' powers and directions (the
-// analysis' listed sources for the first seven), the sampled directions' histogram against the
-// stated density, the density sample() returns against pdf() at the same direction, the
-// estimator excess / pdf averaging to the source part's power (an identity), and the per-pixel
-// selection following the lobe (its bound) with the defensive share kept.
+// analysis' listed sources for the first seven), every sample inside its group's cap, the
+// sampled directions' histogram against the stated density integrated over each texel, the
+// estimator excess / pdf averaging to the integral of the excess as the image interpolates it
+// (bilinear, integrated here by quadrature: an identity), and the per-pixel selection following
+// the lobe (its bound) with the defensive share kept.
 #include "core/env/env_source_groups.h"
 #include "core/env/env_sources.h"
+#include "core/env/environment.h"
 #include "core/error.h"
 
 #include <cmath>
@@ -116,15 +118,37 @@ TEST(SourceGroups, EveryExcessTexelInOneGroupWithItsPower)
     EXPECT_NEAR(groups.groups[g].power,
                 0.2126 * s.power.x + 0.7152 * s.power.y + 0.0722 * s.power.z,
                 1e-9 * groups.groups[g].power);
-    EXPECT_NEAR(groups.groups[g].angularRadius, s.angularRadius, 1e-12);
+    // The cap reaches half a texel beyond the source's texels (its samples' tents).
+    EXPECT_GT(groups.groups[g].angularRadius, s.angularRadius);
+    EXPECT_LT(groups.groups[g].angularRadius, s.angularRadius + 2.0 * kPi / kW);
   }
   // The last group holds the four weakest lamps: 1500 ... 3000 less T, one texel each.
   EXPECT_EQ(groups.groups[7].texels, 4);
   EXPECT_EQ(groups.groups[7].rowCount, 1); // all in row 40
 }
 
-// Samples of a selection that is neither by power nor uniform: their histogram over texels
-// follows q_g x excess / P_g x the texel's solid angle, and sample()'s density is pdf()'s.
+// The integral of f over texel (x, y) by the midpoint rule on k x k cells in (u, cos theta).
+template <typename F>
+double overTexel(int x, int y, int k, const F& f)
+{
+  const double zTop = std::cos(kPi * y / kH);
+  const double zBottom = std::cos(kPi * (y + 1) / kH);
+  const double cell = 2.0 * kPi / (kW * k) * (zTop - zBottom) / k;
+  double sum = 0.0;
+  for (int j = 0; j < k; ++j)
+    for (int i = 0; i < k; ++i)
+    {
+      const double z = zTop + (zBottom - zTop) * (j + 0.5) / k;
+      const double phi = kPi - 2.0 * kPi * (x + (i + 0.5) / k) / kW;
+      const double r = std::sqrt(1.0 - z * z);
+      sum += f(glm::dvec3(r * std::cos(phi), r * std::sin(phi), z)) * cell;
+    }
+  return sum;
+}
+
+// Samples of a selection that is neither by power nor uniform: each inside its group's cap, and
+// their histogram over texels follows pdf() integrated over each texel (cells expecting fewer
+// than 5 pooled), with no sample where pdf() is zero over the whole texel.
 TEST(SourceGroups, SamplesFollowTheirDensity)
 {
   const aniso::EnvAnalysis a = scene();
@@ -134,62 +158,94 @@ TEST(SourceGroups, SamplesFollowTheirDensity)
   std::mt19937_64 rng(7);
   std::uniform_real_distribution<double> uniform(0.0, 1.0);
   const int n = 1 << 18;
-  int mismatched = 0;
+  int outsideCap = 0;
   for (int i = 0; i < n; ++i)
   {
     const aniso::SourceGroupSample s = groups.sample(selection, {uniform(rng), uniform(rng)});
     ASSERT_GE(s.group, 0);
-    const double pdf = groups.pdf(selection, s.direction);
-    if (std::abs(pdf - s.pdf) > 1e-6 * s.pdf)
-      ++mismatched; // a point on a texel's edge may round into the neighbour
+    ASSERT_GT(s.pdf, 0.0);
+    const aniso::SourceGroup& group = groups.groups[std::size_t(s.group)];
+    if (glm::dot(s.direction, group.direction) < std::cos(group.angularRadius) - 1e-12)
+      ++outsideCap;
     const glm::dvec2 uv = aniso::directionToEquirect(s.direction);
     const int x = std::min(int(uv.x * kW), kW - 1);
     const int y = std::min(int((1.0 - uv.y) * kH), kH - 1);
     count[std::size_t(y * kW + x)] += 1.0;
   }
-  EXPECT_LT(mismatched, n / 1000);
+  EXPECT_EQ(outsideCap, 0);
   double chi2 = 0.0;
   int cells = 0;
+  double pooledCount = 0.0;
+  double pooledExpected = 0.0;
+  double total = 0.0;
   for (int y = 0; y < kH; ++y)
     for (int x = 0; x < kW; ++x)
     {
       const std::size_t i = std::size_t(y * kW + x);
-      const int g = groups.group[i];
-      const double expected = g < 0 ? 0.0
-                                    : n * selection[std::size_t(g)] * excessLuminance(a, x, y) /
-                                          groups.groups[std::size_t(g)].power * texelSolidAngle(y);
+      const double expected =
+          n * overTexel(x, y, 16, [&](const glm::dvec3& d) { return groups.pdf(selection, d); });
+      total += expected;
       if (expected == 0.0)
       {
         EXPECT_EQ(count[i], 0.0) << x << ", " << y;
         continue;
       }
+      if (expected < 5.0)
+      {
+        pooledCount += count[i];
+        pooledExpected += expected;
+        continue;
+      }
       chi2 += (count[i] - expected) * (count[i] - expected) / expected;
       ++cells;
     }
-  // chi-square with cells - 1 degrees of freedom: mean cells - 1, sd sqrt(2 (cells - 1)).
-  std::printf("chi-square %.1f over %d texels\n", chi2, cells);
+  if (pooledExpected > 0.0)
+  {
+    chi2 += (pooledCount - pooledExpected) * (pooledCount - pooledExpected) / pooledExpected;
+    ++cells;
+  }
+  // The density integrates to 1 (up to the quadrature), and chi-square with cells - 1 degrees
+  // of freedom: mean cells - 1, sd sqrt(2 (cells - 1)).
+  EXPECT_NEAR(total / n, 1.0, 1e-3);
+  std::printf("chi-square %.1f over %d cells\n", chi2, cells);
   EXPECT_LT(chi2, cells + 6.0 * std::sqrt(2.0 * cells));
 }
 
-// excess(d) / pdf(d) = P_g / q_g over group g (one colour per source here), so its mean over
-// stratified samples is sum_g q_g P_g / q_g = the source part's power, whatever the selection.
+// excess(d) / pdf(d) stays near P_g / q_g over group g (one colour per source here), and its
+// mean over samples is the integral of the excess as the image interpolates it (bilinear: the
+// equirect environment's lookup), whatever the selection. That integral by quadrature over
+// every texel, and the texels' sum (the groups' power) within the interpolation's
+// second-order difference.
 TEST(SourceGroups, ExcessOverDensityAveragesToThePower)
 {
   const aniso::EnvAnalysis a = scene();
   const aniso::SourceGroups groups = aniso::buildSourceGroups(a);
+  const aniso::EquirectEnvironment excess(a.excess, "test:excess");
+  auto luminance = [&](const glm::dvec3& d)
+  {
+    const glm::dvec3 e = excess.radiance(d);
+    return 0.2126 * e.x + 0.7152 * e.y + 0.0722 * e.z;
+  };
+  double integral = 0.0;
+  for (int y = 0; y < kH; ++y)
+    for (int x = 0; x < kW; ++x)
+      integral += overTexel(x, y, 8, luminance);
+  EXPECT_NEAR(integral / groups.power, 1.0, 2e-3);
   const std::vector<double> selection{0.4, 0.01, 0.09, 0.1, 0.1, 0.1, 0.1, 0.1};
-  const int n = 4096;
+  const int n = 1 << 16;
   double sum = 0.0;
   for (int i = 0; i < n; ++i)
   {
     const aniso::SourceGroupSample s =
         groups.sample(selection, {(i + 0.5) / n, std::fmod(0.618034 * i, 1.0)});
-    const glm::dvec2 uv = aniso::directionToEquirect(s.direction);
-    const int x = std::min(int(uv.x * kW), kW - 1);
-    const int y = std::min(int((1.0 - uv.y) * kH), kH - 1);
-    sum += excessLuminance(a, x, y) / s.pdf;
+    // A point on the edge of its tent (the neighbour's centre) has density 0 unless the
+    // neighbour is a source; the excess is 0 there too.
+    if (s.pdf > 0.0)
+      sum += luminance(s.direction) / s.pdf;
+    else
+      EXPECT_EQ(luminance(s.direction), 0.0) << i;
   }
-  EXPECT_NEAR(sum / n / groups.power, 1.0, 1e-3);
+  EXPECT_NEAR(sum / n / integral, 1.0, 1e-3);
 }
 
 // A lobe peaked on lamp 1 (the 5500 one): its group takes all but the defensive share; a lobe
@@ -247,6 +303,50 @@ TEST(SourceGroups, SelectionFollowsTheLobe)
       },
       defensive);
   EXPECT_GT(glm::dot(seen, inWindow), 1.0 - 1e-12);
+}
+
+// The pixel's source samples: four times the base where a sharp lobe sits on a lamp (a group
+// smaller than the lobe that carries its light) and where a lobe over the whole sphere sees
+// the lamps and the window; the base where the lobe sees no group and where it fits inside the
+// window (its own samples find it); the ladder in between.
+TEST(SourceGroups, SampleCountFollowsWhatTheLobeResolves)
+{
+  const aniso::EnvAnalysis a = scene();
+  const aniso::SourceGroups groups = aniso::buildSourceGroups(a);
+  EXPECT_GT(groups.residualMean, 0.9); // the sky of 1, the window cut to T
+  // A lobe of angular width s around its centre, normalised for small s (peak 1 / (2 pi s^2)).
+  auto lobe = [](const glm::dvec3& centre, double s)
+  {
+    return [centre, s](const glm::dvec3& l)
+    {
+      return std::exp((glm::dot(glm::normalize(l), centre) - 1.0) / (s * s)) /
+             (2.0 * kPi * s * s);
+    };
+  };
+  const int base = 4;
+  const glm::dvec3 lamp1 = texelCentre(16, 40);
+  const double onLamp = aniso::smallSourceShare(groups, lamp1, lobe(lamp1, 0.02));
+  EXPECT_GT(onLamp, 0.95);
+  EXPECT_EQ(aniso::sourceSampleCount(onLamp, base), 4 * base);
+
+  EXPECT_EQ(aniso::smallSourceShare(groups, lamp1, [](const glm::dvec3&) { return 0.0; }), 0.0);
+  // Uniform: every group seen at 1 / (4 pi), all smaller than the lobe, against the residual
+  // (a sky of 1, the window at T = 16): share = P / (P + 4 pi residualMean).
+  const double wide =
+      aniso::smallSourceShare(groups, lamp1, [](const glm::dvec3&) { return 0.25 / kPi; });
+  EXPECT_NEAR(wide, groups.power / (groups.power + 4.0 * kPi * groups.residualMean), 1e-12);
+  EXPECT_EQ(aniso::sourceSampleCount(wide, base), 4 * base);
+  const glm::dvec3 inWindow = texelCentre(95, 14);
+  const double window = aniso::smallSourceShare(groups, inWindow, lobe(inWindow, 0.02));
+  EXPECT_LT(window, 0.05);
+  EXPECT_EQ(aniso::sourceSampleCount(window, base), base);
+
+  EXPECT_EQ(aniso::sourceSampleCount(0.0, 3), 3);
+  EXPECT_EQ(aniso::sourceSampleCount(0.2, 3), 6);
+  EXPECT_EQ(aniso::sourceSampleCount(0.5, 3), 6);
+  EXPECT_EQ(aniso::sourceSampleCount(0.8, 3), 12);
+  EXPECT_EQ(aniso::sourceSampleCount(2.0, 3), 12);
+  EXPECT_EQ(aniso::sourceSampleCount(0.0, 0), 1);
 }
 
 TEST(SourceGroups, AnAnalysisWithoutRanksIsRefused)

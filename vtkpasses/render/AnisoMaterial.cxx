@@ -550,12 +550,22 @@ public:
       hook.bindTexture(program, "anisoSourceTables", lighting->sourceTableTexture(window));
       hook.bindTexture(program, "anisoSourceDensity", lighting->sourceDensityTexture(window));
       setSourceGroupUniforms(program, *lighting->sourceSplit().groups);
+      // M a pixel, up to 4 M where its lobe sees sources smaller than itself (a count set in
+      // the settings is taken as it is).
       const int sourceCount =
           settings.sourceSamples > 0 ? settings.sourceSamples : std::max(1, settings.samples / 4);
+      const int sourceSteps = settings.sourceSamples > 0 ? 0 : 2;
       program->SetUniformi("anisoSourceSampleCount", sourceCount);
-      // Their own block of the sequence, so that frames stratify the source samples too.
-      setSequenceUniforms(program, "anisoSourceSequenceCount", "anisoSourceSequenceBlock", frame,
-                          static_cast<uint32_t>(sourceCount));
+      program->SetUniformi("anisoSourceSampleSteps", sourceSteps);
+      // Their own blocks of the sequence, one per count, so that frames stratify them too.
+      for (int k = 0; k <= 2; ++k)
+      {
+        const SequenceBlock block = sequenceBlock(frame, static_cast<uint32_t>(sourceCount << k));
+        const int bits[2] = {static_cast<int>(block.x), static_cast<int>(block.y)};
+        const std::string name = "anisoSourceSequenceBlocks[" + std::to_string(k) + "]";
+        program->SetUniform2i(name.c_str(), bits);
+      }
+      program->SetUniformi("anisoSourceSequence", takesSequence(frame, 2) ? 1 : 0);
     }
     program->SetUniform3fv(
         "anisoIrradianceSH", 9,
@@ -621,6 +631,9 @@ public:
     program->SetUniform4fv("anisoSourceGroupInfo", kGroups,
                            reinterpret_cast<const float(*)[4]>(info.data()));
     program->SetUniformf("anisoSourceDefensive", static_cast<float>(kSourceDefensive));
+    program->SetUniformf("anisoSourceResidualShare",
+                         static_cast<float>(groups.power > 0.0 ? groups.residualMean / groups.power
+                                                               : 0.0));
   }
 
   // The field's range (relative to the values' offset), the target's values and its colours.

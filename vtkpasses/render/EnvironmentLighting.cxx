@@ -323,7 +323,7 @@ void EnvironmentLighting::uploadSourceTextures(vtkOpenGLRenderWindow* window)
   }
   sourceTextures_[0] = uploadCubemap(window, split.residualCube, "residual environment cubemap");
   sourceTextures_[1] = uploadFloatTexture(window, excess.width, excess.height, 3,
-                                          excess.data.data(), TextureFiltering::Nearest,
+                                          excess.data.data(), TextureFiltering::Linear,
                                           TextureWrap::RepeatSClampT, "environment sources");
   sourceTextures_[2] =
       uploadFloatTexture(window, kSourceTableWidth, tableRows, 4, tableData.data(),

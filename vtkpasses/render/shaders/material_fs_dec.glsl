@@ -80,7 +80,7 @@ uniform float anisoLobeFraction; // share of the lobe technique in the one-sampl
 // groups (core/env/env_source_groups.h): each pixel chooses a group by its lobe, then a texel of
 // the group by its excess power.
 #define ANISO_SOURCE_GROUPS 8
-uniform sampler2D anisoSourceRadiance; // RGB32F excess, nearest (constant per texel)
+uniform sampler2D anisoSourceRadiance; // RGB32F excess, bilinear as the whole image
 // RGBA32F, 4096 wide: the groups' rows (cumulative within the group, grid row, first entry,
 // entries), then the entries (cumulative within the row, texel index)
 uniform sampler2D anisoSourceTables;
@@ -91,11 +91,17 @@ uniform vec4 anisoSourceGroupCone[ANISO_SOURCE_GROUPS]; // direction (env), cos 
 // Its share of the sources' power, 1 / its solid angle, its first row, its row count.
 uniform vec4 anisoSourceGroupInfo[ANISO_SOURCE_GROUPS];
 uniform float anisoSourceDefensive; // share of the selection kept in proportion to the power
-uniform int anisoSourceSampleCount; // M, source samples per fragment and frame
-// The source samples' own block of the sequence, as anisoSequenceCount and anisoSequenceBlock
-// for the lobe's (0: the rotated Hammersley set).
-uniform int anisoSourceSequenceCount;
-uniform ivec2 anisoSourceSequenceBlock;
+// A pixel's source samples per frame (core/env/env_source_groups.h, sourceSampleCount):
+// anisoSourceSampleCount (M) times 2^k, k from 0 to anisoSourceSampleSteps, as its lobe sees
+// sources smaller than itself (smallSourceShare; anisoSourceResidualShare the residual's mean
+// luminance over the sources' power).
+uniform int anisoSourceSampleCount;
+uniform int anisoSourceSampleSteps;
+uniform float anisoSourceResidualShare;
+// The source samples' own blocks of the sequence, one per count M 2^k (as anisoSequenceBlock
+// for the lobe's), when anisoSourceSequence is 1 (else the rotated Hammersley set).
+uniform int anisoSourceSequence;
+uniform ivec2 anisoSourceSequenceBlocks[3];
 #endif
 #ifdef ANISO_METHOD_SPLIT_SUM
 uniform sampler2D anisoBrdfLut; // RG32F: s, b with F0 s + b the directional albedo
@@ -425,9 +431,12 @@ vec2 anisoBrdfLutCoords(vec3 t, vec3 b, vec3 n, vec3 v)
 // The pixel's choice between the source groups (lobeAwareSelection in
 // core/env/env_source_groups.h): group g weighs P_g min(p_lobe(l_g), 1 / solid angle_g), l_g the
 // direction of its cap nearest to the mirror direction (p_lobe zero below the surface), and
-// q_g = (1 - d) w_g / sum w + d P_g / P (by power alone when no group is seen).
-void anisoSourceSelection(vec3 t, vec3 b, vec3 n, vec3 v, out float q[ANISO_SOURCE_GROUPS])
+// q_g = (1 - d) w_g / sum w + d P_g / P (by power alone when no group is seen); and its count
+// of source samples (smallSourceShare, sourceSampleCount).
+void anisoSourceSelection(vec3 t, vec3 b, vec3 n, vec3 v, out float q[ANISO_SOURCE_GROUPS],
+                          out int sampleSteps)
 {
+  float small = 0.0;
   mat3 environmentToWorld = transpose(anisoWorldToEnvironment);
   vec3 r = anisoWorldToEnvironment * (2.0 * dot(n, v) * n - v);
   float w[ANISO_SOURCE_GROUPS];
@@ -465,9 +474,14 @@ void anisoSourceSelection(vec3 t, vec3 b, vec3 n, vec3 v, out float q[ANISO_SOUR
     }
     float pdf =
       exp2(anisoLog2HalfVectorPdf(vec3(dot(h, t), dot(h, b), dot(h, n))) - log2(4.0 * vDotH));
-    w[g] = anisoSourceGroupInfo[g].x * min(pdf, anisoSourceGroupInfo[g].y);
+    float seen = min(pdf, anisoSourceGroupInfo[g].y);
+    w[g] = anisoSourceGroupInfo[g].x * seen;
     sum += w[g];
+    // Down by its solid angle against the lobe's where the lobe fits inside it.
+    small += w[g] * min(anisoSourceGroupInfo[g].y / pdf, 1.0);
   }
+  float share = clamp(small / max(sum + anisoSourceResidualShare, 1e-30), 0.0, 1.0);
+  sampleSteps = clamp(int(round(log2(1.0 + 3.0 * share))), 0, anisoSourceSampleSteps);
   for (int g = 0; g < ANISO_SOURCE_GROUPS; ++g)
   {
     float share = g < anisoSourceGroupCount ? anisoSourceGroupInfo[g].x : 0.0;
@@ -504,12 +518,48 @@ vec2 anisoSourcePick(int first, int count, float u)
   return vec2(float(lo), clamp((u - c0) / max(c1 - c0, 1e-30), 0.0, 1.0));
 }
 
+// The inverse of the tent's cumulative distribution on [-1, 1] at s in [0, 1].
+float anisoTentOffset(float s)
+{
+  return s < 0.5 ? sqrt(2.0 * s) - 1.0 : 1.0 - sqrt(2.0 * (1.0 - s));
+}
+
+// Density of anisoSampleSources under q at equirectangular coordinates uv (SourceGroups::pdf):
+// the texels' densities interpolated as the excess is (bilinear, wrapping in u, clamped in v),
+// over sin theta.
+float anisoSourcePdf(float q[ANISO_SOURCE_GROUPS], vec2 uv)
+{
+  vec2 f = uv * vec2(anisoSourceGrid) - 0.5;
+  vec2 corner = floor(f);
+  vec2 a = f - corner;
+  ivec2 c0 = ivec2(corner);
+  float sum = 0.0;
+  for (int j = 0; j <= 1; ++j)
+  {
+    int y = clamp(c0.y + j, 0, anisoSourceGrid.y - 1);
+    for (int k = 0; k <= 1; ++k)
+    {
+      int x = c0.x + k;
+      x = x < 0 ? x + anisoSourceGrid.x : (x >= anisoSourceGrid.x ? x - anisoSourceGrid.x : x);
+      vec2 densityGroup = texelFetch(anisoSourceDensity, ivec2(x, y), 0).rg;
+      if (densityGroup.g > -0.5)
+      {
+        int g = clamp(int(densityGroup.g + 0.5), 0, ANISO_SOURCE_GROUPS - 1);
+        sum += (k == 1 ? a.x : 1.0 - a.x) * (j == 1 ? a.y : 1.0 - a.y) * q[g] * densityGroup.r;
+      }
+    }
+  }
+  float sinTheta = sin(anisoPi * clamp(uv.y, 0.0, 1.0));
+  return sum > 0.0 ? sum / max(sinTheta, 1e-30) : 0.0;
+}
+
 // A direction (environment coordinates) of the source groups under the selection q and its
 // density (SourceGroups::sample): xi.x picks the group by q's cumulative sum, then, rescaled,
-// the texel of the row and the column inside it; xi.y the row and the height inside the texel
-// (uniform in cos theta). w = 0 when no group has a share.
-vec4 anisoSampleSources(float q[ANISO_SOURCE_GROUPS], vec2 xi)
+// the texel of the row and where in u; xi.y the row and where in v: a point of the texel's
+// tent. w = 0 when no group has a share (or the point is its tent's edge).
+vec4 anisoSampleSources(float q[ANISO_SOURCE_GROUPS], vec2 xi, out vec2 uv)
 {
+  uv = vec2(0.0);
   int g = -1;
   float start = 0.0;
   float cumulative = 0.0;
@@ -540,26 +590,17 @@ vec4 anisoSampleSources(float q[ANISO_SOURCE_GROUPS], vec2 xi)
   vec4 row = anisoSourceTable(int(rowPick.x));
   vec2 entryPick = anisoSourcePick(int(row.b + 0.5), int(row.a + 0.5), within);
   int texel = int(anisoSourceTable(int(entryPick.x)).g + 0.5);
-  int w = anisoSourceGrid.x;
-  int h = anisoSourceGrid.y;
-  int x = texel % w;
-  int y = texel / w;
-  float zTop = cos(anisoPi * float(y) / float(h));
-  float zBottom = cos(anisoPi * float(y + 1) / float(h));
-  float z = clamp(mix(zTop, zBottom, rowPick.y), -1.0, 1.0);
-  float sinTheta = sqrt(max(1.0 - z * z, 0.0));
-  float phi = anisoPi - 2.0 * anisoPi * (float(x) + entryPick.y) / float(w);
-  return vec4(sinTheta * cos(phi), sinTheta * sin(phi), z,
-              q[g] * texelFetch(anisoSourceDensity, ivec2(x, y), 0).r);
-}
-
-// Density of anisoSampleSources under q at equirectangular coordinates uv.
-float anisoSourcePdf(float q[ANISO_SOURCE_GROUPS], vec2 uv)
-{
-  ivec2 texel = clamp(ivec2(uv * vec2(anisoSourceGrid)), ivec2(0), anisoSourceGrid - 1);
-  vec2 densityGroup = texelFetch(anisoSourceDensity, texel, 0).rg;
-  int g = int(densityGroup.g + 0.5);
-  return densityGroup.g < -0.5 ? 0.0 : q[clamp(g, 0, ANISO_SOURCE_GROUPS - 1)] * densityGroup.r;
+  vec2 grid = vec2(anisoSourceGrid);
+  // A point of the texel's tent (grid units), wrapped in u, reflected at the poles.
+  vec2 p = vec2(float(texel % anisoSourceGrid.x), float(texel / anisoSourceGrid.x)) + 0.5 +
+    vec2(anisoTentOffset(entryPick.y), anisoTentOffset(rowPick.y));
+  p.x -= grid.x * floor(p.x / grid.x);
+  p.y = p.y < 0.0 ? -p.y : (p.y > grid.y ? 2.0 * grid.y - p.y : p.y);
+  uv = p / grid;
+  float theta = anisoPi * uv.y;
+  float phi = anisoPi - 2.0 * anisoPi * uv.x;
+  float sinTheta = sin(theta);
+  return vec4(sinTheta * cos(phi), sinTheta * sin(phi), cos(theta), anisoSourcePdf(q, uv));
 }
 
 // The sources' light by multi-sample MIS of the N lobe samples and the M source samples
@@ -570,7 +611,7 @@ float anisoSourcePdf(float q[ANISO_SOURCE_GROUPS], vec2 uv)
 // N L_s / (N p_lobe + M p_s) at a lobe sample (the caller multiplies by its AS weight, f (n.l)
 // / p_lobe, and the sum is divided by N).
 vec3 anisoSourceAtLobeSample(vec3 l, vec3 h, vec3 t, vec3 b, vec3 n, float vDotH, int count,
-                             float q[ANISO_SOURCE_GROUPS])
+                             float q[ANISO_SOURCE_GROUPS], int sourceCount)
 {
   vec2 uv = anisoEquirectCoords(anisoWorldToEnvironment * l);
   vec3 source = textureLod(anisoSourceRadiance, uv, 0.0).rgb;
@@ -582,7 +623,7 @@ vec3 anisoSourceAtLobeSample(vec3 l, vec3 h, vec3 t, vec3 b, vec3 n, float vDotH
     exp2(anisoLog2HalfVectorPdf(vec3(dot(h, t), dot(h, b), dot(h, n))) - log2(4.0 * vDotH));
   float pdfSource = anisoSourcePdf(q, uv);
   float n0 = float(count);
-  return source * (n0 * pdfLobe / (n0 * pdfLobe + float(anisoSourceSampleCount) * pdfSource));
+  return source * (n0 * pdfLobe / (n0 * pdfLobe + float(sourceCount) * pdfSource));
 }
 #endif
 
@@ -609,7 +650,9 @@ vec3 anisoSpecular(vec3 t, vec3 b, vec3 n, vec3 v, vec3 f0)
 #endif
 #ifdef ANISO_ENVIRONMENT_SOURCES
   float selection[ANISO_SOURCE_GROUPS];
-  anisoSourceSelection(t, b, n, v, selection);
+  int sourceSteps;
+  anisoSourceSelection(t, b, n, v, selection, sourceSteps);
+  int sourceCount = max(anisoSourceSampleCount, 1) << sourceSteps;
 #endif
   for (int i = 0; i < count; ++i)
   {
@@ -673,7 +716,7 @@ vec3 anisoSpecular(vec3 t, vec3 b, vec3 n, vec3 v, vec3 f0)
     }
     vec3 radiance = anisoEnvironmentRadiance(l, anisoSampleLod(hs.w - log2(4.0 * vDotH), count));
 #ifdef ANISO_ENVIRONMENT_SOURCES
-    radiance += anisoSourceAtLobeSample(l, h, t, b, n, vDotH, count, selection);
+    radiance += anisoSourceAtLobeSample(l, h, t, b, n, vDotH, count, selection, sourceCount);
 #endif
 #ifdef ANISO_METHOD_SPLIT_SUM
     sum += radiance * nDotL;
@@ -690,12 +733,16 @@ vec3 anisoSpecular(vec3 t, vec3 b, vec3 n, vec3 v, vec3 f0)
   // to frame as the lobe's are (their own block of the sequence), each weighted as anisoSourceAtLobeSample says (times N, as the
   // lobe's sum is divided by N).
   mat3 sourceToWorld = transpose(anisoWorldToEnvironment);
-  int sourceCount = max(anisoSourceSampleCount, 0);
+  // (A block of the sequence for 2 to 16 points, kMaxSequenceCount.)
+  int sourceSequenceCount =
+    anisoSourceSequence != 0 && sourceCount >= 2 && sourceCount <= 16 ? sourceCount : 0;
   for (int j = 0; j < sourceCount; ++j)
   {
+    vec2 uv;
     vec4 ls = anisoSampleSources(selection,
-                                 anisoSamplePoint(j, sourceCount, shift, anisoSourceSequenceCount,
-                                                  anisoSourceSequenceBlock));
+                                 anisoSamplePoint(j, sourceCount, shift, sourceSequenceCount,
+                                                  anisoSourceSequenceBlocks[sourceSteps]),
+                                 uv);
     vec3 l = sourceToWorld * ls.xyz;
     float nDotL = dot(n, l);
     vec3 h = normalize(v + l);
@@ -704,7 +751,7 @@ vec3 anisoSpecular(vec3 t, vec3 b, vec3 n, vec3 v, vec3 f0)
     {
       continue;
     }
-    vec3 source = textureLod(anisoSourceRadiance, anisoEquirectCoords(ls.xyz), 0.0).rgb;
+    vec3 source = textureLod(anisoSourceRadiance, uv, 0.0).rgb;
     float pdfLobe =
       exp2(anisoLog2HalfVectorPdf(vec3(dot(h, t), dot(h, b), dot(h, n))) - log2(4.0 * vDotH));
     float n0 = float(count);
