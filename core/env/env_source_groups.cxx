@@ -96,11 +96,11 @@ SourceGroups buildSourceGroups(const EnvAnalysis& analysis)
       const int y = int(i / std::uint32_t(w));
       for (int cy = 0; cy <= 1; ++cy)
         for (int cx = 0; cx <= 1; ++cx)
-          minCos = std::min(minCos, glm::dot(group.direction,
-                                             cornerDirection(x - 0.5 + 2 * cx,
-                                                             std::clamp(y - 0.5 + 2 * cy, 0.0,
-                                                                        double(h)),
-                                                             w, h)));
+          minCos = std::min(
+              minCos,
+              glm::dot(group.direction,
+                       cornerDirection(x - 0.5 + 2 * cx,
+                                       std::clamp(y - 0.5 + 2 * cy, 0.0, double(h)), w, h)));
     }
     group.angularRadius = std::acos(std::clamp(minCos, -1.0, 1.0));
     group.firstRow = int(out.rowY.size());
@@ -237,8 +237,8 @@ double SourceGroups::pdf(const std::vector<double>& selection, const glm::dvec3&
       const std::size_t i = std::size_t(y) * std::size_t(width) + std::size_t(x);
       const int g = group[i];
       if (g >= 0)
-        sum += (k ? a : 1.0 - a) * (j ? b : 1.0 - b) * selection[std::size_t(g)] *
-               double(density[i]);
+        sum +=
+            (k ? a : 1.0 - a) * (j ? b : 1.0 - b) * selection[std::size_t(g)] * double(density[i]);
     }
   const double sinTheta = std::sqrt(std::max(1.0 - unit.z * unit.z, 0.0));
   return sum > 0.0 ? sum / std::max(sinTheta, 1e-300) : 0.0;

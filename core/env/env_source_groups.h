@@ -37,7 +37,7 @@ namespace aniso
 struct SourceGroup
 {
   glm::dvec3 direction{0.0, 0.0, 1.0}; // excess-power-weighted mean direction (unit, env coords)
-  double angularRadius = 0.0; // largest angle from direction to where its samples reach
+  double angularRadius = 0.0;          // largest angle from direction to where its samples reach
   double solidAngle = 0.0;             // of its texels
   double power = 0.0;                  // integral of the excess luminance over its texels
   int firstRow = 0;                    // its rows: [firstRow, firstRow + rowCount)

@@ -317,10 +317,8 @@ TEST(SourceGroups, SampleCountFollowsWhatTheLobeResolves)
   // A lobe of angular width s around its centre, normalised for small s (peak 1 / (2 pi s^2)).
   auto lobe = [](const glm::dvec3& centre, double s)
   {
-    return [centre, s](const glm::dvec3& l)
-    {
-      return std::exp((glm::dot(glm::normalize(l), centre) - 1.0) / (s * s)) /
-             (2.0 * kPi * s * s);
+    return [centre, s](const glm::dvec3& l) {
+      return std::exp((glm::dot(glm::normalize(l), centre) - 1.0) / (s * s)) / (2.0 * kPi * s * s);
     };
   };
   const int base = 4;

@@ -631,9 +631,9 @@ public:
     program->SetUniform4fv("anisoSourceGroupInfo", kGroups,
                            reinterpret_cast<const float(*)[4]>(info.data()));
     program->SetUniformf("anisoSourceDefensive", static_cast<float>(kSourceDefensive));
-    program->SetUniformf("anisoSourceResidualShare",
-                         static_cast<float>(groups.power > 0.0 ? groups.residualMean / groups.power
-                                                               : 0.0));
+    program->SetUniformf(
+        "anisoSourceResidualShare",
+        static_cast<float>(groups.power > 0.0 ? groups.residualMean / groups.power : 0.0));
   }
 
   // The field's range (relative to the values' offset), the target's values and its colours.
