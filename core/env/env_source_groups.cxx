@@ -25,6 +25,21 @@ glm::dvec3 cornerDirection(double x, double y, int w, int h)
   return equirectToDirection({x / w, 1.0 - y / h});
 }
 
+// The guide of the run [first, first + count) of cdf, appended: cell k the first index whose
+// cumulative end exceeds k / count.
+void appendGuide(const std::vector<float>& cdf, int first, int count,
+                 std::vector<std::uint32_t>& guide)
+{
+  int i = first;
+  for (int k = 0; k < count; ++k)
+  {
+    const double bin = double(k) / double(count);
+    while (i < first + count - 1 && !(double(cdf[std::size_t(i)]) > bin))
+      ++i;
+    guide.push_back(std::uint32_t(i));
+  }
+}
+
 // The inverse of the tent's cumulative distribution on [-1, 1] at s in [0, 1].
 double tentOffset(double s)
 {
@@ -131,11 +146,13 @@ SourceGroups buildSourceGroups(const EnvAnalysis& analysis)
         out.density[i] = float(lum * omega[std::size_t(y)] / group.power * texelsPerEquatorSr);
       }
       out.entryCdf.back() = 1.0f;
+      appendGuide(out.entryCdf, out.rowFirst.back(), out.rowCount.back(), out.entryGuide);
       groupCumulative += rowPower;
       out.rowCdf.push_back(float(groupCumulative / group.power));
     }
     out.rowCdf.back() = 1.0f;
     group.rowCount = int(out.rowY.size()) - group.firstRow;
+    appendGuide(out.rowCdf, group.firstRow, group.rowCount, out.rowGuide);
     renumber[g] = int(out.groups.size());
     out.power += group.power;
     out.groups.push_back(group);
@@ -182,23 +199,19 @@ SourceGroupSample SourceGroups::sample(const std::vector<double>& selection,
   const double within = std::clamp((u - start) / q, 0.0, 1.0);
   const SourceGroup& chosen = groups[std::size_t(g)];
   // The first row, then the first entry of the row, whose cumulative end exceeds the number.
-  auto pick = [](const std::vector<float>& cdf, int first, int count, double number, double* rest)
+  auto pick = [](const std::vector<float>& cdf, const std::vector<std::uint32_t>& guide, int first,
+                 int count, double number, double* rest)
   {
-    const auto begin = cdf.begin() + first;
-    const auto end = begin + count;
-    auto it = std::upper_bound(begin, end, float(number));
-    if (it == end)
-      --it;
-    const std::size_t k = std::size_t(it - cdf.begin());
+    const std::size_t k = guidedSearch(cdf, guide, first, count, float(number));
     const double c0 = k == std::size_t(first) ? 0.0 : double(cdf[k - 1]);
     *rest = std::clamp((number - c0) / std::max(double(cdf[k]) - c0, 1e-30), 0.0, 1.0);
     return k;
   };
   double t = 0.0;
   const std::size_t row =
-      pick(rowCdf, chosen.firstRow, chosen.rowCount, std::clamp(xi.y, 0.0, 1.0), &t);
+      pick(rowCdf, rowGuide, chosen.firstRow, chosen.rowCount, std::clamp(xi.y, 0.0, 1.0), &t);
   double s = 0.0;
-  const std::size_t e = pick(entryCdf, rowFirst[row], rowCount[row], within, &s);
+  const std::size_t e = pick(entryCdf, entryGuide, rowFirst[row], rowCount[row], within, &s);
   const std::uint32_t texel = entryTexel[e];
   const int x = int(texel % std::uint32_t(width));
   const int y = int(texel / std::uint32_t(width));
@@ -312,5 +325,21 @@ int sourceSampleCount(double smallShare, int base)
   const double share = std::clamp(smallShare, 0.0, 1.0);
   const int k = std::clamp(int(std::lround(std::log2(1.0 + 3.0 * share))), 0, 2);
   return std::max(base, 1) << k;
+}
+} // namespace aniso
+
+namespace aniso
+{
+std::size_t guidedSearch(const std::vector<float>& cdf, const std::vector<std::uint32_t>& guide,
+                         int first, int count, float u)
+{
+  const int last = first + count - 1;
+  const int k = std::clamp(int(u * float(count)), 0, count - 1);
+  int i = int(guide[std::size_t(first + k)]);
+  while (i > first && cdf[std::size_t(i - 1)] > u)
+    --i;
+  while (i < last && !(cdf[std::size_t(i)] > u))
+    ++i;
+  return std::size_t(i);
 }
 } // namespace aniso

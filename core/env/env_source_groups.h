@@ -67,6 +67,11 @@ struct SourceGroups
   std::vector<int> rowCount;
   std::vector<std::uint32_t> entryTexel;
   std::vector<float> entryCdf;
+  // Guides (guidedSearch), one a row and one an entry: rowGuide[firstRow + k] the first row of
+  // the group's run whose rowCdf exceeds k / rowCount, entryGuide[rowFirst + k] likewise within
+  // the row's entries (absolute indices).
+  std::vector<std::uint32_t> rowGuide;
+  std::vector<std::uint32_t> entryGuide;
   std::vector<float> density;     // width x height
   std::vector<std::int8_t> group; // width x height
 
@@ -81,6 +86,14 @@ struct SourceGroups
   // The selection in proportion to the groups' power alone.
   std::vector<double> powerSelection() const;
 };
+
+// The first index i of the run [first, first + count) of cdf (cumulative ends, the last 1)
+// with cdf[i] > u (the last when none), found from the run's guide: start at the guide of u's
+// bin, k = floor(u count), one step back while the cell before already exceeds u (u count
+// rounded up into the next bin), then forward. What a bisection finds, in one or two reads on
+// average where a bisection takes log2(count) (the shader's anisoSourcePick).
+std::size_t guidedSearch(const std::vector<float>& cdf, const std::vector<std::uint32_t>& guide,
+                         int first, int count, float u);
 
 // The groups of an analysis (its sourceRank and excess); none when it has no source part.
 // Throws aniso::Error naming the analysis' key when its sourceRank does not cover its grid.

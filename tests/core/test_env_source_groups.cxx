@@ -11,6 +11,7 @@
 #include "core/env/environment.h"
 #include "core/error.h"
 
+#include <algorithm>
 #include <cmath>
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>
@@ -345,6 +346,57 @@ TEST(SourceGroups, SampleCountFollowsWhatTheLobeResolves)
   EXPECT_EQ(aniso::sourceSampleCount(0.8, 3), 12);
   EXPECT_EQ(aniso::sourceSampleCount(2.0, 3), 12);
   EXPECT_EQ(aniso::sourceSampleCount(0.0, 0), 1);
+}
+
+// The guided search finds what a bisection (std::upper_bound) finds in every row run and entry
+// run, at random numbers, at every cumulative end itself, just below and just above it, and at
+// the bins' edges k / count (where u count may round into the next bin).
+TEST(SourceGroups, GuidedSearchFindsWhatABisectionFinds)
+{
+  const aniso::EnvAnalysis a = scene();
+  const aniso::SourceGroups groups = aniso::buildSourceGroups(a);
+  ASSERT_EQ(groups.rowGuide.size(), groups.rowY.size());
+  ASSERT_EQ(groups.entryGuide.size(), groups.entryTexel.size());
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<float> uniform(0.0f, 1.0f);
+  int checked = 0;
+  auto check = [&](const std::vector<float>& cdf, const std::vector<std::uint32_t>& guide,
+                   int first, int count)
+  {
+    std::vector<float> us;
+    for (int i = 0; i < 64; ++i)
+      us.push_back(uniform(rng));
+    for (int i = first; i < first + count; ++i)
+    {
+      const float c = cdf[std::size_t(i)];
+      us.push_back(c);
+      us.push_back(std::nextafter(c, 0.0f));
+      us.push_back(std::min(std::nextafter(c, 1.0f), std::nextafter(1.0f, 0.0f)));
+    }
+    for (int k = 0; k <= count; ++k)
+    {
+      const float edge = float(k) / float(count);
+      us.push_back(std::min(edge, std::nextafter(1.0f, 0.0f)));
+      us.push_back(std::nextafter(edge, 0.0f));
+    }
+    us.push_back(0.0f);
+    for (const float u : us)
+    {
+      const auto begin = cdf.begin() + first;
+      const auto end = begin + count;
+      auto it = std::upper_bound(begin, end, u);
+      if (it == end)
+        --it;
+      ASSERT_EQ(aniso::guidedSearch(cdf, guide, first, count, u), std::size_t(it - cdf.begin()))
+          << "run at " << first << " of " << count << ", u " << u;
+      ++checked;
+    }
+  };
+  for (const aniso::SourceGroup& group : groups.groups)
+    check(groups.rowCdf, groups.rowGuide, group.firstRow, group.rowCount);
+  for (std::size_t r = 0; r < groups.rowY.size(); ++r)
+    check(groups.entryCdf, groups.entryGuide, groups.rowFirst[r], groups.rowCount[r]);
+  EXPECT_GT(checked, 1000);
 }
 
 TEST(SourceGroups, AnAnalysisWithoutRanksIsRefused)

@@ -613,6 +613,8 @@ public:
   {
     program->SetUniform2i("anisoSourceGrid",
                           std::array<int, 2>{groups.width, groups.height}.data());
+    program->SetUniformi("anisoSourceRowGuides",
+                         static_cast<int>(groups.rowY.size() + groups.entryTexel.size()));
     constexpr int kGroups = SourceGroups::kMaxGroups;
     std::array<float, 4 * kGroups> cone{};
     std::array<float, 4 * kGroups> info{};

@@ -295,12 +295,15 @@ void EnvironmentLighting::uploadSourceTextures(vtkOpenGLRenderWindow* window)
   const SourceSplit& split = sourceSplit();
   const Image& excess = split.analysis->excess;
   const SourceGroups& groups = *split.groups;
-  // The rows, then the entries, kSourceTableWidth a texture row (at least one texel, so that
-  // the sampler is complete; a group-less split draws no source sample): a row (cumulative
-  // within its group, grid row, index of its first entry here, entry count), an entry
-  // (cumulative within its row, texel index, 0, 0).
+  // The rows, then the entries, then the rows' guides, kSourceTableWidth a texture row (at
+  // least one texel, so that the sampler is complete; a group-less split draws no source
+  // sample): a row (cumulative within its group, grid row, index of its first entry here,
+  // entry count), an entry (cumulative within its row, texel index, the guide of its row's bin
+  // of the same position as an index here, 0), a row's guide (the guide of its group's bin of
+  // the same position, 0, 0, 0) (core/env/env_source_groups.h, guidedSearch).
   const std::size_t rows = groups.rowY.size();
-  const std::size_t cells = std::max<std::size_t>(rows + groups.entryTexel.size(), 1);
+  const std::size_t entries = groups.entryTexel.size();
+  const std::size_t cells = std::max<std::size_t>(2 * rows + entries, 1);
   const int tableRows = int((cells + kSourceTableWidth - 1) / kSourceTableWidth);
   std::vector<float> tableData(std::size_t(tableRows) * kSourceTableWidth * 4, 0.0f);
   for (std::size_t r = 0; r < rows; ++r)
@@ -310,10 +313,15 @@ void EnvironmentLighting::uploadSourceTextures(vtkOpenGLRenderWindow* window)
     tableData[4 * r + 2] = float(rows + std::size_t(groups.rowFirst[r]));
     tableData[4 * r + 3] = float(groups.rowCount[r]);
   }
-  for (std::size_t e = 0; e < groups.entryTexel.size(); ++e)
+  for (std::size_t e = 0; e < entries; ++e)
   {
     tableData[4 * (rows + e)] = groups.entryCdf[e];
     tableData[4 * (rows + e) + 1] = float(groups.entryTexel[e]);
+    tableData[4 * (rows + e) + 2] = float(rows + groups.entryGuide[e]);
+  }
+  for (std::size_t r = 0; r < rows; ++r)
+  {
+    tableData[4 * (rows + entries + r)] = float(groups.rowGuide[r]);
   }
   std::vector<float> densityData(std::size_t(excess.width) * std::size_t(excess.height) * 2);
   for (std::size_t i = 0; i < densityData.size() / 2; ++i)

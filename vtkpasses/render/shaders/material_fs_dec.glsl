@@ -82,8 +82,10 @@ uniform float anisoLobeFraction; // share of the lobe technique in the one-sampl
 #define ANISO_SOURCE_GROUPS 8
 uniform sampler2D anisoSourceRadiance; // RGB32F excess, bilinear as the whole image
 // RGBA32F, 4096 wide: the groups' rows (cumulative within the group, grid row, first entry,
-// entries), then the entries (cumulative within the row, texel index)
+// entries), then the entries (cumulative within the row, texel index, guide), then the rows'
+// guides from anisoSourceRowGuides on (EnvironmentLighting::uploadSourceTextures)
 uniform sampler2D anisoSourceTables;
+uniform int anisoSourceRowGuides;
 uniform sampler2D anisoSourceDensity;  // RG32F, W x H: density within the group, group (-1)
 uniform ivec2 anisoSourceGrid;         // (W, H)
 uniform int anisoSourceGroupCount;
@@ -495,23 +497,22 @@ vec4 anisoSourceTable(int i)
   return texelFetch(anisoSourceTables, ivec2(i % 4096, i / 4096), 0);
 }
 
-// The first cell in [first, first + count) whose cumulative end (.r) exceeds u (bisection), and
-// where u falls inside it (.y).
-vec2 anisoSourcePick(int first, int count, float u)
+// The first cell in [first, first + count) whose cumulative end (.r) exceeds u, and where u
+// falls inside it (.y), found from the run's guide (guidedSearch in
+// core/env/env_source_groups.h): the guide of u's bin is component `channel` of cell
+// guides + floor(u count); one step back while the cell before already exceeds u, then forward.
+vec2 anisoSourcePick(int first, int count, float u, int guides, int channel)
 {
-  int lo = first;
-  int hi = first + count - 1;
-  while (lo < hi)
+  int last = first + count - 1;
+  int k = clamp(int(u * float(count)), 0, count - 1);
+  int lo = int(anisoSourceTable(guides + k)[channel] + 0.5);
+  while (lo > first && anisoSourceTable(lo - 1).r > u)
   {
-    int mid = (lo + hi) / 2;
-    if (anisoSourceTable(mid).r > u)
-    {
-      hi = mid;
-    }
-    else
-    {
-      lo = mid + 1;
-    }
+    --lo;
+  }
+  while (lo < last && !(anisoSourceTable(lo).r > u))
+  {
+    ++lo;
   }
   float c0 = lo == first ? 0.0 : anisoSourceTable(lo - 1).r;
   float c1 = anisoSourceTable(lo).r;
@@ -585,10 +586,12 @@ vec4 anisoSampleSources(float q[ANISO_SOURCE_GROUPS], vec2 xi, out vec2 uv)
     return vec4(0.0, 0.0, 1.0, 0.0);
   }
   float within = clamp((xi.x - start) / q[g], 0.0, 1.0);
-  vec2 rowPick =
-    anisoSourcePick(int(anisoSourceGroupInfo[g].z), int(anisoSourceGroupInfo[g].w), xi.y);
+  int firstRow = int(anisoSourceGroupInfo[g].z);
+  vec2 rowPick = anisoSourcePick(firstRow, int(anisoSourceGroupInfo[g].w), xi.y,
+                                 anisoSourceRowGuides + firstRow, 0);
   vec4 row = anisoSourceTable(int(rowPick.x));
-  vec2 entryPick = anisoSourcePick(int(row.b + 0.5), int(row.a + 0.5), within);
+  int firstEntry = int(row.b + 0.5);
+  vec2 entryPick = anisoSourcePick(firstEntry, int(row.a + 0.5), within, firstEntry, 2);
   int texel = int(anisoSourceTable(int(entryPick.x)).g + 0.5);
   vec2 grid = vec2(anisoSourceGrid);
   // A point of the texel's tent (grid units), wrapped in u, reflected at the poles.
