@@ -321,6 +321,16 @@ float anisoSampleLod(float log2PdfLight, int count)
 
 #if !defined(ANISO_HALF_VECTORS_FROM_LUT) || defined(ANISO_ENVIRONMENT_MIS) ||                 \
   defined(ANISO_ENVIRONMENT_SOURCES)
+// log2 of the density's normalisation sqrt((n_u+1)(n_v+1))/(2 pi), for the fragment's
+// exponents: set once by anisoSpecular before any density below.
+float anisoLog2HalfVectorNorm;
+
+void anisoSetHalfVectorNorm()
+{
+  anisoLog2HalfVectorNorm =
+    0.5 * (log2(anisoExponents.x + 1.0) + log2(anisoExponents.y + 1.0)) - log2(2.0 * anisoPi);
+}
+
 // log2 of the AS half-vector density sqrt((n_u+1)(n_v+1))/(2 pi) (n.h)^e for h in tangent
 // space, e = (n_u h_t^2 + n_v h_b^2) / (1 - h_n^2); -inf below the surface.
 float anisoLog2HalfVectorPdf(vec3 h)
@@ -333,8 +343,7 @@ float anisoLog2HalfVectorPdf(vec3 h)
   float nv = anisoExponents.y;
   float tangential = h.x * h.x + h.y * h.y;
   float e = tangential > 0.0 ? (nu * h.x * h.x + nv * h.y * h.y) / tangential : 0.5 * (nu + nv);
-  float log2Norm = 0.5 * (log2(nu + 1.0) + log2(nv + 1.0)) - log2(2.0 * anisoPi);
-  return log2Norm + e * log2(h.z);
+  return anisoLog2HalfVectorNorm + e * log2(h.z);
 }
 #endif
 
@@ -639,6 +648,10 @@ vec3 anisoSourceAtLobeSample(vec3 l, vec3 h, vec3 t, vec3 b, vec3 n, float vDotH
 // (one-sample MIS, balance heuristic), where f (n.l) = AS weight x p_lobe(l).
 vec3 anisoSpecular(vec3 t, vec3 b, vec3 n, vec3 v, vec3 f0)
 {
+#if !defined(ANISO_HALF_VECTORS_FROM_LUT) || defined(ANISO_ENVIRONMENT_MIS) ||                 \
+  defined(ANISO_ENVIRONMENT_SOURCES)
+  anisoSetHalfVectorNorm();
+#endif
   int count = max(anisoSampleCount, 1);
   float nDotV = dot(n, v);
   vec2 shift = anisoPixelShift();
