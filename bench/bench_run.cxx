@@ -2,10 +2,11 @@
 
 #include "bench/bench_models.h"
 #include "bench/bench_scenes.h"
-#include "core/reference/reference_image.h"
 #include "bench/render_session.h"
+#include "core/cache_directory.h"
 #include "core/env/env_sources.h"
 #include "core/error.h"
+#include "core/reference/reference_image.h"
 
 #include <algorithm>
 #include <chrono>
@@ -290,19 +291,11 @@ std::string machineDescription()
   return model + ", " + std::to_string(std::thread::hardware_concurrency()) + " threads";
 }
 
-std::string defaultCacheDirectory()
+// The references' cache: "bench" in the project's cache directory (none without one).
+std::string benchCacheDirectory()
 {
-  const char* xdg = std::getenv("XDG_CACHE_HOME");
-  if (xdg && *xdg == '/')
-  {
-    return (fs::path(xdg) / "aniso" / "bench").string();
-  }
-  const char* home = std::getenv("HOME");
-  if (home && *home)
-  {
-    return (fs::path(home) / ".cache" / "aniso" / "bench").string();
-  }
-  return {};
+  const std::string base = defaultCacheDirectory();
+  return base.empty() ? std::string() : (fs::path(base) / "bench").string();
 }
 
 MaterialSettings materialFor(const AsLobe& lobe, const Config& c)
@@ -334,7 +327,7 @@ class Runner
 public:
   Runner(const BenchOptions& options, std::ostream& log, BenchResult& result)
       : options_(options), log_(log), result_(result),
-        cache_(options.cacheDirectory.empty() ? defaultCacheDirectory() : options.cacheDirectory)
+        cache_(options.cacheDirectory.empty() ? benchCacheDirectory() : options.cacheDirectory)
   {
   }
 
