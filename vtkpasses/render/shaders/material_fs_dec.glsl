@@ -86,7 +86,8 @@ uniform sampler2D anisoSourceRadiance; // RGB32F excess, bilinear as the whole i
 // guides from anisoSourceRowGuides on (EnvironmentLighting::uploadSourceTextures)
 uniform sampler2D anisoSourceTables;
 uniform int anisoSourceRowGuides;
-uniform sampler2D anisoSourceDensity;  // RG32F, W x H: density within the group, group (-1)
+// RG32F, W x H: a texel's probability within its group times W H / (2 pi^2), its group (-1)
+uniform sampler2D anisoSourceDensity;
 uniform ivec2 anisoSourceGrid;         // (W, H)
 uniform int anisoSourceGroupCount;
 uniform vec4 anisoSourceGroupCone[ANISO_SOURCE_GROUPS]; // direction (env), cos of its radius
