@@ -297,10 +297,7 @@ std::vector<double> lobeAwareSelection(const SourceGroups& groups, const glm::dv
       selection[g] = (1.0 - defensive) * weight[g] / sum + defensive * selection[g];
   return selection;
 }
-} // namespace aniso
 
-namespace aniso
-{
 double smallSourceShare(const SourceGroups& groups, const glm::dvec3& mirror,
                         const std::function<double(const glm::dvec3&)>& lobePdf)
 {
@@ -320,16 +317,21 @@ double smallSourceShare(const SourceGroups& groups, const glm::dvec3& mirror,
   return whole > 0.0 ? small / whole : 0.0;
 }
 
-int sourceSampleCount(double smallShare, int base)
+int sourceSampleSteps(int base, int lobeSamples)
+{
+  int steps = 0;
+  while (steps < 2 && (std::max(base, 1) << (steps + 1)) <= lobeSamples)
+    ++steps;
+  return steps;
+}
+
+int sourceSampleCount(double smallShare, int base, int maxSteps)
 {
   const double share = std::clamp(smallShare, 0.0, 1.0);
-  const int k = std::clamp(int(std::lround(std::log2(1.0 + 3.0 * share))), 0, 2);
+  const int k = std::clamp(int(std::lround(std::log2(1.0 + 3.0 * share))), 0, maxSteps);
   return std::max(base, 1) << k;
 }
-} // namespace aniso
 
-namespace aniso
-{
 std::size_t guidedSearch(const std::vector<float>& cdf, const std::vector<std::uint32_t>& guide,
                          int first, int count, float u)
 {

@@ -119,7 +119,12 @@ std::vector<double> lobeAwareSelection(const SourceGroups& groups, const glm::dv
 double smallSourceShare(const SourceGroups& groups, const glm::dvec3& mirror,
                         const std::function<double(const glm::dvec3&)>& lobePdf);
 
+// How many doublings of the base count a pixel may take: at most 2, and no more source samples
+// than the lobe's own (one lobe sample, as while moving, takes one source sample).
+int sourceSampleSteps(int base, int lobeSamples);
+
 // A pixel's source samples per frame from its share: base x 2^k, k = round(log2(1 + 3 share))
-// (0 to 2), so 4 base when all it sees is such groups, base when none.
-int sourceSampleCount(double smallShare, int base);
+// clamped to [0, maxSteps] (sourceSampleSteps), so 4 base when all it sees is such groups and
+// two steps are allowed, base when it sees none. The shader's anisoSourceSelection.
+int sourceSampleCount(double smallShare, int base, int maxSteps);
 } // namespace aniso

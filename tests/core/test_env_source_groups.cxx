@@ -326,7 +326,7 @@ TEST(SourceGroups, SampleCountFollowsWhatTheLobeResolves)
   const glm::dvec3 lamp1 = texelCentre(16, 40);
   const double onLamp = aniso::smallSourceShare(groups, lamp1, lobe(lamp1, 0.02));
   EXPECT_GT(onLamp, 0.95);
-  EXPECT_EQ(aniso::sourceSampleCount(onLamp, base), 4 * base);
+  EXPECT_EQ(aniso::sourceSampleCount(onLamp, base, 2), 4 * base);
 
   EXPECT_EQ(aniso::smallSourceShare(groups, lamp1, [](const glm::dvec3&) { return 0.0; }), 0.0);
   // Uniform: every group seen at 1 / (4 pi), all smaller than the lobe, against the residual
@@ -334,18 +334,25 @@ TEST(SourceGroups, SampleCountFollowsWhatTheLobeResolves)
   const double wide =
       aniso::smallSourceShare(groups, lamp1, [](const glm::dvec3&) { return 0.25 / kPi; });
   EXPECT_NEAR(wide, groups.power / (groups.power + 4.0 * kPi * groups.residualMean), 1e-12);
-  EXPECT_EQ(aniso::sourceSampleCount(wide, base), 4 * base);
+  EXPECT_EQ(aniso::sourceSampleCount(wide, base, 2), 4 * base);
   const glm::dvec3 inWindow = texelCentre(95, 14);
   const double window = aniso::smallSourceShare(groups, inWindow, lobe(inWindow, 0.02));
   EXPECT_LT(window, 0.05);
-  EXPECT_EQ(aniso::sourceSampleCount(window, base), base);
+  EXPECT_EQ(aniso::sourceSampleCount(window, base, 2), base);
 
-  EXPECT_EQ(aniso::sourceSampleCount(0.0, 3), 3);
-  EXPECT_EQ(aniso::sourceSampleCount(0.2, 3), 6);
-  EXPECT_EQ(aniso::sourceSampleCount(0.5, 3), 6);
-  EXPECT_EQ(aniso::sourceSampleCount(0.8, 3), 12);
-  EXPECT_EQ(aniso::sourceSampleCount(2.0, 3), 12);
-  EXPECT_EQ(aniso::sourceSampleCount(0.0, 0), 1);
+  EXPECT_EQ(aniso::sourceSampleCount(0.0, 3, 2), 3);
+  EXPECT_EQ(aniso::sourceSampleCount(0.2, 3, 2), 6);
+  EXPECT_EQ(aniso::sourceSampleCount(0.5, 3, 2), 6);
+  EXPECT_EQ(aniso::sourceSampleCount(0.8, 3, 2), 12);
+  EXPECT_EQ(aniso::sourceSampleCount(2.0, 3, 2), 12);
+  EXPECT_EQ(aniso::sourceSampleCount(0.0, 0, 2), 1);
+  // The steps allowed: no more source samples than lobe samples.
+  EXPECT_EQ(aniso::sourceSampleCount(1.0, 3, 1), 6);
+  EXPECT_EQ(aniso::sourceSampleSteps(4, 16), 2);
+  EXPECT_EQ(aniso::sourceSampleSteps(4, 12), 1);
+  EXPECT_EQ(aniso::sourceSampleSteps(1, 1), 0);
+  EXPECT_EQ(aniso::sourceSampleSteps(1, 2), 1);
+  EXPECT_EQ(aniso::sourceSampleSteps(16, 1024), 2);
 }
 
 // The guided search finds what a bisection (std::upper_bound) finds in every row run and entry

@@ -554,12 +554,8 @@ public:
       // the settings is taken as it is; one lobe sample, as while moving, takes one).
       const int sourceCount =
           settings.sourceSamples > 0 ? settings.sourceSamples : std::max(1, settings.samples / 4);
-      int sourceSteps = 0; // up to 4 M, and no more than the lobe's samples
-      while (settings.sourceSamples <= 0 && sourceSteps < 2 &&
-             (sourceCount << (sourceSteps + 1)) <= settings.samples)
-      {
-        ++sourceSteps;
-      }
+      const int sourceSteps =
+          settings.sourceSamples > 0 ? 0 : sourceSampleSteps(sourceCount, settings.samples);
       program->SetUniformi("anisoSourceSampleCount", sourceCount);
       program->SetUniformi("anisoSourceSampleSteps", sourceSteps);
       // Their own blocks of the sequence, one per count, so that frames stratify them too.
