@@ -15,6 +15,7 @@
 #include "core/parameters/choices.h"
 #include "core/parameters/parameters.h"
 #include "core/quality/adaptive_quality.h"
+#include "core/quality/error_estimate.h"
 #include "vtkpasses/mesh/BrushingModel.h"
 #include "vtkpasses/mesh/BuiltinMeshes.h"
 #include "vtkpasses/mesh/GltfWriter.h"
@@ -165,6 +166,16 @@ Command renderCommand()
                                    "(N x samples per pixel)")));
   // The error target's default and range are the declared error-target's (the window's).
   const ParameterSpec& errorTarget = parameterSpec("error-target");
+  c.options.push_back(in(
+      kGroupSampling,
+      numberOption(
+          "--converge", "ERR", errorTarget.type, errorTarget.defaultValue[0], errorTarget.minimum,
+          errorTarget.maximum, errorTarget.unit,
+          "accumulate frames until the image's relative L2 error, estimated from its own frames "
+          "(the mean against the mean of its first half, after 4, 6, 8, 12, 16, 24, ... frames), "
+          "is at most ERR, from 256 samples a pixel on, as the window's still view does with "
+          "quality-mode error; --frames is then the most (without it, target-samples' default in "
+          "frames)")));
   c.options.push_back(in(
       kGroupSampling,
       numberOption(
@@ -728,6 +739,16 @@ int runRender(const std::vector<std::string>& args, std::ostream& out, std::ostr
   settings.environmentRotationDegrees = parameters.real("env-rotation");
   settings.cubeSize = parameters.integer("cube-size");
   settings.frames = a.integer("--frames");
+  if (a.has("--converge"))
+  {
+    settings.errorTarget = a.real("--converge");
+    settings.errorStopFrames = minimumErrorStopFrames(settings.material.samples);
+    if (!a.has("--frames"))
+    {
+      const int limit = static_cast<int>(parameterSpec("target-samples").defaultValue[0]);
+      settings.frames = std::max(1, limit / std::max(settings.material.samples, 1));
+    }
+  }
   settings.jitter = a.text("--jitter") == "on";
   applyModelOptions(a, settings);
 
@@ -889,6 +910,7 @@ int runRender(const std::vector<std::string>& args, std::ostream& out, std::ostr
   const bool exr = lowercaseExtension(output) == ".exr";
   writeRendered(output, result, settings.display.background == BackgroundMode::Transparent);
   const int samples = settings.material.samples;
+  const int frames = static_cast<int>(result.frameSeconds.size());
   // A field that changes the lobe draws with half vectors from the shader, whatever was asked.
   std::string halfVectors = parameters.text("half-vectors");
   if (result.variant.field && spelling(result.variant.halfVectors) != halfVectors)
@@ -898,17 +920,33 @@ int runRender(const std::vector<std::string>& args, std::ostream& out, std::ostr
   }
   out << "render: wrote " << output << " (" << settings.width << "x" << settings.height << ", "
       << (exr ? "linear RGBA float, alpha = coverage" : "tone-mapped sRGB") << ") of " << source
-      << ": " << settings.frames << " frame(s) x " << samples << " samples, "
-      << parameters.text("method") << ", filtered " << parameters.text("filtered")
-      << ", half vectors from the " << halfVectors
-      << ", environment sampling " << samplingSummary(parameters, environmentSources.get())
-      << "; " << modelSummary(a) << "\n";
+      << ": " << frames << " frame(s) x " << samples << " samples, " << parameters.text("method")
+      << ", filtered " << parameters.text("filtered") << ", half vectors from the " << halfVectors
+      << ", environment sampling " << samplingSummary(parameters, environmentSources.get()) << "; "
+      << modelSummary(a) << "\n";
+  if (settings.errorTarget > 0.0)
+  {
+    const bool reached = result.estimatedError >= 0.0 && result.estimatedErrorFrames == frames &&
+                         result.estimatedError <= settings.errorTarget;
+    out << "converge: ";
+    if (result.estimatedError < 0.0)
+    {
+      out << "no estimate (it needs 4 frames and a covered pixel)";
+    }
+    else
+    {
+      out << "estimated error " << result.estimatedError << " after " << result.estimatedErrorFrames
+          << " frames";
+    }
+    out << (reached ? ", at or below the target " : ", not at the target ") << settings.errorTarget
+        << " (" << frames << " of at most " << settings.frames << " frames)\n";
+  }
   if (a.has("--time"))
   {
     const double median = medianSeconds(result.frameSeconds);
     const double samplesPerSecond =
         median > 0.0 ? double(result.coveredPixels) * samples / median : 0.0;
-    out << "time: median frame " << formatMilliseconds(median) << " over " << settings.frames
+    out << "time: median frame " << formatMilliseconds(median) << " over " << frames
         << " frame(s) (first " << formatMilliseconds(result.frameSeconds.front())
         << ", shaders and textures included); " << result.coveredPixels << " covered pixels x "
         << samples << " samples: " << samplesPerSecond / 1e6 << " M samples/s on "

@@ -6,6 +6,8 @@
 #include "core/cache_directory.h"
 #include "core/env/env_sources.h"
 #include "core/error.h"
+#include "core/parameters/parameters.h"
+#include "core/quality/error_estimate.h"
 #include "core/reference/reference_image.h"
 
 #include <algorithm>
@@ -76,6 +78,10 @@ struct ScenePlan
   double stopBelow = 0.0;
   // When not empty: the checkpoints of the progressive configurations other than auto's.
   std::vector<int> forcedFrames;
+  // The still view as the window draws it by default (quality-mode error): auto's
+  // configuration run anew until the error estimated from its own frames is at error-target's
+  // default, at most target-samples' default; rows of kind KIND-still. Off when false.
+  bool still = false;
 };
 
 std::vector<Config> sweep(SpecularMethod method, bool filtered, HalfVectorSource halfVectors,
@@ -228,6 +234,7 @@ std::vector<ScenePlan> planHdri(bool quick, const std::string& hdriDirectory)
     if (!quick)
     {
       plan.forcedFrames = {1, 2, 4, 8, 16};
+      plan.still = true;
     }
     plan.vtk = false;
     plan.reference = quick ? ReferenceSpec{96, 2e-3} : ReferenceSpec{96, 3e-3, kHdriEvaluations};
@@ -426,6 +433,10 @@ public:
         if (config.sampling == EnvironmentSampling::Auto)
         {
           autoRows.push_back({config, first});
+          if (plan.still)
+          {
+            measureStill(session, materialFor(lobe, config), config, reference, base);
+          }
         }
       }
       if (plan.vtk)
@@ -651,6 +662,43 @@ private:
     log_ << "  " << last.mesh << " " << last.environment << " " << lobeText(last.lobe)
          << " progressive " << describe(config, autoResolved_) << " x " << last.frames << ": " << last.totalSeconds
          << " s, L2 " << last.relativeL2 << std::endl;
+  }
+
+  // The window's default still view: frames until the error they estimate themselves is at
+  // error-target's default (from 256 samples a pixel on), at most target-samples' default (in
+  // frames of the config's samples).
+  void measureStill(RenderSession& session, const MaterialSettings& material, const Config& config,
+                    const ReferenceImage& reference, const BenchRow& base)
+  {
+    const double target = parameterSpec("error-target").defaultValue[0];
+    const int most = std::max(1, static_cast<int>(parameterSpec("target-samples").defaultValue[0]) /
+                                     config.samples);
+    session.useMaterial(material);
+    session.render(1); // warm-up, as the progressive runs
+    const std::vector<FrameTime> times =
+        session.renderToError(target, minimumErrorStopFrames(config.samples), most);
+    BenchRow row = measured(base, session.read(), reference);
+    row.kind = base.kind + "-still";
+    describeConfig(row, config);
+    row.frames = session.accumulatedFrames();
+    row.runs = row.frames;
+    row.estimatedError = session.estimatedError();
+    row.firstFrameSeconds = times.front().wall;
+    const FrameTime median = medianFrameTime(times);
+    row.medianFrameSeconds = median.wall;
+    row.medianFrameCpuSeconds = median.cpu;
+    for (const FrameTime& t : times)
+    {
+      row.totalSeconds += t.wall;
+      row.totalCpuSeconds += t.cpu;
+    }
+    row.samplesPerSecond =
+        double(row.coveredPixels) * config.samples * row.frames / row.totalSeconds;
+    result_.rows.push_back(row);
+    log_ << "  " << row.mesh << " " << row.environment << " " << lobeText(row.lobe)
+         << " still view " << describe(config, autoResolved_) << ": stopped after " << row.frames
+         << " of at most " << most << " frames, estimate " << row.estimatedError << ", L2 "
+         << row.relativeL2 << ", " << row.totalSeconds << " s" << std::endl;
   }
 
   void measureVtk(RenderSession& session, const std::vector<PixelSample>& geometry,

@@ -42,8 +42,9 @@ struct BenchRow
 {
   // "sweep" (one frame of N samples), "progressive" (frames accumulated), "vtk" (VTK's PBR);
   // "default", "default-progressive", "default-vtk" for the default scene at 800x600; "hdri",
-  // "hdri-progressive" for the sphere under the HDRIs (issue 14) and "hdri-default-progressive"
-  // for the default scene under them.
+  // "hdri-progressive" for the sphere under the HDRIs (issue 14), "hdri-still" for its still
+  // view stopped by its own error estimate, and "hdri-default-progressive" for the default scene
+  // under them.
   std::string kind;
   std::string mesh;
   std::string environment;
@@ -68,6 +69,8 @@ struct BenchRow
   double relativeL2 = 0.0;
   double percentile99 = 0.0;
   double referenceBound = 0.0; // the reference's own relative L2 error bound
+  // Kind "hdri-still" (the still view stopped by its own error): the estimate it stopped at.
+  double estimatedError = -1.0;
   int comparedPixels = 0;
   // The shading model: "as-env" (the environment Ashikhmin-Shirley, and VTK's PBR beside it),
   // a lit model ("banks", "ward", ...), "leadr", "normal-map" (LEADR's baseline),

@@ -355,6 +355,7 @@ void RenderSession::useInstalled(const MaterialInstaller& installer)
 
 std::vector<FrameTime> RenderSession::render(int frames)
 {
+  estimatedError_ = -1.0;
   impl_->pass->Reset();
   return impl_->draw(frames);
 }
@@ -362,6 +363,28 @@ std::vector<FrameTime> RenderSession::render(int frames)
 std::vector<FrameTime> RenderSession::renderMore(int frames)
 {
   return impl_->draw(frames);
+}
+
+std::vector<FrameTime> RenderSession::renderToError(double errorTarget, int fromFrames, int most)
+{
+  vtkAnisoAccumulationPass* pass = impl_->pass;
+  pass->SetErrorTarget(errorTarget, fromFrames);
+  pass->Reset();
+  std::vector<FrameTime> times;
+  while (static_cast<int>(times.size()) < most && !pass->IsConverged())
+  {
+    const std::vector<FrameTime> one = impl_->draw(1);
+    times.insert(times.end(), one.begin(), one.end());
+  }
+  estimatedError_ = pass->GetEstimatedError();
+  // Later renders count frames only; the mean is kept (no reset when the target goes).
+  pass->SetErrorTarget(0.0);
+  return times;
+}
+
+double RenderSession::estimatedError() const
+{
+  return estimatedError_;
 }
 
 int RenderSession::accumulatedFrames() const

@@ -109,6 +109,12 @@ public:
   // Draws FRAMES more frames into the same accumulation.
   std::vector<FrameTime> renderMore(int frames);
   int accumulatedFrames() const;
+  // The window's still view by error (quality-mode error): a new accumulation drawn frame by
+  // frame until the error estimated from its own frames (vtkAnisoAccumulationPass::
+  // SetErrorTarget) is at most ERROR_TARGET from FROM_FRAMES frames on, or MOST frames; returns
+  // their times. The estimate stays readable (estimatedError()) until the next render.
+  std::vector<FrameTime> renderToError(double errorTarget, int fromFrames, int most);
+  double estimatedError() const;
   // The accumulated mean: RGBA float, linear radiance, alpha = coverage, row 0 at the top.
   Image read();
 
@@ -129,5 +135,6 @@ private:
   std::unique_ptr<Impl> impl_;
   int width_;
   int height_;
+  double estimatedError_ = -1.0;
 };
 } // namespace aniso::bench

@@ -116,9 +116,9 @@ MaterialDock::MaterialDock(SceneEditor* editor, QWidget* parent)
   {
     sampling->addParameter(key);
   }
-  // The quality as a sample count or as an error target: the control of the other mode is
-  // shown disabled, its value kept for when the mode comes back.
-  targetSamples_ = sampling->addParameter("target-samples");
+  // The quality as a sample count or as an error target: the error target is shown disabled in
+  // samples mode, its value kept for when the mode comes back; the sample count bounds both.
+  sampling->addParameter("target-samples");
   errorTarget_ = sampling->addParameter("error-target");
   auto* tables = new ParameterPanel(editor, this);
   for (const char* key : {"half-vectors", "lut-size", "lut-samples"})
@@ -198,7 +198,6 @@ void MaterialDock::syncFromModel()
 {
   const SceneModel* model = editor_->model();
   const bool byError = parseQualityMode(model->text("quality-mode")) == QualityMode::Error;
-  targetSamples_->setEnabled(!byError);
   errorTarget_->setEnabled(byError);
   {
     const QSignalBlocker blockU(alphaU_);

@@ -59,7 +59,6 @@ private:
   QDoubleSpinBox* alphaU_;
   QDoubleSpinBox* alphaV_;
   QComboBox* presets_;
-  ParameterControl* targetSamples_ = nullptr;
   ParameterControl* errorTarget_ = nullptr;
   // The exponents when the current linked gesture began: their ratio is kept.
   double linkNu_ = 1.0;

@@ -1549,7 +1549,18 @@ void MainWindow::showSamples(int samples, int target)
     samplesLabel_->setText(tr("Preview"));
     return;
   }
-  // The error the target's sample count is predicted to reach (the quality's error model).
+  // By error: the error the view's own frames show (the mean against its first half), once
+  // they show one. By samples: the error the target's sample count is predicted to reach (the
+  // error model).
+  const double estimated = view_->estimatedError();
+  if (view_->byError() && estimated >= 0.0)
+  {
+    samplesLabel_->setText(tr("Samples %1 / %2, estimated error %3%")
+                               .arg(std::min(samples, target))
+                               .arg(target)
+                               .arg(100.0 * estimated, 0, 'g', 2));
+    return;
+  }
   samplesLabel_->setText(tr("Samples %1 / %2, predicted error %3%")
                              .arg(std::min(samples, target))
                              .arg(target)

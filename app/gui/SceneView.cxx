@@ -6,6 +6,7 @@
 #include "core/error.h"
 #include "core/models/models.h"
 #include "core/parameters/choices.h"
+#include "core/quality/error_estimate.h"
 #include "scene/LutScheduler.h"
 #include "vtkpasses/mesh/LineSet.h"
 #include "vtkpasses/mesh/PartPlacement.h"
@@ -1129,6 +1130,11 @@ void SceneView::applyMaterial()
     mapsDropped = mapsDropped || part.shading->mapsDropped();
   }
   pass_->SetTargetFrames(std::max(frames, 1));
+  // With quality-mode error the still view stops once the error its own frames show is at the
+  // target, from 256 samples a pixel on (error_estimate.h), target-samples then the most it
+  // accumulates.
+  pass_->SetErrorTarget(byError() ? model_->real("error-target") : 0.0,
+                        minimumErrorStopFrames(frameSamples()));
   applyLegends();
   if (mapsDropped)
   {
@@ -1305,23 +1311,27 @@ int SceneView::accumulatedSamples() const
   return pass_->GetAccumulatedFrames() * frameSamples();
 }
 
+bool SceneView::byError() const
+{
+  return parseQualityMode(model_->text("quality-mode")) == QualityMode::Error;
+}
+
 QualityChoice SceneView::quality() const
 {
-  if (parseQualityMode(model_->text("quality-mode")) == QualityMode::Error)
-  {
-    // The largest total the samples mode allows bounds this one too.
-    const int most = static_cast<int>(parameterSpec("target-samples").maximum);
-    return chooseSamples(model_->real("error-target"), full_.lobe, full_.filtered, most);
-  }
   QualityChoice choice;
-  choice.samples = model_->integer("target-samples");
+  choice.samples = targetSamples();
   choice.predictedError = predictedError(full_.lobe, full_.filtered, choice.samples);
   return choice;
 }
 
 int SceneView::targetSamples() const
 {
-  return runTotalSamples(quality().samples, full_.samples);
+  return runTotalSamples(model_->integer("target-samples"), full_.samples);
+}
+
+double SceneView::estimatedError() const
+{
+  return pass_->GetEstimatedError();
 }
 
 bool SceneView::converged() const

@@ -141,12 +141,19 @@ public:
   CameraState currentCamera() const;
 
   int accumulatedSamples() const;
-  // Samples per pixel the still view accumulates: target-samples, or with quality-mode error
-  // the fewest whose predicted error (quality()) meets error-target; rounded up to whole frames
-  // of the material's samples.
+  // Samples per pixel the still view accumulates: target-samples rounded up to whole frames of
+  // the material's samples. With quality-mode error the most it accumulates: it stops before
+  // once the error estimated from its own frames (estimatedError()) is at most error-target.
   int targetSamples() const;
-  // The quality of the still view by the error model of the material's lobe and filtering
-  // (adaptive_quality.h): the total it asks for and that total's predicted error.
+  // With quality-mode error: whether the view stops by the estimated error.
+  bool byError() const;
+  // The relative L2 error of the still view's image as estimated from its own frames (the mean
+  // against the mean of its first half, core/quality/error_estimate.h) at the latest checkpoint
+  // of the estimate (4, 6, 8, 12, ... frames) under quality-mode error; negative before the
+  // first and in samples mode.
+  double estimatedError() const;
+  // The error model's prediction (adaptive_quality.h, fitted under the built-in studio) for the
+  // target's samples: what the window shows before a measured estimate exists.
   QualityChoice quality() const;
   // Still, the target reached and on screen, and no frame asked for.
   bool converged() const;

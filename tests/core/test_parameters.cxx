@@ -382,7 +382,7 @@ TEST(Parameters, ChoicesParseToDistinctEnumsAndBack)
   expectEnumChoices<HalfVectorSource>(covered, "half-vectors", parseHalfVectorSource,
                                       {"shader", "lut"}, "lut");
   expectEnumChoices<QualityMode>(covered, "quality-mode", parseQualityMode, {"samples", "error"},
-                                 "samples");
+                                 "error");
   expectEnumChoices<BumpMapping>(covered, "bump", parseBumpMapping,
                                  {"none", "normal", "quaternion"}, "none");
   expectEnumChoices<BackgroundMode>(covered, "background", parseBackgroundMode,

@@ -1,7 +1,9 @@
-// The material dock's quality control: choosing "error" in its quality-mode box sets the model's
-// quality-mode (one undoable edit), enables the error-target control and disables
-// target-samples, and back; the error-target control edits the model's error-target; a mode
-// changed elsewhere (a session, an undo) switches the controls the same way.
+// The material dock's quality control: the declared default is "error" (the still view stops by
+// the error it estimates from its own frames, target-samples the most); choosing "samples" in
+// its quality-mode box sets the model's quality-mode (one undoable edit) and disables the
+// error-target control, and back; target-samples stays enabled in both modes (a count, or the
+// most); the error-target control edits the model's error-target; a mode changed elsewhere (an
+// undo) switches the controls the same way.
 #include "scene/SceneEditor.h"
 #include "widgets/MaterialDock.h"
 #include "widgets/ParameterControls.h"
@@ -28,35 +30,40 @@ private slots:
     auto* error = dock.findChild<aniso::NumberControl*>("error-target");
     QVERIFY(mode && samples && error);
 
-    // The declared default: by sample count.
+    // The declared default: by the estimated error, target-samples the most.
+    QCOMPARE(model.text("quality-mode"), std::string("error"));
+    QVERIFY(samples->isEnabled());
+    QVERIFY(error->isEnabled());
+
+    QComboBox* box = mode->comboBox();
+    const int samplesIndex = box->findText("samples");
+    QVERIFY(samplesIndex >= 0);
+    box->setCurrentIndex(samplesIndex);
+    emit box->activated(samplesIndex);
     QCOMPARE(model.text("quality-mode"), std::string("samples"));
     QVERIFY(samples->isEnabled());
     QVERIFY(!error->isEnabled());
-
-    QComboBox* box = mode->comboBox();
-    const int errorIndex = box->findText("error");
-    QVERIFY(errorIndex >= 0);
-    box->setCurrentIndex(errorIndex);
-    emit box->activated(errorIndex);
-    QCOMPARE(model.text("quality-mode"), std::string("error"));
-    QVERIFY(!samples->isEnabled());
-    QVERIFY(error->isEnabled());
     QCOMPARE(editor.undoStack()->count(), 1);
 
-    // The error target's exact spin box sets the model's value.
+    // Back to error; its exact spin box sets the model's value.
+    const int errorIndex = box->findText("error");
+    box->setCurrentIndex(errorIndex);
+    emit box->activated(errorIndex);
+    QVERIFY(error->isEnabled());
     error->spinBox()->setValue(0.005);
     emit error->spinBox()->editingFinished();
     QCOMPARE(model.real("error-target"), 0.005);
 
-    // Undo of both edits: the value, then the mode, and the controls follow.
-    while (editor.undoStack()->canUndo())
-    {
-      editor.undoStack()->undo();
-    }
+    // Undo of the edits: the value, then the modes, and the controls follow.
+    editor.undoStack()->undo();
     QCOMPARE(model.real("error-target"), 0.01);
+    editor.undoStack()->undo();
     QCOMPARE(model.text("quality-mode"), std::string("samples"));
-    QVERIFY(samples->isEnabled());
     QVERIFY(!error->isEnabled());
+    editor.undoStack()->undo();
+    QCOMPARE(model.text("quality-mode"), std::string("error"));
+    QVERIFY(samples->isEnabled());
+    QVERIFY(error->isEnabled());
   }
 };
 

@@ -229,6 +229,7 @@ RenderResult renderOffscreen(const RenderSettings& s)
   pass->SetDisplaySettings(s.display);
   pass->SetJitter(s.jitter);
   pass->SetTargetFrames(s.frames);
+  pass->SetErrorTarget(s.errorTarget, s.errorStopFrames);
   renderer->SetPass(pass);
 
   // The parts' fields with automatic ranges mapped over every visible part that shows them.
@@ -290,7 +291,7 @@ RenderResult renderOffscreen(const RenderSettings& s)
 
   RenderResult result;
   result.frameSeconds.reserve(static_cast<std::size_t>(s.frames));
-  for (int frame = 0; frame < s.frames; ++frame)
+  for (int frame = 0; frame < s.frames && !(frame > 0 && pass->IsConverged()); ++frame)
   {
     const auto start = std::chrono::steady_clock::now();
     window->Render();
@@ -298,7 +299,9 @@ RenderResult renderOffscreen(const RenderSettings& s)
     const auto end = std::chrono::steady_clock::now();
     result.frameSeconds.push_back(std::chrono::duration<double>(end - start).count());
   }
-  if (pass->GetAccumulatedFrames() != s.frames)
+  result.estimatedError = pass->GetEstimatedError();
+  result.estimatedErrorFrames = pass->GetEstimatedErrorFrames();
+  if (pass->GetAccumulatedFrames() != static_cast<int>(result.frameSeconds.size()))
   {
     throw errorAbout("render", "the OpenGL context could not render the frames");
   }

@@ -82,6 +82,11 @@ struct RenderSettings
   int height = 512;
   int frames = 1;     // progressive frames accumulated (each with its own sample shift)
   bool jitter = true; // sub-pixel camera jitter between frames (anti-aliasing)
+  // When positive, frames stop early once the mean's error estimated from its own frames
+  // (vtkAnisoAccumulationPass::SetErrorTarget) is at or below it, from errorStopFrames frames
+  // on; `frames` is then the most.
+  double errorTarget = 0.0;
+  int errorStopFrames = 4;
   // When set, the object is shaded by this instead of `material` (which is then unused). In a
   // scene of parts it is installed on every visible part without an installer of its own
   // (called once for each part's actor), in place of the parts' own materials.
@@ -104,7 +109,11 @@ struct RenderResult
 {
   Image linear;  // RGBA float, linear radiance, alpha = coverage; row 0 at the top
   Image display; // RGBA in [0, 1] holding the 8-bit values / 255 of the displayed frame
-  std::vector<double> frameSeconds; // wall time of each frame, GPU work included
+  std::vector<double> frameSeconds; // wall time of each frame, GPU work included (one a frame)
+  // With an error target: the estimate at the last checkpoint (negative before one) and the
+  // frames it was taken after.
+  double estimatedError = -1.0;
+  int estimatedErrorFrames = 0;
   int64_t coveredPixels = 0;        // pixels with coverage > 0
   MaterialVariant variant;          // the shader variant of the first visible part
   bool mapsDropped = false;         // maps given but a visible mesh has no texture coordinates

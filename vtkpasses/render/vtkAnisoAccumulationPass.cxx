@@ -1,6 +1,7 @@
 #include "vtkpasses/render/vtkAnisoAccumulationPass.h"
 
 #include "aniso_shaders.h"
+#include "core/quality/error_estimate.h"
 #include "core/sampling/hammersley.h"
 #include "vtkpasses/render/EnvironmentLighting.h"
 #include "vtkpasses/render/RendererMatrices.h"
@@ -267,15 +268,40 @@ void vtkAnisoAccumulationPass::SetJitter(bool jitter)
   }
 }
 
+void vtkAnisoAccumulationPass::SetErrorTarget(double relativeError, int fromFrames)
+{
+  this->ErrorStopFrames = std::max(fromFrames, 1);
+  const double target = std::isfinite(relativeError) && relativeError > 0.0 ? relativeError : 0.0;
+  if (target > 0.0 && !(this->ErrorTarget > 0.0))
+  {
+    this->Reset(); // the frames so far kept no halves
+  }
+  this->ErrorTarget = target;
+  if (!(target > 0.0))
+  {
+    this->EstimatedError = -1.0;
+    this->EstimatedErrorFrames = 0;
+  }
+}
+
 bool vtkAnisoAccumulationPass::IsConverged() const
 {
-  return this->TargetFrames > 0 && this->AccumulatedFrames >= this->TargetFrames;
+  if (this->TargetFrames > 0 && this->AccumulatedFrames >= this->TargetFrames)
+  {
+    return true;
+  }
+  return this->ErrorTarget > 0.0 && this->AccumulatedFrames >= this->ErrorStopFrames &&
+         this->EstimatedErrorFrames == this->AccumulatedFrames && this->EstimatedError >= 0.0 &&
+         this->EstimatedError <= this->ErrorTarget;
 }
 
 void vtkAnisoAccumulationPass::Reset()
 {
   this->AccumulatedFrames = 0;
   this->Band = 0;
+  this->EstimatedError = -1.0;
+  this->EstimatedErrorFrames = 0;
+  this->SnapshotFrames[0] = this->SnapshotFrames[1] = 0;
 }
 
 vtkAnisoAccumulationPass::Signature
@@ -422,6 +448,7 @@ void vtkAnisoAccumulationPass::Render(const vtkRenderState* s)
       {
         this->UpdateRowCosts(height, clip);
       }
+      this->EstimateError();
     }
     else if (this->AccumulatedFrames == 0)
     {
@@ -883,6 +910,36 @@ aniso::Image vtkAnisoAccumulationPass::ReadAccumulation()
                 &image.data[std::size_t(row) * rowValues]);
   }
   return image;
+}
+
+void vtkAnisoAccumulationPass::EstimateError()
+{
+  const int frames = this->AccumulatedFrames;
+  if (!(this->ErrorTarget > 0.0) || !aniso::isErrorSnapshot(frames))
+  {
+    return;
+  }
+  aniso::Image mean = this->ReadAccumulation();
+  if (mean.empty())
+  {
+    return;
+  }
+  if (aniso::isErrorCheckpoint(frames))
+  {
+    for (int k = 0; k < 2; ++k)
+    {
+      if (2 * this->SnapshotFrames[k] == frames && this->Snapshots[k].width == mean.width &&
+          this->Snapshots[k].height == mean.height)
+      {
+        this->EstimatedError = aniso::estimatedRelativeError(mean, this->Snapshots[k]);
+        this->EstimatedErrorFrames = frames;
+      }
+    }
+  }
+  // The older of the two is no longer half of any later checkpoint.
+  const int older = this->SnapshotFrames[0] <= this->SnapshotFrames[1] ? 0 : 1;
+  this->Snapshots[older] = std::move(mean);
+  this->SnapshotFrames[older] = frames;
 }
 
 void vtkAnisoAccumulationPass::ReleaseGraphicsResources(vtkWindow* w)

@@ -15,6 +15,12 @@
 // The mean is linear radiance: RGB everything seen (surfaces and background), alpha the
 // coverage of the surfaces.
 //
+// With an error target (SetErrorTarget), the mean is read back at the frame counts of
+// core/quality/error_estimate.h (2, 3, 4, 6, 8, 12, ...) and kept on the CPU (the last two), and
+// from 4 frames on its relative L2 error is estimated against the mean of its first half: the
+// view stops when the estimate is at or below the target, or at the target frame count,
+// whichever comes first. Without one, nothing is read back.
+//
 // A frame may be drawn in horizontal bands (SetFrameBands), one band per Render(): the surfaces
 // and the background are drawn and folded into the mean only within the band's rows (scissor),
 // so a costly frame keeps the caller busy for a fraction of its cost at a time. The frame counts
@@ -80,6 +86,18 @@ public:
   // Frames to accumulate before stopping (0: never stop).
   void SetTargetFrames(int frames);
   int GetTargetFrames() const { return this->TargetFrames; }
+  // Relative L2 error of the mean at which to stop before the target frame count, by the
+  // estimate from the frames themselves (core/quality/error_estimate.h), from FROM_FRAMES frames
+  // on (earlier estimates are taken and shown, not trusted to stop); 0: none (the default), the
+  // frame count alone. A change keeps the mean; a mean begun without an error target has no
+  // halves kept, so setting one then starts it over.
+  void SetErrorTarget(double relativeError, int fromFrames = 4);
+  double GetErrorTarget() const { return this->ErrorTarget; }
+  int GetErrorStopFrames() const { return this->ErrorStopFrames; }
+  // The estimate at the latest checkpoint of this mean, and the frames it was taken after;
+  // negative (and 0 frames) before the first checkpoint or without an error target.
+  double GetEstimatedError() const { return this->EstimatedError; }
+  int GetEstimatedErrorFrames() const { return this->EstimatedErrorFrames; }
   // Sub-pixel camera jitter per frame (anti-aliasing, fractional coverage). Off: every frame
   // samples pixel centres, as a per-pixel reference does.
   void SetJitter(bool jitter);
@@ -169,6 +187,9 @@ private:
   bool DelegateClearsDepth(vtkRenderer* renderer) const;
   // Folds the frame into the mean, with the background where no surface drew.
   void Accumulate(vtkOpenGLRenderWindow* window, int width, int height, int y0, int y1);
+  // After a frame: keeps the mean at the error estimate's snapshots and estimates the error at
+  // its checkpoints (EstimatedError).
+  void EstimateError();
   // Shows rows [y0, height) of the mean (all of it with y0 = 0).
   void Present(vtkOpenGLRenderWindow* window, int x, int y, int width, int height, int y0);
   vtkOpenGLQuadHelper* Quad(vtkOpenGLRenderWindow* window,
@@ -179,6 +200,12 @@ private:
   aniso::DisplaySettings Display;
   std::shared_ptr<aniso::EnvironmentLighting> Lighting;
   int TargetFrames = 0;
+  double ErrorTarget = 0.0;
+  int ErrorStopFrames = 4;
+  double EstimatedError = -1.0;
+  int EstimatedErrorFrames = 0;
+  aniso::Image Snapshots[2]; // the mean at earlier snapshots, with their frame counts
+  int SnapshotFrames[2] = {0, 0};
   bool Jitter = true;
   int AccumulatedFrames = 0;
   int PendingBands = 1;

@@ -12,9 +12,10 @@
 //   - with the shared LUT cache holding nothing in memory (a budget of one byte), exponents the
 //     worker read back from disk or baked reach the material without the UI thread asking the
 //     cache for anything (its counters move only on the worker);
-//   - with quality-mode error, the still view's total is the fewest samples N with
-//     a N^-p <= error-target for the lobe's fitted a and p (computed here from the model's
-//     table entry for the lobe, n_u = n_v = 10 unfiltered: a = 3.259, p = 0.9757);
+//   - with quality-mode error, the still view stops by the error it estimates from its own
+//     frames: not before 256 samples a pixel, before target-samples (then the most), at a
+//     checkpoint whose estimate is at error-target; a tighter target refines further; in samples
+//     mode it takes exactly target-samples and estimates nothing;
 //   - the frames' measured costs outlive edits of n_u and F0 and are forgotten when the tangent
 //     model changes;
 //   - a surface of more than kInteractiveTriangleLimit triangles is drawn as its stand-in while
@@ -26,7 +27,7 @@
 #include "app/gui/SurfaceModelView.h"
 #include "core/image/image.h"
 #include "core/lut/lut_cache.h"
-#include "core/quality/adaptive_quality.h"
+#include "core/quality/error_estimate.h"
 #include "scene/LutScheduler.h"
 #include "vtkpasses/mesh/BuiltinMeshes.h"
 #include "vtkpasses/mesh/LevelOfDetail.h"
@@ -273,41 +274,51 @@ private slots:
     cache.setMemoryBudget(aniso::LutCache::kDefaultMemoryBudget);
   }
 
-  void errorTargetSetsTheTotal()
+  void errorTargetStopsTheStillView()
   {
     aniso::MainWindow window;
     window.setErrorDialogs(false);
     window.model()->setValues({{"mesh", textValue("builtin:sphere")},
-                               {"nu", numberValue(10.0)},
-                               {"nv", numberValue(10.0)},
-                               {"filtered", textValue("off")},
+                               {"nu", numberValue(1000.0)},
+                               {"nv", numberValue(100.0)},
                                {"samples", numberValue(16.0)},
-                               {"target-samples", numberValue(8.0)}});
-    window.resize(900, 600);
+                               {"target-samples", numberValue(1024.0)},
+                               {"quality-mode", textValue("error")},
+                               {"error-target", numberValue(0.02)}});
+    window.resize(700, 500);
     window.show();
     QVERIFY(QTest::qWaitForWindowExposed(&window));
     aniso::SceneView* view = window.view();
-    QVERIFY(QTest::qWaitFor([&] { return !window.lutScheduler()->busy(); }, 60000));
-    QCOMPARE(view->targetSamples(), 16); // samples mode: 8 rounded up to a frame of 16
+    auto* pass = vtkAnisoAccumulationPass::SafeDownCast(view->renderer()->GetPass());
+    QVERIFY(pass);
+    QVERIFY(view->byError());
+    QCOMPARE(view->targetSamples(), 1024); // the most
 
-    window.editor()->edit("quality-mode", textValue("error"));
-    window.editor()->edit("error-target", numberValue(0.01));
-    // a N^-p <= e  <=>  N >= (a / e)^(1/p) = 376.5: 377 samples (376 predict 1.0013%).
-    const double a = 3.259;
-    const double p = 0.9757;
-    const int expected = static_cast<int>(std::ceil(std::pow(a / 0.01, 1.0 / p)));
-    QCOMPARE(expected, 377);
-    QVERIFY(a * std::pow(expected - 1, -p) > 0.01);
-    QCOMPARE(view->quality().samples, expected);
-    QVERIFY(std::abs(view->quality().predictedError - a * std::pow(expected, -p)) < 1e-12);
-    // Whole frames of 16: 24 frames, 384 samples.
-    QCOMPARE(view->targetSamples(), 384);
+    // Stopped by the estimate: not before 256 samples, well before the most, at a checkpoint
+    // whose estimate is at the target.
+    QVERIFY(!convergedImage(window, 0).data.empty());
+    const int loose = view->accumulatedSamples();
+    QVERIFY(loose >= aniso::kMinimumErrorStopSamples);
+    QVERIFY(loose < 1024);
+    QCOMPARE(pass->GetEstimatedErrorFrames(), pass->GetAccumulatedFrames());
+    QVERIFY(view->estimatedError() >= 0.0);
+    QVERIFY(view->estimatedError() <= 0.02);
 
-    // A tighter target needs more; back in samples mode the count is target-samples again.
-    window.editor()->edit("error-target", numberValue(0.001));
-    QCOMPARE(view->quality().samples, static_cast<int>(std::ceil(std::pow(a / 0.001, 1.0 / p))));
+    // A tighter target refines further (or to the most), to a smaller estimate.
+    window.editor()->edit("error-target", numberValue(0.004));
+    QVERIFY(!convergedImage(window, 0).data.empty());
+    QVERIFY(view->accumulatedSamples() > loose);
+    QVERIFY(view->estimatedError() >= 0.0);
+    QVERIFY(view->accumulatedSamples() == 1024 || view->estimatedError() <= 0.004);
+
+    // By samples: exactly target-samples, and nothing estimated (a new lobe: a new mean).
+    window.editor()->edit("target-samples", numberValue(64.0));
     window.editor()->edit("quality-mode", textValue("samples"));
-    QCOMPARE(view->targetSamples(), 16);
+    window.editor()->edit("nu", numberValue(900.0));
+    QVERIFY(!view->byError());
+    QVERIFY(!convergedImage(window, 0).data.empty());
+    QCOMPARE(view->accumulatedSamples(), 64);
+    QVERIFY(view->estimatedError() < 0.0);
   }
 
   // What the frames cost is kept across edits of a material's uniforms and tables (n_u, F0): a
