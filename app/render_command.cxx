@@ -173,9 +173,9 @@ Command renderCommand()
           errorTarget.maximum, errorTarget.unit,
           "accumulate frames until the image's relative L2 error, estimated from its own frames "
           "(the mean against the mean of its first half, after 4, 6, 8, 12, 16, 24, ... frames), "
-          "is at most ERR, from 256 samples a pixel on, as the window's still view does with "
-          "quality-mode error; --frames is then the most (without it, target-samples' default in "
-          "frames)")));
+          "is at most 3/4 ERR (the estimate's measured spread), from 256 samples a pixel on, as "
+          "the window's still view does with quality-mode error; --frames is then the most "
+          "(without it, target-samples' default in frames)")));
   c.options.push_back(in(
       kGroupSampling,
       numberOption(
@@ -926,8 +926,8 @@ int runRender(const std::vector<std::string>& args, std::ostream& out, std::ostr
       << modelSummary(a) << "\n";
   if (settings.errorTarget > 0.0)
   {
-    const bool reached = result.estimatedError >= 0.0 && result.estimatedErrorFrames == frames &&
-                         result.estimatedError <= settings.errorTarget;
+    const bool reached = result.estimatedErrorFrames == frames &&
+                         errorTargetReached(result.estimatedError, settings.errorTarget);
     out << "converge: ";
     if (result.estimatedError < 0.0)
     {
@@ -938,7 +938,7 @@ int runRender(const std::vector<std::string>& args, std::ostream& out, std::ostr
       out << "estimated error " << result.estimatedError << " after " << result.estimatedErrorFrames
           << " frames";
     }
-    out << (reached ? ", at or below the target " : ", not at the target ") << settings.errorTarget
+    out << (reached ? ", within the target " : ", not within the target ") << settings.errorTarget
         << " (" << frames << " of at most " << settings.frames << " frames)\n";
   }
   if (a.has("--time"))

@@ -28,6 +28,11 @@ int minimumErrorStopFrames(int samplesPerFrame)
   return (kMinimumErrorStopSamples + s - 1) / s;
 }
 
+bool errorTargetReached(double estimate, double target)
+{
+  return estimate >= 0.0 && target > 0.0 && estimate <= kErrorStopShare * target;
+}
+
 double estimatedRelativeError(const Image& mean, const Image& half)
 {
   if (mean.channels != 4 || half.channels != 4)

@@ -6,6 +6,8 @@
 //     one sqrt(sum sigma^2 / F / sum mu^2), within a few percent over many pixels;
 //   - pixels are weighed by their coverage: uncovered ones (the background) count for nothing, a
 //     half-covered one for half (a value worked out by hand);
+//   - a view stops at an estimate of 3/4 of its target, from 256 samples a pixel on (worked out
+//     by hand);
 //   - nothing covered or not finite gives a negative estimate; mismatched images are an error.
 #include "core/error.h"
 #include "core/quality/error_estimate.h"
@@ -108,6 +110,20 @@ TEST(ErrorEstimate, PixelsWeighByCoverage)
   }
   // Error: 0.01 + 0.01 + 0.5 x 0.04 = 0.04; signal: 3 + 0.5 x 4 = 5.
   EXPECT_NEAR(estimatedRelativeError(mean, half), std::sqrt(0.04 / 5.0), 1e-6);
+}
+
+TEST(ErrorEstimate, AViewStopsAtThreeQuartersOfItsTarget)
+{
+  EXPECT_DOUBLE_EQ(kErrorStopShare, 0.75);
+  EXPECT_TRUE(errorTargetReached(0.0075, 0.01));
+  EXPECT_TRUE(errorTargetReached(0.0, 0.01));
+  EXPECT_FALSE(errorTargetReached(0.0076, 0.01));
+  EXPECT_FALSE(errorTargetReached(-1.0, 0.01)); // no estimate
+  EXPECT_FALSE(errorTargetReached(0.001, 0.0)); // no target
+  EXPECT_EQ(minimumErrorStopFrames(16), 16);
+  EXPECT_EQ(minimumErrorStopFrames(1), 256);
+  EXPECT_EQ(minimumErrorStopFrames(3), 86);
+  EXPECT_EQ(minimumErrorStopFrames(0), 256);
 }
 
 TEST(ErrorEstimate, NothingToEstimateAndMismatches)

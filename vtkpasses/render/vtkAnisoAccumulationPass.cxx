@@ -291,8 +291,8 @@ bool vtkAnisoAccumulationPass::IsConverged() const
     return true;
   }
   return this->ErrorTarget > 0.0 && this->AccumulatedFrames >= this->ErrorStopFrames &&
-         this->EstimatedErrorFrames == this->AccumulatedFrames && this->EstimatedError >= 0.0 &&
-         this->EstimatedError <= this->ErrorTarget;
+         this->EstimatedErrorFrames == this->AccumulatedFrames &&
+         aniso::errorTargetReached(this->EstimatedError, this->ErrorTarget);
 }
 
 void vtkAnisoAccumulationPass::Reset()

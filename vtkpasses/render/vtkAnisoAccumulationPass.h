@@ -18,8 +18,8 @@
 // With an error target (SetErrorTarget), the mean is read back at the frame counts of
 // core/quality/error_estimate.h (2, 3, 4, 6, 8, 12, ...) and kept on the CPU (the last two), and
 // from 4 frames on its relative L2 error is estimated against the mean of its first half: the
-// view stops when the estimate is at or below the target, or at the target frame count,
-// whichever comes first. Without one, nothing is read back.
+// view stops when the estimate is at or below 3/4 of the target (errorTargetReached), or at the
+// target frame count, whichever comes first. Without one, nothing is read back.
 //
 // A frame may be drawn in horizontal bands (SetFrameBands), one band per Render(): the surfaces
 // and the background are drawn and folded into the mean only within the band's rows (scissor),
