@@ -59,10 +59,11 @@ Stopped runToTarget(RenderSettings s, double target, int mostFrames,
   return stopped;
 }
 
-std::vector<Compared> sphereReference(const RenderSettings& s, const Environment& env)
+std::vector<Compared> sphereReference(const RenderSettings& s, const Environment& env,
+                                     double tolerance)
 {
   ReferenceOptions options;
-  options.relativeTolerance = 1e-3;
+  options.relativeTolerance = tolerance;
   const AsLobe lobe = s.material.lobe;
   return referencePixels(s,
                          [&](const Frame& frame, const glm::dvec3& v) {
@@ -77,7 +78,7 @@ TEST(ConvergeByError, StopsAtTheTargetWithTheEstimateTrackingTheError)
   RenderSettings s = sphereScene(env, AsLobe{1000.0, 100.0}, kSize);
   s.cubeSize = 256;
   s.material.samples = 16;
-  const std::vector<Compared> pixels = sphereReference(s, *env);
+  const std::vector<Compared> pixels = sphereReference(s, *env, 1e-3);
   ASSERT_GT(pixels.size(), 200u);
   std::printf("builtin:studio, (1000, 100), %zu pixels, frames of 16 samples:\n", pixels.size());
 
@@ -118,7 +119,8 @@ TEST(ConvergeByError, CityStopsAtOnePercentWithTheDefaults)
   s.cubeSize = 256;
   s.material.samples = 16;
   s.material.environmentSampling = EnvironmentSampling::Auto;
-  const std::vector<Compared> pixels = sphereReference(s, *env);
+  // Each pixel to 2e-3 (its share of the sun is what costs): far below the 1% judged.
+  const std::vector<Compared> pixels = sphereReference(s, *env, 2e-3);
   ASSERT_GT(pixels.size(), 200u);
   std::printf("city, (20000, 70), %zu pixels, frames of 16 samples:\n", pixels.size());
   // From 256 samples a pixel on, as the window and `aniso render --converge` stop.
