@@ -14,8 +14,9 @@
 //     cache for anything (its counters move only on the worker);
 //   - with quality-mode error, the still view stops by the error it estimates from its own
 //     frames: not before 256 samples a pixel, before target-samples (then the most), at a
-//     checkpoint whose estimate is at error-target; a tighter target refines further; in samples
-//     mode it takes exactly target-samples and estimates nothing;
+//     checkpoint whose estimate is at 3/4 of error-target, which the status bar shows; a tighter
+//     target refines further; in samples mode it takes exactly target-samples, estimates
+//     nothing and the status bar shows the error model's prediction;
 //   - the frames' measured costs outlive edits of n_u and F0 and are forgotten when the tangent
 //     model changes;
 //   - a surface of more than kInteractiveTriangleLimit triangles is drawn as its stand-in while
@@ -36,6 +37,7 @@
 
 #include <QApplication>
 #include <QFile>
+#include <QLabel>
 #include <QSignalSpy>
 #include <QStandardPaths>
 #include <QSurfaceFormat>
@@ -303,6 +305,13 @@ private slots:
     QCOMPARE(pass->GetEstimatedErrorFrames(), pass->GetAccumulatedFrames());
     QVERIFY(view->estimatedError() >= 0.0);
     QVERIFY(view->estimatedError() <= aniso::kErrorStopShare * 0.02);
+    // The status bar shows the samples and the estimate, in percent.
+    QTest::qWait(50);
+    const QString status = window.findChild<QLabel*>("samples")->text();
+    QVERIFY2(status.startsWith(QString("Samples %1 / 1024, estimated error ").arg(loose)),
+             qPrintable(status));
+    QVERIFY2(status.contains(QString::number(100.0 * view->estimatedError(), 'g', 2) + "%"),
+             qPrintable(status));
 
     // A tighter target refines further (or to the most), to a smaller estimate.
     window.editor()->edit("error-target", numberValue(0.004));
@@ -319,6 +328,8 @@ private slots:
     QVERIFY(!convergedImage(window, 0).data.empty());
     QCOMPARE(view->accumulatedSamples(), 64);
     QVERIFY(view->estimatedError() < 0.0);
+    QTest::qWait(50);
+    QVERIFY(window.findChild<QLabel*>("samples")->text().contains("predicted error"));
   }
 
   // What the frames cost is kept across edits of a material's uniforms and tables (n_u, F0): a
