@@ -28,7 +28,7 @@ cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DANISO_PARAVIEW=
 # benchmark's timing runs and the package's validators, and the offscreen renders whose time
 # under the sanitizers is the LUT bakes and many frames of shading (25 to 130 s each here); the
 # classes they drive run here through the shorter command-line tests and the window tests.
-skipped='^(test_reference_image|test_bench_command|test_package|test_render_sources|test_render_reference|test_view_quality|test_gltf_render_cli|test_render_surface_cli|test_render_cli|test_render_parts_cli|test_render_mis_outliers|test_render_cli_models|test_render_sampling|test_render_features|test_render_turntable_cli|test_render_leadr)$'
+skipped='^(test_reference_image|test_bench_command|test_package|test_render_sources|test_render_converge|test_render_reference|test_view_quality|test_gltf_render_cli|test_render_surface_cli|test_render_cli|test_render_parts_cli|test_render_mis_outliers|test_render_cli_models|test_render_sampling|test_render_features|test_render_turntable_cli|test_render_leadr)$'
 # Only what the chosen tests need is built (not the benchmarks' programs): the programs the
 # tests run and each test's executable (a test that runs a script has none).
 known=" $(cmake --build "$build" --target help | sed -n 's/^\.\.\. \([^ ]*\).*/\1/p' | tr '\n' ' ') "
