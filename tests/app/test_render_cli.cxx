@@ -9,6 +9,8 @@
 //  - A flat part (the built-in plate) is seen by default: the share of covered pixels is the
 //    pinhole projection's of its corners for the default (three-quarter) view, and near none
 //    from the front view (edge-on).
+//  - --converge stops by the frames' own error estimate (from 16 frames, before the most, the
+//    estimate within 3/4 of the target) and says so; --frames caps it; 0 is refused.
 //  - The environment's sources are printed: under builtin:sunsky one line names the sun at an
 //    azimuth and elevation that, read as --azimuth and --elevation read them
 //    (viewDirectionFromAngles), point at SunSkyEnvironment's own sun direction; under
@@ -182,6 +184,48 @@ TEST_F(RenderCli, PngAndTimes)
   const aniso::Image rgba = aniso::readImage(transparent, &info);
   EXPECT_EQ(info.fileChannels, 4);
   EXPECT_EQ(rgba.at(12, 12, 3), 1.0f); // the plate fills the centre
+}
+
+// --converge ERR stops by the error the frames estimate themselves (core/quality/
+// error_estimate.h) as the window's still view does: not before 256 samples a pixel (16 frames
+// of the default 16 samples), before the most (target-samples' default 4096 in frames: 256),
+// with the estimate at 3/4 of the target; the written line says so. With --frames the most is
+// that count, and a target out of reach is reported as not reached; a target of 0 is refused.
+TEST_F(RenderCli, ConvergeStopsByItsOwnEstimate)
+{
+  ANISO_REQUIRE_DISPLAY();
+  const std::string out = path("converged.png").string();
+  const Outcome r = run({"render", "--builtin", "sphere", "--size", "48x48", "--nu", "1000",
+                         "--nv", "100", "--jitter", "off", "--converge", "0.02", "-o", out});
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const std::size_t at = r.out.find("converge: estimated error ");
+  ASSERT_NE(at, std::string::npos) << r.out;
+  std::istringstream line(r.out.substr(at + std::string("converge: estimated error ").size()));
+  double estimate = -1.0;
+  std::string after;
+  int frames = 0;
+  line >> estimate >> after >> frames;
+  EXPECT_GE(frames, 16) << r.out;
+  EXPECT_LT(frames, 256) << r.out;
+  EXPECT_GE(estimate, 0.0) << r.out;
+  EXPECT_LE(estimate, 0.75 * 0.02) << r.out;
+  EXPECT_NE(r.out.find(", within the target 0.02 (" + std::to_string(frames) +
+                       " of at most 256 frames)"),
+            std::string::npos)
+      << r.out;
+  EXPECT_NE(r.out.find(": " + std::to_string(frames) + " frame(s) x 16 samples"),
+            std::string::npos)
+      << r.out;
+
+  const Outcome capped = run({"render", "--builtin", "sphere", "--size", "48x48", "--frames", "6",
+                              "--converge", "0.0001", "-o", out});
+  ASSERT_EQ(capped.exitCode, 0) << capped.err;
+  EXPECT_NE(capped.out.find("after 6 frames, not within the target 0.0001 (6 of at most 6 frames)"),
+            std::string::npos)
+      << capped.out;
+
+  expectOneLineError(run({"render", "--builtin", "sphere", "--converge", "0", "-o", out}), 2,
+                     "--converge");
 }
 
 // The fraction of a square image of CAMERA that the plate [-1, 1]^2 (z = 0) covers: its corners
