@@ -416,8 +416,7 @@ public:
                                                       std::string::npos;
                ++i)
           {
-            if (result_.rows[i].kind.size() > 6 &&
-                result_.rows[i].kind.compare(result_.rows[i].kind.size() - 6, 6, "-still") == 0)
+            if (result_.rows[i].kind == base.kind + "-still")
             {
               continue; // the still view is the default's alone
             }
@@ -620,6 +619,25 @@ private:
     result_.rows.push_back(row);
   }
 
+  // ROW's frames and times as an accumulation of FRAMES frames of SAMPLES samples whose frame
+  // times are TIMES (the first of them the accumulation's first frame).
+  static void setAccumulationTimes(BenchRow& row, const std::vector<FrameTime>& times, int frames,
+                                   int samples)
+  {
+    row.frames = frames;
+    row.runs = frames;
+    row.firstFrameSeconds = times.front().wall;
+    const FrameTime median = medianFrameTime(times);
+    row.medianFrameSeconds = median.wall;
+    row.medianFrameCpuSeconds = median.cpu;
+    for (const FrameTime& t : times)
+    {
+      row.totalSeconds += t.wall;
+      row.totalCpuSeconds += t.cpu;
+    }
+    row.samplesPerSecond = double(row.coveredPixels) * samples * frames / row.totalSeconds;
+  }
+
   void measureProgressive(RenderSession& session, const MaterialSettings& material,
                           const Config& config, const ReferenceImage& reference,
                           const BenchRow& base, const std::vector<int>& checkpoints,
@@ -644,19 +662,7 @@ private:
       BenchRow row = measured(base, session.read(), reference);
       row.kind = base.kind == "sweep" ? "progressive" : base.kind + "-progressive";
       describeConfig(row, config);
-      row.frames = checkpoint;
-      row.runs = checkpoint;
-      row.firstFrameSeconds = times.front().wall;
-      const FrameTime median = medianFrameTime(times);
-      row.medianFrameSeconds = median.wall;
-      row.medianFrameCpuSeconds = median.cpu;
-      for (const FrameTime& t : times)
-      {
-        row.totalSeconds += t.wall;
-        row.totalCpuSeconds += t.cpu;
-      }
-      row.samplesPerSecond =
-          double(row.coveredPixels) * config.samples * checkpoint / row.totalSeconds;
+      setAccumulationTimes(row, times, checkpoint, config.samples);
       result_.rows.push_back(row);
       if (stopBelow > 0.0 && row.relativeL2 <= stopBelow)
       {
@@ -685,20 +691,8 @@ private:
     BenchRow row = measured(base, session.read(), reference);
     row.kind = base.kind + "-still";
     describeConfig(row, config);
-    row.frames = session.accumulatedFrames();
-    row.runs = row.frames;
+    setAccumulationTimes(row, times, session.accumulatedFrames(), config.samples);
     row.estimatedError = session.estimatedError();
-    row.firstFrameSeconds = times.front().wall;
-    const FrameTime median = medianFrameTime(times);
-    row.medianFrameSeconds = median.wall;
-    row.medianFrameCpuSeconds = median.cpu;
-    for (const FrameTime& t : times)
-    {
-      row.totalSeconds += t.wall;
-      row.totalCpuSeconds += t.cpu;
-    }
-    row.samplesPerSecond =
-        double(row.coveredPixels) * config.samples * row.frames / row.totalSeconds;
     result_.rows.push_back(row);
     log_ << "  " << row.mesh << " " << row.environment << " " << lobeText(row.lobe)
          << " still view " << describe(config, autoResolved_) << ": stopped after " << row.frames

@@ -179,22 +179,19 @@ std::vector<ParameterSpec> declare()
   // The default material is brushed aluminium: sharp across the brushing (n_u, along t) and
   // broad along it (n_v), so highlights stretch along b as on a brushed plate.
   return {
-      ofMaterial(
-          affecting(A::Uniforms | A::Luts | A::LitModels,
-                    number("nu", "n_u", T::Real, 1000.0, 0.0, kMaxExponent, 1.0, S::Logarithmic, {},
-                           "Ashikhmin-Shirley exponent along the tangent t; higher is sharper"))),
-      ofMaterial(
-          affecting(A::Uniforms | A::Luts | A::LitModels,
-                    number("nv", "n_v", T::Real, 50.0, 0.0, kMaxExponent, 1.0, S::Logarithmic, {},
-                           "Ashikhmin-Shirley exponent along the bitangent b; higher is sharper"))),
-      ofMaterial(
-          affecting(A::Uniforms | A::LitModels | A::SurfaceModels,
-                    color("f0", "F0", {0.913, 0.922, 0.924}, 0.001,
-                          "Fresnel reflectance at normal incidence, linear RGB; the default is "
-                          "aluminium"))),
+      ofMaterial(affecting(A::Uniforms | A::Luts | A::LitModels,
+                number("nu", "n_u", T::Real, 1000.0, 0.0, kMaxExponent, 1.0, S::Logarithmic, {},
+                       "Ashikhmin-Shirley exponent along the tangent t; higher is sharper"))),
+      ofMaterial(affecting(A::Uniforms | A::Luts | A::LitModels,
+                number("nv", "n_v", T::Real, 50.0, 0.0, kMaxExponent, 1.0, S::Logarithmic, {},
+                       "Ashikhmin-Shirley exponent along the bitangent b; higher is sharper"))),
       ofMaterial(affecting(A::Uniforms | A::LitModels | A::SurfaceModels,
-                           color("albedo", "Albedo", {0.0, 0.0, 0.0}, 0.01,
-                                 "diffuse Lambert albedo, linear RGB; metals have none"))),
+                color("f0", "F0", {0.913, 0.922, 0.924}, 0.001,
+                      "Fresnel reflectance at normal incidence, linear RGB; the default is "
+                      "aluminium"))),
+      ofMaterial(affecting(A::Uniforms | A::LitModels | A::SurfaceModels,
+                color("albedo", "Albedo", {0.0, 0.0, 0.0}, 0.01,
+                      "diffuse Lambert albedo, linear RGB; metals have none"))),
       affecting(A::Uniforms, number("samples", "Samples", T::Integer, 16.0, 1.0, 1024.0, 1.0,
                                     S::Logarithmic, {}, "importance samples per pixel and frame")),
       affecting(A::Luts, number("lut-size", "LUT size", T::Integer, 64.0, kMinLutSize, kMaxLutSize,
@@ -251,7 +248,8 @@ std::vector<ParameterSpec> declare()
                        {HalfVectorSource::Shader, HalfVectorSource::Lut}, HalfVectorSource::Lut,
                        "where the importance-sampled half vectors come from: computed in the "
                        "shader or fetched from the half-vector lookup table")),
-      number("target-samples", "Quality", T::Integer, 4096.0, 1.0, 65536.0, 1.0, S::Logarithmic, {},
+      number("target-samples", "Quality", T::Integer, 4096.0, 1.0, 65536.0, 1.0, S::Logarithmic,
+             {},
              "samples per pixel a still view accumulates by progressive refinement; with "
              "quality-mode error the most it accumulates"),
       // The quality as an error target (core/quality/error_estimate.h): the still view stops
@@ -266,64 +264,58 @@ std::vector<ParameterSpec> declare()
              "relative L2 error at which a still view stops with quality-mode error (0.01 = 1%), "
              "as estimated from its own frames; also 'aniso render --converge' and, by the "
              "error model of one frame, 'aniso render --quality'"),
-      ofMaterial(affecting(
-          A::Variant | A::FrameCost,
-          choice("bump", "Bump mapping",
-                 {BumpMapping::None, BumpMapping::Normal, BumpMapping::Quaternion},
-                 BumpMapping::None,
-                 "how the maps perturb the shading frame: not at all, by the normal map, or "
-                 "by the quaternion map (baked from the normal map when none is given)"))),
-      ofMaterial(affecting(
-          A::Uniforms,
-          number("height-scale", "Height scale", T::Real, 0.02, 0.0, 0.5, 0.001, S::Linear, "uv",
-                 "relief depth of parallax occlusion mapping, in texture-coordinate "
-                 "units"))),
-      ofMaterial(
-          affecting(A::FrameCost | A::LitModels | A::SurfaceModels,
-                    text("tangents", "Tangents", "auto",
-                         "tangent field: auto (the mesh's, else from UVs, else face-u on a STEP or "
-                         "IGES part, else axis:1,0,0), uv, axis:X,Y,Z, around:X,Y,Z, radial:X,Y,Z, "
-                         "face-u, face-v: along a CAD face's own u or v (a turned face: round "
-                         "or along its axis), or array:NAME: along the mesh's vector array NAME"))),
+      ofMaterial(affecting(A::Variant | A::FrameCost,
+                choice("bump", "Bump mapping",
+                       {BumpMapping::None, BumpMapping::Normal, BumpMapping::Quaternion},
+                       BumpMapping::None,
+                       "how the maps perturb the shading frame: not at all, by the normal map, or "
+                       "by the quaternion map (baked from the normal map when none is given)"))),
+      ofMaterial(affecting(A::Uniforms,
+                number("height-scale", "Height scale", T::Real, 0.02, 0.0, 0.5, 0.001, S::Linear,
+                       "uv",
+                       "relief depth of parallax occlusion mapping, in texture-coordinate "
+                       "units"))),
+      ofMaterial(affecting(A::FrameCost | A::LitModels | A::SurfaceModels,
+                text("tangents", "Tangents", "auto",
+                     "tangent field: auto (the mesh's, else from UVs, else face-u on a STEP or "
+                     "IGES part, else axis:1,0,0), uv, axis:X,Y,Z, around:X,Y,Z, radial:X,Y,Z, "
+                     "face-u, face-v: along a CAD face's own u or v (a turned face: round "
+                     "or along its axis), or array:NAME: along the mesh's vector array NAME"))),
       // A data field of the mesh that drives the material (core/fields/field_mapping.h): its
       // values reach the shader as a vertex attribute, the range and the target's values as
       // uniforms, so dragging them never recompiles nor re-uploads the mesh.
-      ofMaterial(
-          affecting(A::Uniforms | A::Variant | A::FrameCost,
-                    text("field", "Field", "none",
-                         "a data array that drives the material, none or NAME (a point or cell "
-                         "array; a vector's magnitude), NAME:magnitude, NAME:x|y|z or NAME:N "
-                         "(one component, from 0); cell values are averaged to the points"))),
-      ofMaterial(
-          affecting(A::Uniforms | A::Variant | A::FrameCost,
-                    choice("field-target", "Field drives",
-                           {FieldTarget::Albedo, FieldTarget::F0, FieldTarget::Roughness,
-                            FieldTarget::Anisotropy},
-                           FieldTarget::Albedo,
-                           "what the field sets, albedo or f0 (through field-colormap), roughness "
-                           "(n_u and n_v times field-low to field-high) or anisotropy (strength "
-                           "field-low to field-high, 0 isotropic, 1 the material's lobe)"))),
-      ofMaterial(affecting(
-          A::Uniforms,
-          choice("field-colormap", "Colour map",
-                 {ColorMap::Viridis, ColorMap::Cividis, ColorMap::CoolToWarm, ColorMap::Grayscale},
-                 ColorMap::Viridis,
-                 "colour map of the field, one of ParaView's presets (Viridis "
-                 "(matplotlib), Cividis, Cool to Warm, Grayscale) with its NaN colour"))),
-      ofMaterial(affecting(
-          A::Uniforms, text("field-range", "Field range", "auto",
-                            "the field's values mapped to the colour map's ends, auto (the finite "
-                            "range over the parts that show the field) or MIN,MAX"))),
-      ofMaterial(
-          affecting(A::Uniforms,
-                    number("field-low", "Field low", T::Real, 0.0, 0.0, 1000.0, 0.01, S::Linear, {},
-                           "for roughness the exponents' scale at the range's minimum, for "
-                           "anisotropy the strength there (clamped to [0, 1])"))),
+      ofMaterial(affecting(A::Uniforms | A::Variant | A::FrameCost,
+                text("field", "Field",  "none",
+                     "a data array that drives the material, none or NAME (a point or cell "
+                     "array; a vector's magnitude), NAME:magnitude, NAME:x|y|z or NAME:N "
+                     "(one component, from 0); cell values are averaged to the points"))),
+      ofMaterial(affecting(A::Uniforms | A::Variant | A::FrameCost,
+                choice("field-target", "Field drives",
+                       {FieldTarget::Albedo, FieldTarget::F0, FieldTarget::Roughness,
+                        FieldTarget::Anisotropy},
+                       FieldTarget::Albedo,
+                       "what the field sets, albedo or f0 (through field-colormap), roughness "
+                       "(n_u and n_v times field-low to field-high) or anisotropy (strength "
+                       "field-low to field-high, 0 isotropic, 1 the material's lobe)"))),
       ofMaterial(affecting(A::Uniforms,
-                           number("field-high", "Field high", T::Real, 1.0, 0.0, 1000.0, 0.01,
-                                  S::Linear, {},
-                                  "for roughness the exponents' scale at the range's maximum, for "
-                                  "anisotropy the strength there (clamped to [0, 1])"))),
+                choice("field-colormap", "Colour map",
+                       {ColorMap::Viridis, ColorMap::Cividis, ColorMap::CoolToWarm,
+                        ColorMap::Grayscale},
+                       ColorMap::Viridis,
+                       "colour map of the field, one of ParaView's presets (Viridis "
+                       "(matplotlib), Cividis, Cool to Warm, Grayscale) with its NaN colour"))),
+      ofMaterial(affecting(A::Uniforms,
+                text("field-range", "Field range", "auto",
+                     "the field's values mapped to the colour map's ends, auto (the finite "
+                     "range over the parts that show the field) or MIN,MAX"))),
+      ofMaterial(affecting(A::Uniforms,
+                number("field-low", "Field low", T::Real, 0.0, 0.0, 1000.0, 0.01, S::Linear, {},
+                       "for roughness the exponents' scale at the range's minimum, for "
+                       "anisotropy the strength there (clamped to [0, 1])"))),
+      ofMaterial(affecting(A::Uniforms,
+                number("field-high", "Field high", T::Real, 1.0, 0.0, 1000.0, 0.01, S::Linear, {},
+                       "for roughness the exponents' scale at the range's maximum, for "
+                       "anisotropy the strength there (clamped to [0, 1])"))),
       // Illuminated lines (a file's polylines, vtkpasses/mesh/LineSet.h): their width, per
       // material, so that each line part has its own.
       ofMaterial(affecting(A::Uniforms | A::FrameCost | A::LitModels,
@@ -331,12 +323,12 @@ std::vector<ParameterSpec> declare()
                                   S::Logarithmic, {},
                                   "illuminated lines (a file's polylines): their width, in "
                                   "line-width-unit"))),
-      ofMaterial(
-          affecting(A::Uniforms | A::FrameCost | A::LitModels,
-                    choice("line-width-unit", "Line width unit",
-                           {LineWidthUnit::Pixels, LineWidthUnit::World}, LineWidthUnit::Pixels,
-                           "what line-width is in: pixels on screen, or world (the "
-                           "mesh's length units: thinner farther away)"))),
+      ofMaterial(affecting(A::Uniforms | A::FrameCost | A::LitModels,
+                           choice("line-width-unit", "Line width unit",
+                                  {LineWidthUnit::Pixels, LineWidthUnit::World},
+                                  LineWidthUnit::Pixels,
+                                  "what line-width is in: pixels on screen, or world (the "
+                                  "mesh's length units: thinner farther away)"))),
       // How STEP and IGES parts are tessellated (vtkpasses/mesh/CadReader.h). 0.001 of a part's
       // diagonal keeps a turned part's outline and highlight smooth at a full-window view; the
       // command line also takes an absolute length ("--cad-deflection 0.05mm").

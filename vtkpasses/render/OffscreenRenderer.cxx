@@ -291,7 +291,7 @@ RenderResult renderOffscreen(const RenderSettings& s)
 
   RenderResult result;
   result.frameSeconds.reserve(static_cast<std::size_t>(s.frames));
-  for (int frame = 0; frame < s.frames && !(frame > 0 && pass->IsConverged()); ++frame)
+  for (int frame = 0; frame < s.frames && !pass->IsConverged(); ++frame)
   {
     const auto start = std::chrono::steady_clock::now();
     window->Render();
