@@ -88,6 +88,7 @@ SourceGroups buildSourceGroups(const EnvAnalysis& analysis)
       const double power = lum * omega[std::size_t(y)];
       SourceGroup& group = groups[std::size_t(g)];
       group.power += power;
+      group.squaredPower += lum * power;
       group.solidAngle += omega[std::size_t(y)];
       weighted[std::size_t(g)] += power * cornerDirection(x + 0.5, y + 0.5, w, h);
       members[std::size_t(g)].push_back(std::uint32_t(i));
@@ -315,6 +316,30 @@ double smallSourceShare(const SourceGroups& groups, const glm::dvec3& mirror,
   }
   const double whole = seen + groups.residualMean;
   return whole > 0.0 ? small / whole : 0.0;
+}
+
+double lobeSourceSecondMoment(const SourceGroups& groups, const glm::dvec3& mirror,
+                              const std::function<double(const glm::dvec3&)>& boundPdf)
+{
+  double secondMoment = 0.0;
+  const glm::dvec3 r = glm::normalize(mirror);
+  for (const SourceGroup& group : groups.groups)
+    secondMoment += lobePdfAtCap(group, r, boundPdf) * group.squaredPower;
+  return secondMoment;
+}
+
+bool lobeSamplesSuffice(const SourceGroups& groups, const glm::dvec3& mirror,
+                        const std::function<double(const glm::dvec3&)>& lobePdf,
+                        const std::function<double(const glm::dvec3&)>& boundPdf, int lobeSamples,
+                        double noise)
+{
+  double seen = 0.0;
+  const glm::dvec3 r = glm::normalize(mirror);
+  for (const SourceGroup& group : groups.groups)
+    seen += group.power * std::min(lobePdfAtCap(group, r, lobePdf), 1.0 / group.solidAngle);
+  const double whole = seen + groups.residualMean;
+  return lobeSourceSecondMoment(groups, r, boundPdf) <
+         noise * noise * double(std::max(lobeSamples, 1)) * whole * whole;
 }
 
 int sourceSampleSteps(int base, int lobeSamples)

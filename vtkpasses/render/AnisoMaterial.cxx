@@ -558,6 +558,9 @@ public:
           settings.sourceSamples > 0 ? 0 : sourceSampleSteps(sourceCount, settings.samples);
       program->SetUniformi("anisoSourceSampleCount", sourceCount);
       program->SetUniformi("anisoSourceSampleSteps", sourceSteps);
+      // Pixels whose lobe samples take the sources well enough take none (not with a set count).
+      const double noise = settings.sourceSamples > 0 ? 0.0 : kLobeOnlySourceNoise;
+      program->SetUniformf("anisoSourceLobeOnlyVariance", static_cast<float>(noise * noise));
       // Their own blocks of the sequence, one per count, so that frames stratify them too.
       for (int k = 0; k <= 2; ++k)
       {
@@ -637,6 +640,13 @@ public:
     program->SetUniformf(
         "anisoSourceResidualShare",
         static_cast<float>(groups.power > 0.0 ? groups.residualMean / groups.power : 0.0));
+    std::array<float, kGroups> squared{};
+    for (int g = 0; g < count; ++g)
+    {
+      const SourceGroup& group = groups.groups[std::size_t(g)];
+      squared[std::size_t(g)] = float(group.squaredPower / (groups.power * groups.power));
+    }
+    program->SetUniform1fv("anisoSourceGroupSquared", kGroups, squared.data());
   }
 
   // The field's range (relative to the values' offset), the target's values and its colours.

@@ -101,6 +101,12 @@ uniform float anisoSourceDefensive; // share of the selection kept in proportion
 uniform int anisoSourceSampleCount;
 uniform int anisoSourceSampleSteps;
 uniform float anisoSourceResidualShare;
+// A pixel takes no source samples, its lobe samples reading the sources at weight 1, where the
+// second moment they have there is below this share (squared) of its light times N
+// (lobeSamplesSuffice in core/env/env_source_groups.h); 0: never. Per group the integral of
+// its excess luminance squared, over the sources' power squared.
+uniform float anisoSourceLobeOnlyVariance;
+uniform float anisoSourceGroupSquared[ANISO_SOURCE_GROUPS];
 // The source samples' own blocks of the sequence, one per count M 2^k (as anisoSequenceBlock
 // for the lobe's), when anisoSourceSequence is 1 (else the rotated Hammersley set).
 uniform int anisoSourceSequence;
@@ -444,11 +450,14 @@ vec2 anisoBrdfLutCoords(vec3 t, vec3 b, vec3 n, vec3 v)
 // core/env/env_source_groups.h): group g weighs P_g min(p_lobe(l_g), 1 / solid angle_g), l_g the
 // direction of its cap nearest to the mirror direction (p_lobe zero below the surface), and
 // q_g = (1 - d) w_g / sum w + d P_g / P (by power alone when no group is seen); and its count
-// of source samples (smallSourceShare, sourceSampleCount).
-void anisoSourceSelection(vec3 t, vec3 b, vec3 n, vec3 v, out float q[ANISO_SOURCE_GROUPS],
-                          out int sampleSteps)
+// of source samples (smallSourceShare, sourceSampleCount), -1 where its N lobe samples alone
+// suffice (lobeSamplesSuffice: sum_g p_lobe(l_g) integral_g L^2 below
+// anisoSourceLobeOnlyVariance N (sum w + residual)^2).
+void anisoSourceSelection(vec3 t, vec3 b, vec3 n, vec3 v, int lobeCount,
+                          out float q[ANISO_SOURCE_GROUPS], out int sampleSteps)
 {
   float small = 0.0;
+  float secondMoment = 0.0;
   mat3 environmentToWorld = transpose(anisoWorldToEnvironment);
   vec3 r = anisoWorldToEnvironment * (2.0 * dot(n, v) * n - v);
   float w[ANISO_SOURCE_GROUPS];
@@ -491,6 +500,17 @@ void anisoSourceSelection(vec3 t, vec3 b, vec3 n, vec3 v, out float q[ANISO_SOUR
     sum += w[g];
     // Down by its solid angle against the lobe's where the lobe fits inside it.
     small += w[g] * min(anisoSourceGroupInfo[g].y / pdf, 1.0);
+    secondMoment += pdf * anisoSourceGroupSquared[g];
+  }
+  float whole = sum + anisoSourceResidualShare;
+  if (secondMoment < anisoSourceLobeOnlyVariance * float(lobeCount) * whole * whole)
+  {
+    sampleSteps = -1;
+    for (int g = 0; g < ANISO_SOURCE_GROUPS; ++g)
+    {
+      q[g] = 0.0;
+    }
+    return;
   }
   float share = clamp(small / max(sum + anisoSourceResidualShare, 1e-30), 0.0, 1.0);
   sampleSteps = clamp(int(round(log2(1.0 + 3.0 * share))), 0, anisoSourceSampleSteps);
@@ -616,27 +636,26 @@ vec4 anisoSampleSources(float q[ANISO_SOURCE_GROUPS], vec2 xi, out vec2 uv)
   return vec4(sinTheta * cos(phi), sinTheta * sin(phi), cos(theta), anisoSourcePdf(q, uv));
 }
 
+// The sources' radiance in direction l (world), unfiltered, and where it was read.
+vec3 anisoSourceRadianceAt(vec3 l, out vec2 uv)
+{
+  uv = anisoEquirectCoords(anisoWorldToEnvironment * l);
+  return textureLod(anisoSourceRadiance, uv, 0.0).rgb;
+}
+
 // The sources' light by multi-sample MIS of the N lobe samples and the M source samples
 // (balance heuristic): a sample of either technique in direction l adds
 // f (n.l) L_s(l) / (N p_lobe(l) + M p_s(l)) to the estimate, both densities per solid angle,
-// p_lobe the analytic one in either case so the weights of a direction sum to 1. The residual
-// (anisoEnvironment) is integrated by the lobe samples alone. This returns
-// N L_s / (N p_lobe + M p_s) at a lobe sample (the caller multiplies by its AS weight, f (n.l)
-// / p_lobe, and the sum is divided by N).
-vec3 anisoSourceAtLobeSample(vec3 l, vec3 h, vec3 t, vec3 b, vec3 n, float vDotH, int count,
-                             float q[ANISO_SOURCE_GROUPS], int sourceCount)
+// p_lobe the lobe's own (its half vector's, log2 p_h, over 4 v.h) in either case so the
+// weights of a direction sum to 1. The residual (anisoEnvironment) is integrated by the lobe
+// samples alone. This returns the weight N p_lobe / (N p_lobe + M p_s) of a lobe sample read
+// at uv (the caller multiplies L_s by it and by its AS weight, f (n.l) / p_lobe, and the sum
+// is divided by N).
+float anisoSourceLobeWeight(vec2 uv, float log2PdfLobe, int count, float q[ANISO_SOURCE_GROUPS],
+                            int sourceCount)
 {
-  vec2 uv = anisoEquirectCoords(anisoWorldToEnvironment * l);
-  vec3 source = textureLod(anisoSourceRadiance, uv, 0.0).rgb;
-  if (source == vec3(0.0))
-  {
-    return vec3(0.0);
-  }
-  float pdfLobe =
-    exp2(anisoLog2HalfVectorPdf(vec3(dot(h, t), dot(h, b), dot(h, n))) - log2(4.0 * vDotH));
-  float pdfSource = anisoSourcePdf(q, uv);
-  float n0 = float(count);
-  return source * (n0 * pdfLobe / (n0 * pdfLobe + float(sourceCount) * pdfSource));
+  float lobe = float(count) * exp2(log2PdfLobe);
+  return lobe / (lobe + float(sourceCount) * anisoSourcePdf(q, uv));
 }
 #endif
 
@@ -668,10 +687,17 @@ vec3 anisoSpecular(vec3 t, vec3 b, vec3 n, vec3 v, vec3 f0)
 #ifdef ANISO_ENVIRONMENT_SOURCES
   float selection[ANISO_SOURCE_GROUPS];
   int sourceSteps;
-  anisoSourceSelection(t, b, n, v, selection, sourceSteps);
-  int sourceCount = max(anisoSourceSampleCount, 1) << sourceSteps;
+  anisoSourceSelection(t, b, n, v, count, selection, sourceSteps);
+  int sourceCount = sourceSteps < 0 ? 0 : max(anisoSourceSampleCount, 1) << sourceSteps;
+  // A pixel without source samples takes the sources in this loop, at weight 1; one with them
+  // in the loop after it, at their MIS weight. Two loops, not a branch in one: a software
+  // rasteriser runs both sides of a branch for a block of pixels, but leaves a loop as soon as
+  // none of the block is in it (docs/BENCHMARKS.md, "Lobe samples alone where they suffice").
+  int lobeOnlyCount = sourceCount == 0 ? count : 0;
+#else
+  int lobeOnlyCount = count;
 #endif
-  for (int i = 0; i < count; ++i)
+  for (int i = 0; i < lobeOnlyCount; ++i)
   {
     vec2 xi = anisoSamplePoint(i, count, shift, anisoSequenceCount, anisoSequenceBlock);
 #ifdef ANISO_ENVIRONMENT_MIS
@@ -733,7 +759,8 @@ vec3 anisoSpecular(vec3 t, vec3 b, vec3 n, vec3 v, vec3 f0)
     }
     vec3 radiance = anisoEnvironmentRadiance(l, anisoSampleLod(hs.w - log2(4.0 * vDotH), count));
 #ifdef ANISO_ENVIRONMENT_SOURCES
-    radiance += anisoSourceAtLobeSample(l, h, t, b, n, vDotH, count, selection, sourceCount);
+    vec2 uv;
+    radiance += anisoSourceRadianceAt(l, uv);
 #endif
 #ifdef ANISO_METHOD_SPLIT_SUM
     sum += radiance * nDotL;
@@ -746,9 +773,37 @@ vec3 anisoSpecular(vec3 t, vec3 b, vec3 n, vec3 v, vec3 f0)
 #endif
   }
 #ifdef ANISO_ENVIRONMENT_SOURCES
+  // The lobe samples of a pixel with source samples: the residual, and the sources at the
+  // samples' MIS weight.
+  int lobeMisCount = sourceCount > 0 ? count : 0;
+  for (int i = 0; i < lobeMisCount; ++i)
+  {
+    vec4 hs = anisoHalfVector(anisoSamplePoint(i, count, shift, anisoSequenceCount,
+                                               anisoSequenceBlock));
+    vec3 h = hs.x * t + hs.y * b + hs.z * n;
+    float vDotH = dot(v, h);
+    vec3 l = 2.0 * vDotH * h - v;
+    float nDotL = dot(n, l);
+    if (vDotH <= 0.0 || nDotL <= 0.0)
+    {
+      continue;
+    }
+    float log2PdfLobe = hs.w - log2(4.0 * vDotH);
+    vec3 radiance = anisoEnvironmentRadiance(l, anisoSampleLod(log2PdfLobe, count));
+    vec2 uv;
+    vec3 source = anisoSourceRadianceAt(l, uv);
+    if (source != vec3(0.0))
+    {
+      radiance +=
+        source * anisoSourceLobeWeight(uv, log2PdfLobe, count, selection, sourceCount);
+    }
+    float m = clamp(1.0 - vDotH, 0.0, 1.0);
+    float chi = m * m * m * m * m;
+    sum += radiance * (f0 + (1.0 - f0) * chi) * (nDotL / max(nDotL, nDotV));
+  }
   // The source samples: M points of the sources' distribution, stratified and taken from frame
-  // to frame as the lobe's are (their own block of the sequence), each weighted as anisoSourceAtLobeSample says (times N, as the
-  // lobe's sum is divided by N).
+  // to frame as the lobe's are (their own block of the sequence), each weighted as
+  // anisoSourceLobeWeight says for the lobe's (times N, as the lobe's sum is divided by N).
   mat3 sourceToWorld = transpose(anisoWorldToEnvironment);
   // (A block of the sequence for 2 to 16 points, kMaxSequenceCount.)
   int sourceSequenceCount =
@@ -758,7 +813,7 @@ vec3 anisoSpecular(vec3 t, vec3 b, vec3 n, vec3 v, vec3 f0)
     vec2 uv;
     vec4 ls = anisoSampleSources(selection,
                                  anisoSamplePoint(j, sourceCount, shift, sourceSequenceCount,
-                                                  anisoSourceSequenceBlocks[sourceSteps]),
+                                                  anisoSourceSequenceBlocks[max(sourceSteps, 0)]),
                                  uv);
     vec3 l = sourceToWorld * ls.xyz;
     float nDotL = dot(n, l);
