@@ -512,7 +512,7 @@ void anisoSourceSelection(vec3 t, vec3 b, vec3 n, vec3 v, int lobeCount,
     }
     return;
   }
-  float share = clamp(small / max(sum + anisoSourceResidualShare, 1e-30), 0.0, 1.0);
+  float share = clamp(small / max(whole, 1e-30), 0.0, 1.0);
   sampleSteps = clamp(int(round(log2(1.0 + 3.0 * share))), 0, anisoSourceSampleSteps);
   for (int g = 0; g < ANISO_SOURCE_GROUPS; ++g)
   {
