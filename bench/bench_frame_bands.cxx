@@ -11,6 +11,7 @@
 #include "vtkpasses/render/AnisoMaterial.h"
 #include "vtkpasses/render/EnvironmentLighting.h"
 #include "vtkpasses/render/vtkAnisoAccumulationPass.h"
+#include "vtkpasses/render/vtkAnisoPolyDataMapper.h"
 
 #include <chrono>
 #include <cstdio>
@@ -20,7 +21,6 @@
 #include <vtkActor.h>
 #include <vtkCamera.h>
 #include <vtkNew.h>
-#include <vtkOpenGLPolyDataMapper.h>
 #include <vtkOpenGLRenderWindow.h>
 #include <vtkOpenGLRenderer.h>
 #include <vtkPolyData.h>
@@ -80,7 +80,7 @@ int main(int argc, char** argv)
   }
   auto lighting = std::make_shared<aniso::EnvironmentLighting>(
       std::make_shared<aniso::StudioEnvironment>(), 256);
-  vtkNew<vtkOpenGLPolyDataMapper> mapper;
+  vtkNew<vtkAnisoPolyDataMapper> mapper;
   mapper->SetInputData(aniso::makeTorus());
   vtkNew<vtkActor> actor;
   actor->SetMapper(mapper);

@@ -7,6 +7,7 @@
 #include "vtkpasses/render/RendererMatrices.h"
 #include "vtkpasses/render/TextureUpload.h"
 #include "vtkpasses/render/vtkAnisoAccumulationPass.h"
+#include "vtkpasses/render/vtkAnisoPolyDataMapper.h"
 
 #include <algorithm>
 #include <chrono>
@@ -20,7 +21,6 @@
 #include <vtkFloatArray.h>
 #include <vtkImageData.h>
 #include <vtkNew.h>
-#include <vtkOpenGLPolyDataMapper.h>
 #include <vtkOpenGLRenderWindow.h>
 #include <vtkOpenGLRenderer.h>
 #include <vtkPointData.h>
@@ -124,7 +124,7 @@ class RenderSession::Impl
 public:
   vtkNew<vtkRenderWindow> window;
   vtkNew<vtkOpenGLRenderer> renderer;
-  vtkNew<vtkOpenGLPolyDataMapper> mapper;
+  vtkNew<vtkAnisoPolyDataMapper> mapper;
   vtkNew<vtkActor> actor;
   vtkNew<vtkRenderStepsPass> steps;
   vtkNew<vtkAnisoAccumulationPass> pass;

@@ -6,6 +6,7 @@
 #include "core/models/models.h"
 #include "vtkpasses/render/DrawingFrame.h"
 #include "vtkpasses/render/LitModelMaterial.h"
+#include "vtkpasses/render/vtkAnisoPolyDataMapper.h"
 
 #include <QVBoxLayout>
 #include <QVTKOpenGLNativeWidget.h>
@@ -15,7 +16,6 @@
 #include <vtkCamera.h>
 #include <vtkGenericOpenGLRenderWindow.h>
 #include <vtkInteractorStyleTrackballCamera.h>
-#include <vtkOpenGLPolyDataMapper.h>
 #include <vtkOpenGLRenderer.h>
 #include <vtkPolyData.h>
 #include <vtkRenderWindowInteractor.h>
@@ -28,7 +28,7 @@ namespace aniso
 struct CompareWindow::PaneActor
 {
   vtkNew<vtkActor> actor;
-  vtkNew<vtkOpenGLPolyDataMapper> mapper;
+  vtkNew<vtkAnisoPolyDataMapper> mapper;
   std::unique_ptr<LitModelMaterial> material;
   bool inRenderer = false;
 };

@@ -8,6 +8,7 @@
 #include "vtkpasses/render/EnvironmentLighting.h"
 #include "vtkpasses/render/LineStyle.h"
 #include "vtkpasses/render/LitModelMaterial.h"
+#include "vtkpasses/render/vtkAnisoPolyDataMapper.h"
 
 #include <algorithm>
 #include <utility>
@@ -15,7 +16,6 @@
 #include <vtkActor.h>
 #include <vtkActorCollection.h>
 #include <vtkNew.h>
-#include <vtkOpenGLPolyDataMapper.h>
 #include <vtkOpenGLRenderer.h>
 #include <vtkPolyData.h>
 #include <vtkPropCollection.h>
@@ -94,7 +94,7 @@ void litSceneOf(const SceneModel& model, const ParameterSet& parameters,
 struct LitModelView::Part
 {
   vtkNew<vtkActor> actor;
-  vtkNew<vtkOpenGLPolyDataMapper> mapper;
+  vtkNew<vtkAnisoPolyDataMapper> mapper;
   std::unique_ptr<LitModelMaterial> material;
   bool inRenderer = false;
 };

@@ -18,6 +18,7 @@
 #include "vtkpasses/render/PickCuller.h"
 #include "vtkpasses/render/RendererMatrices.h"
 #include "vtkpasses/render/vtkAnisoAccumulationPass.h"
+#include "vtkpasses/render/vtkAnisoPolyDataMapper.h"
 
 #include <QStringList>
 #include <QTimer>
@@ -31,7 +32,6 @@
 #include <vtkDataObject.h>
 #include <vtkHardwareSelector.h>
 #include <vtkInteractorObserver.h>
-#include <vtkOpenGLPolyDataMapper.h>
 #include <vtkOpenGLRenderWindow.h>
 #include <vtkOpenGLRenderer.h>
 #include <vtkOutlineSource.h>
@@ -99,11 +99,11 @@ struct SceneView::PartView
   bool loaded = false;  // its surface loaded and prepared
   bool inRenderer = false;
   vtkNew<vtkActor> actor;
-  vtkNew<vtkOpenGLPolyDataMapper> mapper;
+  vtkNew<vtkAnisoPolyDataMapper> mapper;
   // Draws the stand-in while things move, swapped in on the actor: each mapper keeps its own
   // buffers and shader programs, so the swap rebuilds nothing (a new input would rebuild both,
   // for every part of a scene).
-  vtkNew<vtkOpenGLPolyDataMapper> standInMapper;
+  vtkNew<vtkAnisoPolyDataMapper> standInMapper;
   std::unique_ptr<AnisoMaterial> shading;
   MaterialSettings full;
   vtkSmartPointer<vtkPolyData> surface;          // in the mesh's coordinates

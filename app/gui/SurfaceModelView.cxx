@@ -9,12 +9,12 @@
 #include "scene/SceneShading.h"
 #include "vtkpasses/render/DrawingFrame.h"
 #include "vtkpasses/render/SurfaceModelSettings.h"
+#include "vtkpasses/render/vtkAnisoPolyDataMapper.h"
 
 #include <algorithm>
 #include <vtkActor.h>
-#include <vtkOpenGLPolyDataMapper.h>
-#include <vtkOpenGLRenderer.h>
 #include <vtkNew.h>
+#include <vtkOpenGLRenderer.h>
 #include <vtkPolyData.h>
 #include <vtkSmartPointer.h>
 
@@ -216,7 +216,7 @@ void SurfaceModelView::update()
         continue; // hidden parts are not drawn
       }
       const MaterialInstaller install = surfaceModelInstallerOf(*model_, i, *assets_);
-      vtkNew<vtkOpenGLPolyDataMapper> mapper;
+      vtkNew<vtkAnisoPolyDataMapper> mapper;
       mapper->ScalarVisibilityOff();
       mapper->SetInputData(view_->partSurfaceToDraw(i));
       Part part;

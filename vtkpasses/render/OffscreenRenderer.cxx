@@ -7,7 +7,9 @@
 #include "vtkpasses/render/FieldValues.h"
 #include "vtkpasses/render/OpenGlCapabilities.h"
 #include "vtkpasses/render/RendererMatrices.h"
+#include "vtkpasses/render/ShaderHook.h"
 #include "vtkpasses/render/vtkAnisoAccumulationPass.h"
+#include "vtkpasses/render/vtkAnisoPolyDataMapper.h"
 
 #include <X11/Xlib.h>
 #include <algorithm>
@@ -19,7 +21,6 @@
 #include <thread>
 #include <vtkActor.h>
 #include <vtkNew.h>
-#include <vtkOpenGLPolyDataMapper.h>
 #include <vtkOpenGLRenderWindow.h>
 #include <vtkOpenGLRenderer.h>
 #include <vtkPoints.h>
@@ -207,7 +208,7 @@ RenderResult renderOffscreen(const RenderSettings& s)
     {
       continue;
     }
-    vtkNew<vtkOpenGLPolyDataMapper> mapper;
+    vtkNew<vtkAnisoPolyDataMapper> mapper;
     mapper->SetInputData(inDrawingFrame(parts[i].surface, drawing));
     mapper->ScalarVisibilityOff();
     actors[i] = vtkSmartPointer<vtkActor>::New();
@@ -298,6 +299,17 @@ RenderResult renderOffscreen(const RenderSettings& s)
     window->WaitForCompletion();
     const auto end = std::chrono::steady_clock::now();
     result.frameSeconds.push_back(std::chrono::duration<double>(end - start).count());
+  }
+  // A part drawn with VTK's own shading because its material's shader did not compile is not the
+  // image asked for.
+  for (std::size_t i = 0; i < parts.size(); ++i)
+  {
+    const std::string failure = actors[i] ? shaderCompileFailure(actors[i]) : std::string();
+    if (!failure.empty())
+    {
+      throw errorAbout(s.parts.empty() ? std::string("material") : partSubject(parts[i], i),
+                       failure);
+    }
   }
   result.estimatedError = pass->GetEstimatedError();
   result.estimatedErrorFrames = pass->GetEstimatedErrorFrames();

@@ -1,9 +1,11 @@
 #include "vtkpasses/render/ShaderHook.h"
 
 #include "core/error.h"
+#include "core/hash.h"
 #include "vtkpasses/render/LineStyle.h"
 #include "vtkpasses/render/MaterialShaderSource.h"
 #include "vtkpasses/render/RendererMatrices.h"
+#include "vtkpasses/render/vtkAnisoPolyDataMapper.h"
 
 #include <algorithm>
 #include <cmath>
@@ -15,6 +17,9 @@
 #include <vtkCommand.h>
 #include <vtkDataArray.h>
 #include <vtkDataObject.h>
+#include <vtkInformation.h>
+#include <vtkInformationStringKey.h>
+#include <vtkNew.h>
 #include <vtkOpenGLPolyDataMapper.h>
 #include <vtkOpenGLRenderWindow.h>
 #include <vtkPointData.h>
@@ -46,6 +51,95 @@ MeshArrays meshArraysOf(vtkPolyData* poly)
   arrays.lines = poly->GetNumberOfLines() > 0 && poly->GetNumberOfPolys() == 0 &&
                  poly->GetNumberOfStrips() == 0;
   return arrays;
+}
+
+namespace
+{
+// Where an actor keeps what its shaders' compiler said (shaderCompileFailure).
+vtkInformationStringKey* failureKey()
+{
+  static vtkInformationStringKey* key = vtkInformationStringKey::MakeKey("SHADER_FAILURE", "aniso");
+  return key;
+}
+
+void setShaderCompileFailure(vtkActor* actor, const std::string& message)
+{
+  vtkInformation* keys = actor->GetPropertyKeys();
+  if (!keys)
+  {
+    if (message.empty())
+    {
+      return;
+    }
+    vtkNew<vtkInformation> created;
+    actor->SetPropertyKeys(created);
+    keys = actor->GetPropertyKeys();
+  }
+  const char* now = keys->Has(failureKey()) ? keys->Get(failureKey()) : nullptr;
+  if (message.empty() && now)
+  {
+    keys->Remove(failureKey());
+  }
+  else if (!message.empty() && (!now || message != now))
+  {
+    keys->Set(failureKey(), message.c_str());
+  }
+}
+
+// The first lines of a compiler's LOG, where the first error is (the rest repeats it, or
+// follows from it).
+std::string firstLines(const std::string& log, std::size_t lines = 3)
+{
+  std::string text;
+  std::size_t start = 0;
+  for (std::size_t n = 0; n < lines && start < log.size(); ++n)
+  {
+    std::size_t end = log.find('\n', start);
+    if (end == std::string::npos)
+    {
+      end = log.size();
+    }
+    const std::string line = log.substr(start, end - start);
+    if (line.find_first_not_of(" \t\r") != std::string::npos)
+    {
+      text += (text.empty() ? "" : " ") + line;
+    }
+    else
+    {
+      --n;
+    }
+    start = end + 1;
+  }
+  return text;
+}
+
+// The code's identity: every text it inserts, and where.
+uint64_t fingerprint(const ShaderCode& code)
+{
+  uint64_t hash = kFnvOffsetBasis;
+  const auto add = [&hash](const std::string& text)
+  {
+    hash = fnv1a(text.data(), text.size(), hash);
+    hash = fnv1a("\0", 1, hash);
+  };
+  for (const auto* stage : {&code.vertex, &code.fragment, &code.geometry})
+  {
+    for (const auto& [tag, text] : *stage)
+    {
+      add(tag);
+      add(text);
+    }
+    add("stage");
+  }
+  return hash;
+}
+} // namespace
+
+std::string shaderCompileFailure(vtkActor* actor)
+{
+  vtkInformation* keys = actor ? actor->GetPropertyKeys() : nullptr;
+  const char* message = keys && keys->Has(failureKey()) ? keys->Get(failureKey()) : nullptr;
+  return message ? message : std::string();
 }
 
 std::vector<std::pair<std::string, std::string>> lineGeometryCode(const std::string& p)
@@ -107,10 +201,14 @@ public:
     vtkWeakPointer<vtkOpenGLPolyDataMapper> mapper;
     unsigned long updateShaderTag = 0;
     unsigned long mapperEndTag = 0;
+    unsigned long compileFailedTag = 0;
   };
   std::vector<Observed> observed;
   bool installed = false;
-  ShaderCode code;                                      // what is installed
+  ShaderCode code; // what is installed
+  // Code whose program did not compile here, by fingerprint, with what was reported: installing
+  // it again is refused (its program would fail again, at every draw).
+  std::map<uint64_t, std::string> refused;
   std::vector<vtkWeakPointer<vtkTextureObject>> active; // activated for the current draw
 
   // The hook that drew last in each window and may hold texture units there. A window has few
@@ -170,7 +268,9 @@ public:
 
   void uninstall()
   {
-    if (actor)
+    // Nothing installed, nothing to take out: the actor is not touched (a material that asks
+    // for refused code at every draw must not make every draw a change).
+    if (actor && installed)
     {
       vtkShaderProperty* sp = actor->GetShaderProperty();
       for (const auto& [tag, text] : code.vertex)
@@ -219,6 +319,8 @@ public:
     o.mapper = mapper;
     o.updateShaderTag = mapper->AddObserver(vtkCommand::UpdateShaderEvent, this, &Impl::onUpdateShader);
     o.mapperEndTag = mapper->AddObserver(vtkCommand::EndEvent, this, &Impl::onMapperEnd);
+    o.compileFailedTag = mapper->AddObserver(vtkAnisoPolyDataMapper::ShaderCompileFailedEvent, this,
+                                             &Impl::onCompileFailed);
     observed.push_back(o);
     if (installed)
     {
@@ -246,6 +348,24 @@ public:
     {
       onMesh(poly);
     }
+  }
+
+  // The program with the installed code did not compile (vtkAnisoPolyDataMapper): the code is
+  // taken out, so that the mapper builds VTK's own shaders in this same draw, and refused from
+  // now on; the actor keeps the message and it is reported as a VTK warning.
+  void onCompileFailed(vtkObject*, unsigned long, void* data)
+  {
+    if (!installed || !actor)
+    {
+      return;
+    }
+    const std::string log = data ? static_cast<const char*>(data) : "";
+    const std::string message =
+        "its shader does not compile with this OpenGL driver (" + firstLines(log) + ")";
+    refused[fingerprint(code)] = message;
+    uninstall();
+    setShaderCompileFailure(actor, message);
+    vtkGenericWarningMacro(<< subject << ": " << message << "; drawn with VTK's own shading");
   }
 
   void onUpdateShader(vtkObject*, unsigned long, void* data)
@@ -329,6 +449,7 @@ void ShaderHook::detach()
     {
       o.mapper->RemoveObserver(o.updateShaderTag);
       o.mapper->RemoveObserver(o.mapperEndTag);
+      o.mapper->RemoveObserver(o.compileFailedTag);
     }
   }
   d.observed.clear();
@@ -392,6 +513,14 @@ void ShaderHook::install(const ShaderCode& code)
     return;
   }
   d.uninstall();
+  const auto refused = d.refused.find(fingerprint(code));
+  if (refused != d.refused.end())
+  {
+    // Drawn with VTK's own shading, as when it failed; nothing to report again.
+    setShaderCompileFailure(d.actor, refused->second);
+    return;
+  }
+  setShaderCompileFailure(d.actor, std::string());
   vtkShaderProperty* sp = d.actor->GetShaderProperty();
   for (const auto& [tag, text] : code.vertex)
   {

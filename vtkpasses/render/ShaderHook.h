@@ -69,6 +69,12 @@ std::vector<std::pair<std::string, std::string>> meshAttributes(const std::strin
 // clip position of the quad's own corner (the fragment's point on the quad, for its view ray).
 std::vector<std::pair<std::string, std::string>> lineGeometryCode(const std::string& prefix);
 
+// What the compiler said of the shaders of the code last installed on ACTOR, when they did not
+// compile with the driver and the actor is drawn with VTK's own shading instead ("its shader does
+// not compile with this OpenGL driver (the log's first lines)"); empty otherwise. Kept on the actor
+// (its property keys) by the hook, so that whoever draws it can tell without knowing its material.
+std::string shaderCompileFailure(vtkActor* actor);
+
 class ShaderHook
 {
 public:
@@ -122,6 +128,13 @@ public:
   void setTransforms(vtkShaderProgram* program, const std::string& prefix) const;
 
   // Replaces the installed code (if any) by CODE on the attached actor.
+  //
+  // Code whose program does not compile: VTK 9.1 would crash on it (vtkAnisoPolyDataMapper.h).
+  // With the actor drawn by vtkAnisoPolyDataMapper, the hook takes the code out in the draw that
+  // compiled it, so that the actor is drawn with VTK's own shading, reports it once as a VTK
+  // warning "SUBJECT: its shader does not compile ..." and keeps it as
+  // shaderCompileFailure(actor); installing the same code again is refused (nothing is
+  // installed, the failure stays on the actor), other code is installed as usual.
   void install(const ShaderCode& code);
   // True while code given to install() is on the attached actor (attaching anew and detaching
   // remove it).

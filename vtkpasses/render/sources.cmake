@@ -22,6 +22,7 @@ set(ANISO_RENDER_SOURCES
   TextureUpload.cxx
   ViewSettings.cxx
   vtkAnisoAccumulationPass.cxx
+  vtkAnisoPolyDataMapper.cxx
 )
 set(ANISO_RENDER_SHADERS
   shaders/accumulate_fs.glsl

@@ -60,8 +60,8 @@ class vtkAnisoAccumulationPass : public vtkRenderPass
 {
 public:
   static vtkAnisoAccumulationPass* New();
-  vtkTypeMacro(vtkAnisoAccumulationPass, vtkRenderPass) void PrintSelf(ostream& os,
-                                                                       vtkIndent indent) override;
+  vtkTypeMacro(vtkAnisoAccumulationPass, vtkRenderPass)
+  void PrintSelf(ostream& os, vtkIndent indent) override;
 
   void Render(const vtkRenderState* s) override;
   void ReleaseGraphicsResources(vtkWindow* w) override;

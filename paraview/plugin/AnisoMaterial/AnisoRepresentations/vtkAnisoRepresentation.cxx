@@ -13,6 +13,7 @@
 #include "vtkpasses/render/EnvironmentLighting.h"
 #include "vtkpasses/render/MaterialSettings.h"
 #include "vtkpasses/render/ShaderHook.h"
+#include "vtkpasses/render/vtkAnisoPolyDataMapper.h"
 
 #include <algorithm>
 #include <array>
@@ -32,7 +33,6 @@
 #include <vtkMath.h>
 #include <vtkMultiProcessController.h>
 #include <vtkObjectFactory.h>
-#include <vtkOpenGLPolyDataMapper.h>
 #include <vtkOpenGLShaderProperty.h>
 #include <vtkPVLODActor.h>
 #include <vtkPVRenderView.h>
@@ -168,7 +168,7 @@ struct vtkAnisoRepresentation::Internals
   std::map<std::string, std::string> rejected; // property: why its last value was refused
   std::string statusText;                      // GetAnisoStatus's
 
-  vtkNew<vtkOpenGLPolyDataMapper> drawn; // the actor's mapper: the prepared surface
+  vtkNew<vtkAnisoPolyDataMapper> drawn;  // the actor's mapper: the prepared surface
   std::optional<glm::dvec3> centre;      // of the whole data's bounds, over every rank
   vtkDataObject* preparedFrom = nullptr;
   vtkMTimeType preparedTime = 0;
