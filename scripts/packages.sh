@@ -1,8 +1,9 @@
 # Sourced by the set-up scripts: aniso_install_packages PACKAGE... installs the Debian 12
 # packages that are missing (apt-get as root; otherwise prints the line to run and fails).
-# ANISO_PACKAGES: what the build, its tests and their data need (setup.sh, sanitize.sh); the last
-# two lines build and check the Debian package (CPack's dpkg-shlibdeps and file, the icons' PNGs,
-# the man page, the validators and the MIME check of tests/packaging).
+# ANISO_PACKAGES: what the build, its tests and their data need (setup.sh, sanitize.sh;
+# glslang-tools: the Khronos reference compiler test_shader_portability checks the shaders with);
+# the last two lines build and check the Debian package (CPack's dpkg-shlibdeps and file, the
+# icons' PNGs, the man page, the validators and the MIME check of tests/packaging).
 # ANISO_PARAVIEW_PACKAGES: what the ParaView plugin's stage adds (scripts/paraview.sh: ParaView
 # 5.11, Qt5 SVG which its CMake files ask for, mpirun, and numpy and VTK's Python for the tests'
 # comparisons).
@@ -10,7 +11,7 @@ ANISO_PACKAGES=(cmake g++ make pkg-config libvtk9-dev libvtk9-qt-dev qtbase5-dev
   openimageio-tools libglm-dev libgtest-dev libbenchmark-dev xvfb xauth libgl1-mesa-dri
   blender-data nlohmann-json3-dev libtinygltf-dev libocct-data-exchange-dev
   libocct-modeling-algorithms-dev libocct-ocaf-dev libocct-foundation-dev libocct-modeling-data-dev
-  assimp-testmodels
+  assimp-testmodels glslang-tools
   dpkg-dev file librsvg2-bin help2man desktop-file-utils appstream lintian shared-mime-info
   libglib2.0-bin)
 ANISO_PARAVIEW_PACKAGES=(paraview-dev libqt5svg5-dev openmpi-bin python3-numpy python3-vtk9)

@@ -6,6 +6,13 @@
 #define anisoTangentWC anisoTangentWCVSOut
 #define anisoClipPosition anisoClipPositionVSOut
 #endif
+// The lobe's density evaluated here: half vectors built in the shader, or MIS weights. (GLSL
+// before 4.20 has no line continuation: one condition a line.)
+#if !defined(ANISO_HALF_VECTORS_FROM_LUT) || defined(ANISO_ENVIRONMENT_MIS)
+#define ANISO_LOBE_DENSITY
+#elif defined(ANISO_ENVIRONMENT_SOURCES)
+#define ANISO_LOBE_DENSITY
+#endif
 #ifdef ANISO_HAVE_NORMALS
 in vec3 anisoNormalWC;
 #endif
@@ -51,8 +58,7 @@ uniform int anisoHalfVectorLutSize;
 // drawn towards their geometric mean (anisotropy), core/fields/field_mapping.h's fieldLobe.
 uniform vec2 anisoMaterialExponents; // the material's (n_u, n_v)
 vec2 anisoExponents;                 // per fragment (set before any sample)
-#elif !defined(ANISO_HALF_VECTORS_FROM_LUT) || defined(ANISO_ENVIRONMENT_MIS) ||               \
-  defined(ANISO_ENVIRONMENT_SOURCES)
+#elif defined(ANISO_LOBE_DENSITY)
 uniform vec2 anisoExponents; // (n_u, n_v)
 #endif
 #ifdef ANISO_FIELD
@@ -326,8 +332,7 @@ float anisoSampleLod(float log2PdfLight, int count)
 #endif
 }
 
-#if !defined(ANISO_HALF_VECTORS_FROM_LUT) || defined(ANISO_ENVIRONMENT_MIS) ||                 \
-  defined(ANISO_ENVIRONMENT_SOURCES)
+#ifdef ANISO_LOBE_DENSITY
 // log2 of the density's normalisation sqrt((n_u+1)(n_v+1))/(2 pi), for the fragment's
 // exponents: set once by anisoSpecular before any density below.
 float anisoLog2HalfVectorNorm;
@@ -668,8 +673,7 @@ float anisoSourceLobeWeight(vec2 uv, float log2PdfLobe, int count, float q[ANISO
 // (one-sample MIS, balance heuristic), where f (n.l) = AS weight x p_lobe(l).
 vec3 anisoSpecular(vec3 t, vec3 b, vec3 n, vec3 v, vec3 f0)
 {
-#if !defined(ANISO_HALF_VECTORS_FROM_LUT) || defined(ANISO_ENVIRONMENT_MIS) ||                 \
-  defined(ANISO_ENVIRONMENT_SOURCES)
+#ifdef ANISO_LOBE_DENSITY
   anisoSetHalfVectorNorm();
 #endif
   int count = max(anisoSampleCount, 1);
