@@ -30,6 +30,7 @@
 #include <filesystem>
 #include <map>
 #include <memory>
+#include <numeric>
 #include <optional>
 #include <set>
 #include <sstream>
@@ -939,7 +940,8 @@ int runRender(const std::vector<std::string>& args, std::ostream& out, std::ostr
           << " frames";
     }
     out << (reached ? ", within the target " : ", not within the target ") << settings.errorTarget
-        << " (" << frames << " of at most " << settings.frames << " frames)\n";
+        << " (" << frames << " of at most " << settings.frames << " frames; " << result.frozenPixels
+        << " of " << result.coveredPixels << " covered pixels stopped before the view)\n";
   }
   if (a.has("--time"))
   {
@@ -948,9 +950,11 @@ int runRender(const std::vector<std::string>& args, std::ostream& out, std::ostr
         median > 0.0 ? double(result.coveredPixels) * samples / median : 0.0;
     out << "time: median frame " << formatMilliseconds(median) << " over " << frames
         << " frame(s) (first " << formatMilliseconds(result.frameSeconds.front())
-        << ", shaders and textures included); " << result.coveredPixels << " covered pixels x "
-        << samples << " samples: " << samplesPerSecond / 1e6 << " M samples/s on "
-        << result.renderer << "\n";
+        << ", shaders and textures included; after it "
+        << formatMilliseconds(
+               std::accumulate(result.frameSeconds.begin() + 1, result.frameSeconds.end(), 0.0))
+        << " in all); " << result.coveredPixels << " covered pixels x " << samples
+        << " samples: " << samplesPerSecond / 1e6 << " M samples/s on " << result.renderer << "\n";
   }
   if (reference)
   {

@@ -76,6 +76,9 @@ struct ScenePlan
   bool counters = false; // run the counter check after this scene
   // Progressive runs stop at the first checkpoint whose error is below this (0: never).
   double stopBelow = 0.0;
+  // Progressive runs refine as the window's still view under this error target (its pixels
+  // stop one by one; the runs still draw their frames): 0, plain accumulation.
+  double stillTarget = 0.0;
   // When not empty: the checkpoints of the progressive configurations other than auto's.
   std::vector<int> forcedFrames;
   // The still view as the window draws it by default (quality-mode error): auto's
@@ -430,10 +433,12 @@ public:
         }
         const std::size_t first = result_.rows.size();
         const bool forced = config.sampling != EnvironmentSampling::Auto;
+        session.setStillRefinement(plan.stillTarget);
         measureProgressive(session, materialFor(lobe, config), config, reference, base,
                            forced && !plan.forcedFrames.empty() ? plan.forcedFrames
                                                                 : plan.progressiveFrames,
                            plan.stopBelow);
+        session.setStillRefinement(0.0);
         if (config.sampling == EnvironmentSampling::Auto)
         {
           autoRows.push_back({config, first});
@@ -531,6 +536,8 @@ public:
         plan.progressiveFrames.push_back(f);
       }
       plan.stopBelow = 0.01;
+      // As the window refines its still view: its error target's pixels that stop.
+      plan.stillTarget = parameterSpec("error-target").defaultValue[0];
       plan.vtk = false;
       plan.reference = {96, 3e-3, kHdriEvaluations};
       log_ << "scene: the default scene at " << kDefaultWidth << "x" << kDefaultHeight << " under "

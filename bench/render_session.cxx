@@ -15,6 +15,7 @@
 #include <cstdlib>
 #include <ctime>
 #include <glm/geometric.hpp>
+#include <limits>
 #include <set>
 #include <vtkActor.h>
 #include <vtkCommand.h>
@@ -380,6 +381,11 @@ std::vector<FrameTime> RenderSession::renderToError(double errorTarget, int from
   // Later renders count frames only; the mean is kept (no reset when the target goes).
   pass->SetErrorTarget(0.0);
   return times;
+}
+
+void RenderSession::setStillRefinement(double errorTarget)
+{
+  impl_->pass->SetErrorTarget(errorTarget, std::numeric_limits<int>::max());
 }
 
 double RenderSession::estimatedError() const

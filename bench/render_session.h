@@ -114,6 +114,11 @@ public:
   // SetErrorTarget) is at most ERROR_TARGET from FROM_FRAMES frames on, or MOST frames; returns
   // their times. The estimate stays readable (estimatedError()) until the next render.
   std::vector<FrameTime> renderToError(double errorTarget, int fromFrames, int most);
+  // Later accumulations (render, renderMore) refine as the window's still view does under
+  // ERROR_TARGET (vtkAnisoAccumulationPass::SetErrorTarget: estimates at the checkpoints, pixels
+  // that stop, core/quality/error_estimate.h freezeConvergedPixels) but draw the frames asked
+  // for (the view is never stopped); 0: no target (the default).
+  void setStillRefinement(double errorTarget);
   double estimatedError() const;
   // The accumulated mean: RGBA float, linear radiance, alpha = coverage, row 0 at the top.
   Image read();

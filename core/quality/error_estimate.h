@@ -17,6 +17,8 @@
 // approximation) does not. GL-free and Qt-free.
 #include "core/image/image.h"
 
+#include <vector>
+
 namespace aniso
 {
 // Frame counts after which the mean is kept for a later estimate: 2^k and 3 x 2^k from 2 on
@@ -54,4 +56,43 @@ bool errorTargetReached(double estimate, double target);
 // is not finite. Throws aniso::Error "error estimate: reason" when the images differ in size or
 // lack four channels.
 double estimatedRelativeError(const Image& mean, const Image& half);
+
+// Pixels that stop refining before the view does (adaptive sampling per pixel): at a
+// checkpoint, a covered pixel whose squared difference |M_F - M_{F/2}|^2, averaged over its 3 x 3
+// neighbourhood, is below kFreezeShare x (kErrorStopShare x target)^2 x the mean signal
+// c |M|^2 of the covered pixels is frozen: the renderer draws it no more (the material discards
+// it, the accumulation keeps its mean) and its error stays what was estimated when it froze. Were
+// every pixel frozen at that level, the image's estimate would be sqrt(kFreezeShare) of the
+// stopping level. Only pixels fully covered, with their eight neighbours fully covered too, freeze:
+// an edge keeps refining its anti-aliasing. Frozen pixels are each the mean of their own frames,
+// so the image stays unbiased where the halves are independent (for a Gaussian mean the
+// difference of the halves is independent of the mean they average to).
+constexpr double kFreezeShare = 0.25;
+// The first checkpoint at which pixels may freeze: 4 frames (halves of 2), the neighbourhood's
+// average and whole tiles standing in for the few frames behind each pixel's difference.
+constexpr int kFreezeFromFrames = 4;
+// Pixels freeze in tiles of this side, aligned in GL's rows (from the bottom), all of a tile's
+// pixels that meet the level or none.
+constexpr int kFreezeTile = 4;
+
+struct FrozenPixels
+{
+  int width = 0;
+  int height = 0;
+  std::vector<unsigned char> mask; // width x height, row 0 at the top (as Image); 1 = frozen
+  std::vector<float> error;        // a frozen pixel's squared error, as estimated at freezing
+  int count = 0;                   // pixels frozen
+
+  bool frozen(int x, int y) const { return !mask.empty() && mask[std::size_t(y) * width + x] != 0; }
+};
+
+// Freezes (adds to FROZEN, sized to MEAN on first use) the pixels of MEAN and HALF (as
+// estimatedRelativeError's) that meet kFreezeShare for the error target TARGET; returns how many
+// froze now. Pixels frozen before stay frozen. Throws as estimatedRelativeError.
+int freezeConvergedPixels(const Image& mean, const Image& half, double target,
+                          FrozenPixels& frozen);
+
+// estimatedRelativeError with FROZEN's pixels counted by their errors at freezing (their means
+// no longer change, so M_F - M_{F/2} says nothing of them).
+double estimatedRelativeError(const Image& mean, const Image& half, const FrozenPixels& frozen);
 } // namespace aniso

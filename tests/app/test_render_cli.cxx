@@ -210,9 +210,20 @@ TEST_F(RenderCli, ConvergeStopsByItsOwnEstimate)
   EXPECT_GE(estimate, 0.0) << r.out;
   EXPECT_LE(estimate, 0.75 * 0.02) << r.out;
   EXPECT_NE(r.out.find(", within the target 0.02 (" + std::to_string(frames) +
-                       " of at most 256 frames)"),
+                       " of at most 256 frames; "),
             std::string::npos)
       << r.out;
+  // Pixels that stopped before the view, of the covered ones (the sphere fills most of 48x48).
+  const std::size_t stopped = r.out.find(" covered pixels stopped before the view)");
+  ASSERT_NE(stopped, std::string::npos) << r.out;
+  const std::size_t of = r.out.rfind(" of ", stopped);
+  const std::size_t semicolon = r.out.rfind("; ", of);
+  ASSERT_NE(semicolon, std::string::npos) << r.out;
+  const int frozen = std::stoi(r.out.substr(semicolon + 2, of - semicolon - 2));
+  const int covered = std::stoi(r.out.substr(of + 4, stopped - of - 4));
+  EXPECT_GT(covered, 1000) << r.out;
+  EXPECT_GE(frozen, 0) << r.out;
+  EXPECT_LT(frozen, covered) << r.out;
   EXPECT_NE(r.out.find(": " + std::to_string(frames) + " frame(s) x 16 samples"),
             std::string::npos)
       << r.out;
@@ -220,7 +231,8 @@ TEST_F(RenderCli, ConvergeStopsByItsOwnEstimate)
   const Outcome capped = run({"render", "--builtin", "sphere", "--size", "48x48", "--frames", "6",
                               "--converge", "0.0001", "-o", out});
   ASSERT_EQ(capped.exitCode, 0) << capped.err;
-  EXPECT_NE(capped.out.find("after 6 frames, not within the target 0.0001 (6 of at most 6 frames)"),
+  EXPECT_NE(capped.out.find("after 6 frames, not within the target 0.0001 (6 of at most 6 frames; "
+                            "0 of "),
             std::string::npos)
       << capped.out;
 

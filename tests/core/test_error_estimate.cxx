@@ -8,10 +8,16 @@
 //     half-covered one for half (a value worked out by hand);
 //   - a view stops at an estimate of 3/4 of its target, from 256 samples a pixel on (worked out
 //     by hand);
-//   - nothing covered or not finite gives a negative estimate; mismatched images are an error.
+//   - nothing covered or not finite gives a negative estimate; mismatched images are an error;
+//   - pixels freeze in whole tiles, aligned in GL's rows, where every pixel and its eight
+//     neighbours are fully covered and the neighbourhood's squared difference is below the
+//     level (a scene worked out by hand: a noisy patch, a half-covered column, the border); a
+//     frozen pixel keeps the error it froze with, and the estimate then counts it by that error,
+//     not by its unchanged mean (a value worked out by hand).
 #include "core/error.h"
 #include "core/quality/error_estimate.h"
 
+#include <algorithm>
 #include <cmath>
 #include <gtest/gtest.h>
 #include <random>
@@ -139,6 +145,173 @@ TEST(ErrorEstimate, NothingToEstimateAndMismatches)
   EXPECT_LT(estimatedRelativeError(mean, half), 0.0);
   EXPECT_THROW(estimatedRelativeError(mean, Image(2, 3, 4)), Error);
   EXPECT_THROW(estimatedRelativeError(Image(2, 2, 3), Image(2, 2, 3)), Error);
+}
+// A W x H scene of mean 1 (RGB) whose first half differs by D per channel everywhere but in a
+// noisy patch (differing by 0.5); column 13 is half covered.
+struct FreezeScene
+{
+  static constexpr int kW = 20;
+  static constexpr int kH = 14; // not a multiple of the tile: GL's rows and the image's differ
+  Image mean{kW, kH, 4};
+  Image half{kW, kH, 4};
+  explicit FreezeScene(float d)
+  {
+    for (int y = 0; y < kH; ++y)
+    {
+      for (int x = 0; x < kW; ++x)
+      {
+        const bool noisy = x >= 2 && x < 5 && y >= 2 && y < 4; // image rows (from the top)
+        for (int c = 0; c < 3; ++c)
+        {
+          mean.at(x, y, c) = 1.0f;
+          half.at(x, y, c) = 1.0f + (noisy ? 0.5f : d);
+        }
+        mean.at(x, y, 3) = x == 13 ? 0.5f : 1.0f;
+        half.at(x, y, 3) = mean.at(x, y, 3);
+      }
+    }
+  }
+};
+
+// The freezing level of FreezeScene for TARGET, per pixel (its squared difference over RGB).
+double freezeLevel(const FreezeScene& scene, double target)
+{
+  double signal = 0.0;
+  int covered = 0;
+  for (int y = 0; y < FreezeScene::kH; ++y)
+  {
+    for (int x = 0; x < FreezeScene::kW; ++x)
+    {
+      signal += 3.0 * scene.mean.at(x, y, 3);
+      ++covered;
+    }
+  }
+  const double level = kErrorStopShare * target;
+  return kFreezeShare * level * level * signal / covered;
+}
+
+TEST(ErrorEstimate, PixelsFreezeInTilesWhereTheirNeighbourhoodConverged)
+{
+  const double target = 0.01;
+  // A difference whose squared sum over RGB is half the level: below it.
+  FreezeScene scene(0.0f);
+  const float d = static_cast<float>(std::sqrt(0.5 * freezeLevel(scene, target) / 3.0));
+  scene = FreezeScene(d);
+  FrozenPixels frozen;
+  const int now = freezeConvergedPixels(scene.mean, scene.half, target, frozen);
+  ASSERT_EQ(frozen.width, FreezeScene::kW);
+  ASSERT_EQ(frozen.height, FreezeScene::kH);
+  // Which pixels may freeze: fully covered with their eight neighbours, not on the border, the
+  // neighbourhood away from the noisy patch (rows 2-3, columns 2-4) and the half-covered column.
+  const auto eligible = [](int x, int y)
+  {
+    if (x < 1 || y < 1 || x + 1 >= FreezeScene::kW || y + 1 >= FreezeScene::kH)
+    {
+      return false;
+    }
+    const bool nearNoise = x >= 1 && x <= 5 && y >= 1 && y <= 4;
+    const bool nearHalf = x >= 12 && x <= 14;
+    return !nearNoise && !nearHalf;
+  };
+  // Tiles in GL's rows: GL row g is image row H - 1 - g.
+  int expected = 0;
+  for (int ty = 0; ty * kFreezeTile < FreezeScene::kH; ++ty)
+  {
+    for (int tx = 0; tx * kFreezeTile < FreezeScene::kW; ++tx)
+    {
+      bool all = true;
+      for (int g = ty * kFreezeTile; g < std::min(FreezeScene::kH, (ty + 1) * kFreezeTile); ++g)
+      {
+        for (int x = tx * kFreezeTile; x < std::min(FreezeScene::kW, (tx + 1) * kFreezeTile); ++x)
+        {
+          all = all && eligible(x, FreezeScene::kH - 1 - g);
+        }
+      }
+      for (int g = ty * kFreezeTile; g < std::min(FreezeScene::kH, (ty + 1) * kFreezeTile); ++g)
+      {
+        for (int x = tx * kFreezeTile; x < std::min(FreezeScene::kW, (tx + 1) * kFreezeTile); ++x)
+        {
+          const int y = FreezeScene::kH - 1 - g;
+          EXPECT_EQ(frozen.frozen(x, y), all) << "pixel (" << x << ", " << y << ")";
+          if (all)
+          {
+            ++expected;
+            // Its error: the neighbourhood's mean squared difference, 3 d^2.
+            EXPECT_NEAR(frozen.error[std::size_t(y) * FreezeScene::kW + x], 3.0 * d * d,
+                        1e-3 * 3.0 * d * d); // d is read back from 1 + d in floats
+          }
+        }
+      }
+    }
+  }
+  EXPECT_GT(expected, 0);
+  EXPECT_EQ(now, expected);
+  EXPECT_EQ(frozen.count, expected);
+  // Frozen pixels stay frozen; nothing more freezes from the same means.
+  EXPECT_EQ(freezeConvergedPixels(scene.mean, scene.half, target, frozen), 0);
+  EXPECT_EQ(frozen.count, expected);
+
+  // Twice the level: nothing freezes.
+  FreezeScene above(static_cast<float>(std::sqrt(2.0 * freezeLevel(scene, target) / 3.0)));
+  FrozenPixels none;
+  EXPECT_EQ(freezeConvergedPixels(above.mean, above.half, target, none), 0);
+  EXPECT_EQ(none.count, 0);
+  // No target: nothing freezes.
+  EXPECT_EQ(freezeConvergedPixels(scene.mean, scene.half, 0.0, none), 0);
+}
+
+TEST(ErrorEstimate, FrozenPixelsCountByTheirErrorAtFreezing)
+{
+  const double target = 0.01;
+  FreezeScene scene(0.0f);
+  const float d = static_cast<float>(std::sqrt(0.5 * freezeLevel(scene, target) / 3.0));
+  scene = FreezeScene(d);
+  FrozenPixels frozen;
+  ASSERT_GT(freezeConvergedPixels(scene.mean, scene.half, target, frozen), 0);
+  // A later checkpoint: the frozen pixels' means no longer change (their half is their mean),
+  // the others still differ by d (the patch by 0.5).
+  Image later = scene.half;
+  for (int y = 0; y < FreezeScene::kH; ++y)
+  {
+    for (int x = 0; x < FreezeScene::kW; ++x)
+    {
+      if (frozen.frozen(x, y))
+      {
+        for (int c = 0; c < 3; ++c)
+        {
+          later.at(x, y, c) = scene.mean.at(x, y, c);
+        }
+      }
+    }
+  }
+  double error = 0.0;
+  double signal = 0.0;
+  for (int y = 0; y < FreezeScene::kH; ++y)
+  {
+    for (int x = 0; x < FreezeScene::kW; ++x)
+    {
+      const double c = scene.mean.at(x, y, 3);
+      signal += 3.0 * c;
+      if (frozen.frozen(x, y))
+      {
+        error += 3.0 * d * d; // as it froze
+      }
+      else
+      {
+        for (int k = 0; k < 3; ++k)
+        {
+          const double diff = scene.mean.at(x, y, k) - later.at(x, y, k);
+          error += c * diff * diff;
+        }
+      }
+    }
+  }
+  EXPECT_NEAR(estimatedRelativeError(scene.mean, later, frozen), std::sqrt(error / signal), 1e-9);
+  // Without the frozen pixels' errors the unchanged means would say less.
+  EXPECT_LT(estimatedRelativeError(scene.mean, later), std::sqrt(error / signal));
+  // Nothing frozen: the estimate as before.
+  EXPECT_DOUBLE_EQ(estimatedRelativeError(scene.mean, scene.half, FrozenPixels{}),
+                   estimatedRelativeError(scene.mean, scene.half));
 }
 } // namespace
 } // namespace aniso

@@ -313,6 +313,7 @@ RenderResult renderOffscreen(const RenderSettings& s)
   }
   result.estimatedError = pass->GetEstimatedError();
   result.estimatedErrorFrames = pass->GetEstimatedErrorFrames();
+  result.frozenPixels = pass->GetFrozenPixels().count;
   if (pass->GetAccumulatedFrames() != static_cast<int>(result.frameSeconds.size()))
   {
     throw errorAbout("render", "the OpenGL context could not render the frames");

@@ -114,6 +114,7 @@ struct RenderResult
   // frames it was taken after.
   double estimatedError = -1.0;
   int estimatedErrorFrames = 0;
+  int frozenPixels = 0; // with an error target: the pixels that stopped before the view did
   int64_t coveredPixels = 0;        // pixels with coverage > 0
   MaterialVariant variant;          // the shader variant of the first visible part
   bool mapsDropped = false;         // maps given but a visible mesh has no texture coordinates

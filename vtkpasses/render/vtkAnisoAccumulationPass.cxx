@@ -24,6 +24,7 @@
 #include <vtkInformation.h>
 #include <vtkInformationDoubleVectorKey.h>
 #include <vtkInformationIntegerKey.h>
+#include <vtkInformationObjectBaseKey.h>
 #include <vtkMapper.h>
 #include <vtkMatrix4x4.h>
 #include <vtkNew.h>
@@ -50,6 +51,7 @@ vtkStandardNewMacro(vtkAnisoAccumulationPass);
 vtkCxxSetObjectMacro(vtkAnisoAccumulationPass, DelegatePass, vtkRenderPass);
 vtkInformationKeyRestrictedMacro(vtkAnisoAccumulationPass, FRAME_SHIFT, DoubleVector, 2);
 vtkInformationKeyMacro(vtkAnisoAccumulationPass, FRAME_INDEX, Integer);
+vtkInformationKeyMacro(vtkAnisoAccumulationPass, FROZEN_PIXELS, ObjectBase);
 
 namespace
 {
@@ -302,6 +304,51 @@ void vtkAnisoAccumulationPass::Reset()
   this->EstimatedError = -1.0;
   this->EstimatedErrorFrames = 0;
   this->SnapshotFrames[0] = this->SnapshotFrames[1] = 0;
+  this->Frozen = aniso::FrozenPixels{};
+  this->FrozenMaskCurrent = true;
+}
+
+void vtkAnisoAccumulationPass::SetPixelFreezing(bool freezing)
+{
+  if (freezing != this->PixelFreezing)
+  {
+    this->PixelFreezing = freezing;
+    this->Reset();
+  }
+}
+
+vtkTextureObject* vtkAnisoAccumulationPass::FrozenMaskTexture(vtkOpenGLRenderWindow* window)
+{
+  if (this->Frozen.count == 0)
+  {
+    return nullptr;
+  }
+  if (!this->FrozenMaskCurrent || !this->FrozenMask || this->FrozenMask->GetHandle() == 0 ||
+      this->FrozenMask->GetContext() != window)
+  {
+    // GL's rows from the bottom; 255 reads 1 in the shaders.
+    const int w = this->Frozen.width;
+    const int h = this->Frozen.height;
+    std::vector<unsigned char> rows(std::size_t(w) * h);
+    for (int y = 0; y < h; ++y)
+    {
+      for (int x = 0; x < w; ++x)
+      {
+        rows[std::size_t(h - 1 - y) * w + x] = this->Frozen.frozen(x, y) ? 255 : 0;
+      }
+    }
+    if (!this->FrozenMask || this->FrozenMask->GetContext() != window)
+    {
+      this->FrozenMask = vtkSmartPointer<vtkTextureObject>::New();
+      this->FrozenMask->SetContext(window);
+    }
+    this->FrozenMask->SetMinificationFilter(vtkTextureObject::Nearest);
+    this->FrozenMask->SetMagnificationFilter(vtkTextureObject::Nearest);
+    this->FrozenMask->Create2DFromRaw(static_cast<unsigned int>(w), static_cast<unsigned int>(h), 1,
+                                      VTK_UNSIGNED_CHAR, rows.data());
+    this->FrozenMaskCurrent = true;
+  }
+  return this->FrozenMask;
 }
 
 vtkAnisoAccumulationPass::Signature
@@ -633,6 +680,11 @@ void vtkAnisoAccumulationPass::RenderFrame(const vtkRenderState* s, vtkOpenGLRen
   const double shiftValues[2] = {shift.x, shift.y};
   renderer->GetInformation()->Set(FRAME_SHIFT(), shiftValues, 2);
   renderer->GetInformation()->Set(FRAME_INDEX(), frame);
+  vtkTextureObject* frozen = this->FrozenMaskTexture(window);
+  if (frozen)
+  {
+    renderer->GetInformation()->Set(FROZEN_PIXELS(), frozen);
+  }
 
   ostate->PushFramebufferBindings();
   this->FrameBuffer->Bind();
@@ -718,6 +770,7 @@ void vtkAnisoAccumulationPass::RenderFrame(const vtkRenderState* s, vtkOpenGLRen
 
   renderer->GetInformation()->Remove(FRAME_SHIFT());
   renderer->GetInformation()->Remove(FRAME_INDEX());
+  renderer->GetInformation()->Remove(FROZEN_PIXELS());
   camera->SetWindowCenter(center[0], center[1]);
 }
 
@@ -763,9 +816,15 @@ void vtkAnisoAccumulationPass::Accumulate(vtkOpenGLRenderWindow* window, int wid
   const bool environment =
       this->Display.background == aniso::BackgroundMode::Environment && this->Lighting;
   vtkTextureObject* cube = environment ? this->Lighting->cubeTexture(window) : nullptr;
+  vtkTextureObject* frozen = this->FrozenMaskTexture(window);
+  std::string defines = cube ? "#define ANISO_BACKGROUND_ENVIRONMENT\n" : "";
+  if (frozen)
+  {
+    defines += "#define ANISO_FROZEN_PIXELS\n";
+  }
   vtkOpenGLQuadHelper* quad =
-      this->Quad(window, this->AccumulateQuad, aniso::shaders::kAccumulateFs,
-                 cube ? "#define ANISO_BACKGROUND_ENVIRONMENT\n" : "", this->AccumulateDefines);
+      this->Quad(window, this->AccumulateQuad, aniso::shaders::kAccumulateFs, defines,
+                 this->AccumulateDefines);
   if (!quad)
   {
     return;
@@ -818,7 +877,16 @@ void vtkAnisoAccumulationPass::Accumulate(vtkOpenGLRenderWindow* window, int wid
       aniso::setUniformMatrix(program, "clipToWorld", this->FrameClipToWorld);
       aniso::setUniformMatrix(program, "worldToEnvironment", this->Lighting->worldToEnvironment());
     }
+    if (frozen)
+    {
+      frozen->Activate();
+      program->SetUniformi("frozen", frozen->GetTextureUnit());
+    }
     quad->Render();
+    if (frozen)
+    {
+      frozen->Deactivate();
+    }
     if (cube)
     {
       cube->Deactivate();
@@ -931,8 +999,15 @@ void vtkAnisoAccumulationPass::EstimateError()
       if (2 * this->SnapshotFrames[k] == frames && this->Snapshots[k].width == mean.width &&
           this->Snapshots[k].height == mean.height)
       {
-        this->EstimatedError = aniso::estimatedRelativeError(mean, this->Snapshots[k]);
+        this->EstimatedError =
+            aniso::estimatedRelativeError(mean, this->Snapshots[k], this->Frozen);
         this->EstimatedErrorFrames = frames;
+        if (this->PixelFreezing && frames >= aniso::kFreezeFromFrames &&
+            aniso::freezeConvergedPixels(mean, this->Snapshots[k], this->ErrorTarget,
+                                         this->Frozen) > 0)
+        {
+          this->FrozenMaskCurrent = false;
+        }
       }
     }
   }
@@ -976,9 +1051,14 @@ void vtkAnisoAccumulationPass::ReleaseGraphicsResources(vtkWindow* w)
     }
   }
   this->PreviousShown = false;
+  if (this->FrozenMask)
+  {
+    this->FrozenMask->ReleaseGraphicsResources(w);
+    this->FrozenMask = nullptr;
+  }
   if (this->Lighting)
   {
     this->Lighting->releaseGraphicsResources(w);
   }
-  this->AccumulatedFrames = 0;
+  this->Reset();
 }

@@ -20,6 +20,13 @@
 // from 4 frames on its relative L2 error is estimated against the mean of its first half: the
 // view stops when the estimate is at or below 3/4 of the target (errorTargetReached), or at the
 // target frame count, whichever comes first. Without one, nothing is read back.
+// With an error target, pixels also stop one by one (SetPixelFreezing, on by default): from
+// kFreezeFromFrames on, each checkpoint freezes the fully covered pixels whose neighbourhood's
+// estimate is a small share of the target, in tiles (core/quality/error_estimate.h
+// freezeConvergedPixels). A frozen pixel's mean is kept as it is (the accumulation discards
+// it), and AnisoMaterial, which reads FROZEN_PIXELS, discards its fragments before shading them,
+// so later frames cost what the pixels still refining cost; the estimate counts a frozen pixel
+// by its error when it froze.
 //
 // A frame may be drawn in horizontal bands (SetFrameBands), one band per Render(): the surfaces
 // and the background are drawn and folded into the mean only within the band's rows (scissor),
@@ -33,6 +40,7 @@
 // of the size before, scaled (a view returning from a reduced resolution shows the reduced
 // picture there, not empty rows).
 #include "core/image/image.h"
+#include "core/quality/error_estimate.h"
 #include "vtkpasses/render/DisplaySettings.h"
 
 #include <cstdint>
@@ -41,10 +49,12 @@
 #include <string>
 #include <vector>
 #include <vtkRenderPass.h>
+#include <vtkSmartPointer.h>
 #include <vtkWeakPointer.h>
 
 class vtkInformationDoubleVectorKey;
 class vtkInformationIntegerKey;
+class vtkInformationObjectBaseKey;
 class vtkOpenGLFramebufferObject;
 class vtkOpenGLQuadHelper;
 class vtkOpenGLRenderWindow;
@@ -76,6 +86,10 @@ public:
   // Index k of that frame (0 for the first after a reset), set alongside FRAME_SHIFT: filtered
   // importance sampling blurs less as the mean gathers more samples.
   static vtkInformationIntegerKey* FRAME_INDEX();
+  // The pixels of this mean that no longer change (an R8 texture of the frame's size, GL rows, 1
+  // where frozen), set alongside FRAME_SHIFT while any pixel is frozen: a material may discard
+  // their fragments (ivec2(gl_FragCoord.xy) is the texel), and only then does freezing save time.
+  static vtkInformationObjectBaseKey* FROZEN_PIXELS();
 
   void SetDisplaySettings(const aniso::DisplaySettings& settings);
   const aniso::DisplaySettings& GetDisplaySettings() const { return this->Display; }
@@ -98,6 +112,12 @@ public:
   // negative (and 0 frames) before the first checkpoint or without an error target.
   double GetEstimatedError() const { return this->EstimatedError; }
   int GetEstimatedErrorFrames() const { return this->EstimatedErrorFrames; }
+  // Per-pixel stopping with an error target (the default: on); off, every pixel refines until
+  // the view stops. A change starts the mean over.
+  void SetPixelFreezing(bool freezing);
+  bool GetPixelFreezing() const { return this->PixelFreezing; }
+  // The pixels frozen in this mean (none without an error target or freezing).
+  const aniso::FrozenPixels& GetFrozenPixels() const { return this->Frozen; }
   // Sub-pixel camera jitter per frame (anti-aliasing, fractional coverage). Off: every frame
   // samples pixel centres, as a per-pixel reference does.
   void SetJitter(bool jitter);
@@ -190,6 +210,9 @@ private:
   // After a frame: keeps the mean at the error estimate's snapshots and estimates the error at
   // its checkpoints (EstimatedError).
   void EstimateError();
+  // The frozen pixels' mask in WINDOW's context, uploaded when it changed; null while none is
+  // frozen.
+  vtkTextureObject* FrozenMaskTexture(vtkOpenGLRenderWindow* window);
   // Shows rows [y0, height) of the mean (all of it with y0 = 0).
   void Present(vtkOpenGLRenderWindow* window, int x, int y, int width, int height, int y0);
   vtkOpenGLQuadHelper* Quad(vtkOpenGLRenderWindow* window,
@@ -206,6 +229,10 @@ private:
   int EstimatedErrorFrames = 0;
   aniso::Image Snapshots[2]; // the mean at earlier snapshots, with their frame counts
   int SnapshotFrames[2] = {0, 0};
+  bool PixelFreezing = true;
+  aniso::FrozenPixels Frozen;                   // of this mean
+  vtkSmartPointer<vtkTextureObject> FrozenMask; // Frozen's mask, as FROZEN_PIXELS gives it
+  bool FrozenMaskCurrent = true;                // the texture holds Frozen's mask
   bool Jitter = true;
   int AccumulatedFrames = 0;
   int PendingBands = 1;

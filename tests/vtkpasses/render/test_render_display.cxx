@@ -15,14 +15,21 @@
 //    row costs (worked out by hand), equal rows without them.
 //  - Moving slider values (n_u, F0, albedo, samples, exposure) keeps the compiled shader
 //    program; changing the specular method builds another one.
+//  - With an error target, pixels that froze at a checkpoint keep their mean to the bit while
+//    the others go on changing, the estimate then counts them (core/quality/error_estimate.h);
+//    and the material discards the fragments of the pixels FROZEN_PIXELS marks (a mask of the
+//    left half: the background there, the sphere on the right).
 #include "core/error.h"
+#include "core/quality/error_estimate.h"
 #include "tests/vtkpasses/render/render_test_helpers.h"
 #include "vtkpasses/mesh/BuiltinMeshes.h"
 #include "vtkpasses/render/AnisoMaterial.h"
 #include "vtkpasses/render/EnvironmentLighting.h"
 #include "vtkpasses/render/vtkAnisoAccumulationPass.h"
+#include "vtkpasses/render/vtkAnisoPolyDataMapper.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <glm/geometric.hpp>
@@ -32,6 +39,8 @@
 #include <vtkCamera.h>
 #include <vtkCommand.h>
 #include <vtkDataSetMapper.h>
+#include <vtkInformation.h>
+#include <vtkInformationObjectBaseKey.h>
 #include <vtkNew.h>
 #include <vtkOpenGLPolyDataMapper.h>
 #include <vtkOpenGLRenderWindow.h>
@@ -41,6 +50,7 @@
 #include <vtkRenderStepsPass.h>
 #include <vtkRenderWindow.h>
 #include <vtkShaderProgram.h>
+#include <vtkTextureObject.h>
 #include <vtkUnsignedCharArray.h>
 #include <vtk_glew.h>
 
@@ -683,6 +693,126 @@ TEST(RenderAccumulation, ASecondMapperSwappedInIsShadedAlike)
   EXPECT_THROW(swapped.material->addMapper(notOpenGl), Error);
   AnisoMaterial loose(swapped.lighting);
   EXPECT_THROW(loose.addMapper(other), Error);
+}
+TEST(RenderAccumulation, FrozenPixelsKeepTheirMean)
+{
+  ANISO_REQUIRE_DISPLAY();
+  Scene scene;
+  scene.window->SetSize(96, 96);
+  scene.renderer->ResetCamera();
+  scene.renderer->GetActiveCamera()->Zoom(1.6); // the sphere fills most of the view
+  scene.pass->SetTargetFrames(64);
+  // Lenient, and never stopping before 64 frames: most of the sphere freezes at 8 frames.
+  scene.pass->SetErrorTarget(0.05, 64);
+  MaterialSettings settings = scene.material->settings();
+  settings.samples = 16;
+  scene.material->setSettings(settings);
+  for (int i = 0; i < kFreezeFromFrames && scene.render() < kFreezeFromFrames; ++i)
+  {
+  }
+  ASSERT_EQ(scene.pass->GetAccumulatedFrames(), kFreezeFromFrames);
+  const FrozenPixels frozen = scene.pass->GetFrozenPixels();
+  ASSERT_GT(frozen.count, 0) << "nothing froze at " << kFreezeFromFrames << " frames";
+  const Image atFreezing = scene.pass->ReadAccumulation();
+  for (int i = 0; i < 12 && scene.render() < 12; ++i)
+  {
+  }
+  ASSERT_EQ(scene.pass->GetAccumulatedFrames(), 12);
+  const Image later = scene.pass->ReadAccumulation();
+  int kept = 0;
+  int changed = 0;
+  for (int y = 0; y < later.height; ++y)
+  {
+    for (int x = 0; x < later.width; ++x)
+    {
+      bool same = true;
+      for (int c = 0; c < 4; ++c)
+      {
+        same = same && later.at(x, y, c) == atFreezing.at(x, y, c);
+      }
+      if (frozen.frozen(x, y))
+      {
+        EXPECT_TRUE(same) << "frozen pixel (" << x << ", " << y << ") changed";
+        kept += same;
+      }
+      else if (later.at(x, y, 3) >= 1.0f)
+      {
+        changed += !same;
+      }
+    }
+  }
+  EXPECT_EQ(kept, frozen.count);
+  EXPECT_GT(changed, 0) << "the pixels still refining did not change";
+}
+
+TEST(RenderAccumulation, TheMaterialDiscardsFrozenPixels)
+{
+  ANISO_REQUIRE_DISPLAY();
+  // The material alone (no accumulation pass), drawn on black with the renderer carrying a mask
+  // of the left half of the window as the pass would.
+  std::shared_ptr<EnvironmentLighting> lighting =
+      std::make_shared<EnvironmentLighting>(std::make_shared<StudioEnvironment>(), 32);
+  vtkNew<vtkAnisoPolyDataMapper> mapper;
+  mapper->SetInputData(makeSphere(32, 16));
+  vtkNew<vtkActor> actor;
+  actor->SetMapper(mapper);
+  vtkNew<vtkOpenGLRenderer> renderer;
+  renderer->AddActor(actor);
+  renderer->SetBackground(0.0, 0.0, 0.0);
+  vtkNew<vtkRenderWindow> window;
+  window->SetOffScreenRendering(1);
+  window->SetMultiSamples(0);
+  window->SetSize(32, 32);
+  window->AddRenderer(renderer);
+  renderer->GetActiveCamera()->SetPosition(0.0, -5.0, 0.0);
+  renderer->GetActiveCamera()->SetViewUp(0.0, 0.0, 1.0);
+  renderer->ResetCamera();
+  renderer->GetActiveCamera()->Zoom(1.8);
+  MaterialSettings settings;
+  settings.samples = 2;
+  AnisoMaterial material(lighting, settings);
+  material.apply(actor, renderer);
+  window->Render();
+
+  std::vector<unsigned char> mask(32 * 32, 0);
+  for (int y = 0; y < 32; ++y)
+  {
+    for (int x = 0; x < 16; ++x)
+    {
+      mask[std::size_t(y) * 32 + x] = 255;
+    }
+  }
+  vtkNew<vtkTextureObject> texture;
+  texture->SetContext(vtkOpenGLRenderWindow::SafeDownCast(window));
+  texture->Create2DFromRaw(32, 32, 1, VTK_UNSIGNED_CHAR, mask.data());
+  const auto litColumns = [&]
+  {
+    window->Render();
+    vtkNew<vtkUnsignedCharArray> pixels;
+    window->GetPixelData(0, 0, 31, 31, 0, pixels);
+    std::array<int, 2> lit{0, 0}; // left half, right half
+    for (int y = 0; y < 32; ++y)
+    {
+      for (int x = 0; x < 32; ++x)
+      {
+        const vtkIdType i = 3 * (vtkIdType(y) * 32 + x);
+        const int sum = pixels->GetValue(i) + pixels->GetValue(i + 1) + pixels->GetValue(i + 2);
+        lit[x < 16 ? 0 : 1] += sum > 0;
+      }
+    }
+    return lit;
+  };
+  const std::array<int, 2> before = litColumns();
+  EXPECT_GT(before[0], 100);
+  EXPECT_GT(before[1], 100);
+  renderer->GetInformation()->Set(vtkAnisoAccumulationPass::FROZEN_PIXELS(), texture);
+  actor->Modified();
+  const std::array<int, 2> masked = litColumns();
+  EXPECT_EQ(masked[0], 0) << "fragments of frozen pixels were shaded";
+  EXPECT_EQ(masked[1], before[1]);
+  renderer->GetInformation()->Remove(vtkAnisoAccumulationPass::FROZEN_PIXELS());
+  actor->Modified();
+  EXPECT_EQ(litColumns()[0], before[0]);
 }
 } // namespace
 } // namespace aniso::test

@@ -9,6 +9,9 @@ in vec2 texCoord;
 uniform sampler2D frame;
 uniform sampler2D frameDepth;
 uniform vec3 backgroundRadiance;
+#ifdef ANISO_FROZEN_PIXELS
+uniform sampler2D frozen; // R8: 1 where the pixel's mean no longer changes (discarded: kept)
+#endif
 #ifdef ANISO_BACKGROUND_ENVIRONMENT
 uniform mat4 clipToWorld;
 uniform mat3 worldToEnvironment;
@@ -17,6 +20,12 @@ uniform samplerCube environment;
 void main()
 {
   ivec2 texel = ivec2(texCoord * vec2(textureSize(frame, 0)));
+#ifdef ANISO_FROZEN_PIXELS
+  if (texelFetch(frozen, texel, 0).r > 0.5)
+  {
+    discard;
+  }
+#endif
   if (texelFetch(frameDepth, texel, 0).r < 1.0)
   {
     gl_FragData[0] = texelFetch(frame, texel, 0);
