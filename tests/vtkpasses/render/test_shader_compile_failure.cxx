@@ -12,7 +12,7 @@
 //   - renderOffscreen with a material whose shader does not compile throws "material: its
 //     shader does not compile ..." instead of returning VTK's shading as the image.
 #include "core/error.h"
-#include "render_test_helpers.h"
+#include "tests/vtkpasses/render/render_test_helpers.h"
 #include "vtkpasses/render/OffscreenRenderer.h"
 #include "vtkpasses/render/ShaderHook.h"
 #include "vtkpasses/render/vtkAnisoPolyDataMapper.h"
