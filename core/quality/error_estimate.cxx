@@ -167,16 +167,16 @@ int freezeConvergedPixels(const Image& mean, const Image& half, double target, F
   };
   // Tiles of kFreezeTile x kFreezeTile pixels aligned in GL's rows (from the bottom), frozen
   // whole: a software rasteriser shades blocks of pixels together and skips a block only when
-  // every pixel of it is discarded.
-  std::vector<std::size_t> freezing;
-  std::vector<float> errors;
+  // every pixel of it is discarded. Tiles are disjoint and decided on SQUARED, which freezing
+  // does not change: each is applied at once.
+  int now = 0;
+  std::vector<std::pair<std::size_t, double>> tile;
   for (int ty = 0; ty * kFreezeTile < h; ++ty)
   {
     for (int tx = 0; tx * kFreezeTile < w; ++tx)
     {
       bool all = true;
-      bool any = false;
-      std::vector<std::pair<std::size_t, double>> tile;
+      tile.clear();
       for (int gy = ty * kFreezeTile; gy < std::min(h, (ty + 1) * kFreezeTile) && all; ++gy)
       {
         const int y = h - 1 - gy; // the image's row of GL row gy
@@ -193,27 +193,20 @@ int freezeConvergedPixels(const Image& mean, const Image& half, double target, F
             all = false;
             break;
           }
-          any = true;
           tile.emplace_back(i, average);
         }
       }
-      if (all && any)
+      if (!all)
       {
-        for (const auto& [i, average] : tile)
-        {
-          freezing.push_back(i);
-          errors.push_back(static_cast<float>(average));
-        }
+        continue;
+      }
+      for (const auto& [i, average] : tile)
+      {
+        frozen.mask[i] = 1;
+        frozen.error[i] = static_cast<float>(average);
+        ++now;
       }
     }
-  }
-  int now = 0;
-  // Decided on the squared differences before this checkpoint's freezing, then applied.
-  for (std::size_t k = 0; k < freezing.size(); ++k)
-  {
-    frozen.mask[freezing[k]] = 1;
-    frozen.error[freezing[k]] = errors[k];
-    ++now;
   }
   frozen.count += now;
   return now;

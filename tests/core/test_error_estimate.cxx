@@ -190,13 +190,17 @@ double freezeLevel(const FreezeScene& scene, double target)
   return kFreezeShare * level * level * signal / covered;
 }
 
+// The difference per channel whose squared sum over RGB is SHARE x the level for TARGET.
+float differenceAt(double share, double target)
+{
+  return static_cast<float>(std::sqrt(share * freezeLevel(FreezeScene(0.0f), target) / 3.0));
+}
+
 TEST(ErrorEstimate, PixelsFreezeInTilesWhereTheirNeighbourhoodConverged)
 {
   const double target = 0.01;
-  // A difference whose squared sum over RGB is half the level: below it.
-  FreezeScene scene(0.0f);
-  const float d = static_cast<float>(std::sqrt(0.5 * freezeLevel(scene, target) / 3.0));
-  scene = FreezeScene(d);
+  const float d = differenceAt(0.5, target); // below the level
+  const FreezeScene scene(d);
   FrozenPixels frozen;
   const int now = freezeConvergedPixels(scene.mean, scene.half, target, frozen);
   ASSERT_EQ(frozen.width, FreezeScene::kW);
@@ -252,7 +256,7 @@ TEST(ErrorEstimate, PixelsFreezeInTilesWhereTheirNeighbourhoodConverged)
   EXPECT_EQ(frozen.count, expected);
 
   // Twice the level: nothing freezes.
-  FreezeScene above(static_cast<float>(std::sqrt(2.0 * freezeLevel(scene, target) / 3.0)));
+  const FreezeScene above(differenceAt(2.0, target));
   FrozenPixels none;
   EXPECT_EQ(freezeConvergedPixels(above.mean, above.half, target, none), 0);
   EXPECT_EQ(none.count, 0);
@@ -263,9 +267,8 @@ TEST(ErrorEstimate, PixelsFreezeInTilesWhereTheirNeighbourhoodConverged)
 TEST(ErrorEstimate, FrozenPixelsCountByTheirErrorAtFreezing)
 {
   const double target = 0.01;
-  FreezeScene scene(0.0f);
-  const float d = static_cast<float>(std::sqrt(0.5 * freezeLevel(scene, target) / 3.0));
-  scene = FreezeScene(d);
+  const float d = differenceAt(0.5, target);
+  const FreezeScene scene(d);
   FrozenPixels frozen;
   ASSERT_GT(freezeConvergedPixels(scene.mean, scene.half, target, frozen), 0);
   // A later checkpoint: the frozen pixels' means no longer change (their half is their mean),

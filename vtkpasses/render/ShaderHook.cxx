@@ -88,11 +88,11 @@ void setShaderCompileFailure(vtkActor* actor, const std::string& message)
 
 // The first lines of a compiler's LOG, where the first error is (the rest repeats it, or
 // follows from it).
-std::string firstLines(const std::string& log, std::size_t lines = 3)
+std::string firstLines(const std::string& log, int lines = 3)
 {
   std::string text;
-  std::size_t start = 0;
-  for (std::size_t n = 0; n < lines && start < log.size(); ++n)
+  int kept = 0;
+  for (std::size_t start = 0; kept < lines && start < log.size();)
   {
     std::size_t end = log.find('\n', start);
     if (end == std::string::npos)
@@ -103,10 +103,7 @@ std::string firstLines(const std::string& log, std::size_t lines = 3)
     if (line.find_first_not_of(" \t\r") != std::string::npos)
     {
       text += (text.empty() ? "" : " ") + line;
-    }
-    else
-    {
-      --n;
+      ++kept;
     }
     start = end + 1;
   }

@@ -26,7 +26,6 @@
 #include "vtkpasses/render/AnisoMaterial.h"
 #include "vtkpasses/render/EnvironmentLighting.h"
 #include "vtkpasses/render/vtkAnisoAccumulationPass.h"
-#include "vtkpasses/render/vtkAnisoPolyDataMapper.h"
 
 #include <algorithm>
 #include <array>
@@ -750,30 +749,15 @@ TEST(RenderAccumulation, FrozenPixelsKeepTheirMean)
 TEST(RenderAccumulation, TheMaterialDiscardsFrozenPixels)
 {
   ANISO_REQUIRE_DISPLAY();
-  // The material alone (no accumulation pass), drawn on black with the renderer carrying a mask
-  // of the left half of the window as the pass would.
-  std::shared_ptr<EnvironmentLighting> lighting =
-      std::make_shared<EnvironmentLighting>(std::make_shared<StudioEnvironment>(), 32);
-  vtkNew<vtkAnisoPolyDataMapper> mapper;
-  mapper->SetInputData(makeSphere(32, 16));
-  vtkNew<vtkActor> actor;
-  actor->SetMapper(mapper);
-  vtkNew<vtkOpenGLRenderer> renderer;
-  renderer->AddActor(actor);
-  renderer->SetBackground(0.0, 0.0, 0.0);
-  vtkNew<vtkRenderWindow> window;
-  window->SetOffScreenRendering(1);
-  window->SetMultiSamples(0);
-  window->SetSize(32, 32);
-  window->AddRenderer(renderer);
-  renderer->GetActiveCamera()->SetPosition(0.0, -5.0, 0.0);
-  renderer->GetActiveCamera()->SetViewUp(0.0, 0.0, 1.0);
-  renderer->ResetCamera();
-  renderer->GetActiveCamera()->Zoom(1.8);
-  MaterialSettings settings;
-  settings.samples = 2;
-  AnisoMaterial material(lighting, settings);
-  material.apply(actor, renderer);
+  // The material alone (the scene without its accumulation pass), drawn on black with the
+  // renderer carrying a mask of the left half of the window as the pass would.
+  Scene scene;
+  scene.renderer->SetPass(nullptr);
+  scene.renderer->SetBackground(0.0, 0.0, 0.0);
+  scene.renderer->GetActiveCamera()->Zoom(1.8);
+  vtkRenderWindow* window = scene.window;
+  vtkRenderer* renderer = scene.renderer;
+  vtkActor* actor = scene.actor;
   window->Render();
 
   std::vector<unsigned char> mask(32 * 32, 0);
