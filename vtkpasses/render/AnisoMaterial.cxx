@@ -234,7 +234,6 @@ public:
   Texture occlusionTexture;
   Texture metallicTexture;
   Texture fieldColorTexture;
-  Texture notFrozenTexture; // bound to anisoFrozen while no pixel is frozen (never read)
   // The field's values on the drawn mesh (writeFieldValues): a point array of this material's
   // own name, so materials of other fields may draw the same surface.
   const std::string fieldArrayName = std::string(kFieldArray) + "#" + std::to_string(nextId());
@@ -393,6 +392,7 @@ public:
       hooked.attributes.emplace_back("anisoFieldMC", fieldArrayName);
     }
     hooked.uniform = "anisoSampleCount";
+    hooked.discardFrozenPixels = true;
     hook.install(hooked);
     installed = v;
     ++counters.shaderInstalls;
@@ -469,24 +469,13 @@ public:
     kind = "albedo map";
     refresh(albedoTexture, v.albedoMap ? settings.albedoMap : nullptr,
             [&] { return uploadMapTexture(window, asRgb(*settings.albedoMap), 3, "albedo map"); });
-    // A sampler the program declares is bound to a texture of its type, read or not (a unit
-    // holding another type would fail the draw).
-    static const auto none =
-        std::make_shared<const std::array<float, 1>>(std::array<float, 1>{0.0f});
-    kind = "frozen pixels";
-    refresh(notFrozenTexture, none,
-            [&]
-            {
-              return uploadFloatTexture(window, 1, 1, 1, none->data(), TextureFiltering::Nearest,
-                                        TextureWrap::Clamp, "frozen pixels");
-            });
   }
 
-  std::array<Texture*, 11> allTextures()
+  std::array<Texture*, 10> allTextures()
   {
-    return {&halfVectorTexture, &brdfTexture,       &normalTexture,   &quaternionTexture,
-            &tprTexture,        &heightTexture,     &albedoTexture,   &occlusionTexture,
-            &metallicTexture,   &fieldColorTexture, &notFrozenTexture};
+    return {&halfVectorTexture, &brdfTexture,      &normalTexture, &quaternionTexture,
+            &tprTexture,        &heightTexture,    &albedoTexture, &occlusionTexture,
+            &metallicTexture,   &fieldColorTexture};
   }
 
   // Uniforms and textures, every time the mapper draws: no value here changes the shader.
@@ -521,15 +510,6 @@ public:
     }
     const float frameShift[2] = {static_cast<float>(shift[0]), static_cast<float>(shift[1])};
     program->SetUniform2f("anisoFrameShift", frameShift);
-    // The pixels the pass froze: their fragments are discarded.
-    auto* frozen =
-        info && info->Has(vtkAnisoAccumulationPass::FROZEN_PIXELS())
-            ? vtkTextureObject::SafeDownCast(info->Get(vtkAnisoAccumulationPass::FROZEN_PIXELS()))
-            : nullptr;
-    hook.bindTexture(program, "anisoFrozen", frozen ? frozen : notFrozenTexture.object.Get());
-    const std::array<int, 2> frozenSize{frozen ? int(frozen->GetWidth()) : 0,
-                                        frozen ? int(frozen->GetHeight()) : 0};
-    program->SetUniform2i("anisoFrozenSize", frozenSize.data());
     const auto frame = static_cast<uint32_t>(std::max(frameIndex, 0));
     setSequenceUniforms(program, "anisoSequenceCount", "anisoSequenceBlock", frame,
                         static_cast<uint32_t>(std::max(settings.samples, 1)));

@@ -114,6 +114,7 @@ public:
     }
     code.attributes = meshAttributes("lit", {v.normals, v.tangents, v.tcoords});
     code.uniform = "litLightCount";
+    code.discardFrozenPixels = true;
     hook.install(code);
     installed = v;
   }

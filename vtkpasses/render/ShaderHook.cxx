@@ -1,10 +1,13 @@
 #include "vtkpasses/render/ShaderHook.h"
 
+#include "aniso_shaders.h"
 #include "core/error.h"
 #include "core/hash.h"
 #include "vtkpasses/render/LineStyle.h"
 #include "vtkpasses/render/MaterialShaderSource.h"
 #include "vtkpasses/render/RendererMatrices.h"
+#include "vtkpasses/render/TextureUpload.h"
+#include "vtkpasses/render/vtkAnisoAccumulationPass.h"
 #include "vtkpasses/render/vtkAnisoPolyDataMapper.h"
 
 #include <algorithm>
@@ -27,6 +30,7 @@
 #include <vtkRenderer.h>
 #include <vtkShaderProgram.h>
 #include <vtkShaderProperty.h>
+#include <vtkSmartPointer.h>
 #include <vtkTextureObject.h>
 #include <vtkWeakPointer.h>
 
@@ -130,6 +134,37 @@ uint64_t fingerprint(const ShaderCode& code)
   }
   return hash;
 }
+
+// CODE as installed: with the frozen pixels' declarations before its fragment declarations and
+// their discard before its shading, where it asks for them (ShaderCode::discardFrozenPixels).
+ShaderCode withFrozenPixels(ShaderCode code)
+{
+  if (!code.discardFrozenPixels)
+  {
+    return code;
+  }
+  bool declared = false;
+  bool discarded = false;
+  for (auto& [tag, text] : code.fragment)
+  {
+    if (tag == tags::kFragmentDec)
+    {
+      text = shaders::kFrozenPixelsDec + text;
+      declared = true;
+    }
+    else if (tag == tags::kFragmentImpl)
+    {
+      text = shaders::kFrozenPixelsImpl + text;
+      discarded = true;
+    }
+  }
+  if (!declared || !discarded)
+  {
+    throw errorAbout("material", "code that discards frozen pixels needs fragment declarations "
+                                 "and a fragment implementation");
+  }
+  return code;
+}
 } // namespace
 
 std::string shaderCompileFailure(vtkActor* actor)
@@ -207,6 +242,10 @@ public:
   // it again is refused (its program would fail again, at every draw).
   std::map<uint64_t, std::string> refused;
   std::vector<vtkWeakPointer<vtkTextureObject>> active; // activated for the current draw
+  // Bound as the frozen pixels' mask while the renderer carries none (freezes nothing: the
+  // shader reads it only inside anisoFrozenSize, (0, 0) then), and the window it lives in.
+  vtkSmartPointer<vtkTextureObject> notFrozen;
+  vtkWeakPointer<vtkOpenGLRenderWindow> notFrozenWindow;
 
   // The hook that drew last in each window and may hold texture units there. A window has few
   // units (Mesa's llvmpipe: 32 per stage), so a scene of many actors, each with its own lookup
@@ -365,6 +404,44 @@ public:
     vtkGenericWarningMacro(<< subject << ": " << message << "; drawn with VTK's own shading");
   }
 
+  void bind(vtkShaderProgram* program, const char* sampler, vtkTextureObject* texture)
+  {
+    texture->Activate();
+    program->SetUniformi(sampler, texture->GetTextureUnit());
+    if (std::find(active.begin(), active.end(), texture) == active.end())
+    {
+      active.emplace_back(texture);
+    }
+  }
+
+  // The mask of the pixels the accumulation pass froze, from the renderer's information, or the
+  // texture that freezes nothing.
+  void bindFrozenPixels(vtkShaderProgram* program, vtkOpenGLRenderWindow* window)
+  {
+    vtkInformation* info = renderer->GetInformation();
+    auto* frozen =
+        info && info->Has(vtkAnisoAccumulationPass::FROZEN_PIXELS())
+            ? vtkTextureObject::SafeDownCast(info->Get(vtkAnisoAccumulationPass::FROZEN_PIXELS()))
+            : nullptr;
+    vtkTextureObject* mask = frozen;
+    if (!mask)
+    {
+      // A texture of handle 0 was released with the window's context: upload it again.
+      if (!notFrozen || notFrozenWindow != window || notFrozen->GetHandle() == 0)
+      {
+        const float none = 0.0f;
+        notFrozen = uploadFloatTexture(window, 1, 1, 1, &none, TextureFiltering::Nearest,
+                                       TextureWrap::Clamp, "frozen pixels");
+        notFrozenWindow = window;
+      }
+      mask = notFrozen;
+    }
+    bind(program, "anisoFrozen", mask);
+    const int size[2] = {frozen ? int(frozen->GetWidth()) : 0,
+                         frozen ? int(frozen->GetHeight()) : 0};
+    program->SetUniform2i("anisoFrozenSize", size);
+  }
+
   void onUpdateShader(vtkObject*, unsigned long, void* data)
   {
     auto* program = static_cast<vtkShaderProgram*>(data);
@@ -381,6 +458,10 @@ public:
     takeTurn(window);
     try
     {
+      if (code.discardFrozenPixels)
+      {
+        bindFrozenPixels(program, window);
+      }
       onShader(program, window);
     }
     catch (const std::exception& e)
@@ -475,13 +556,7 @@ void ShaderHook::addMapper(vtkMapper* added)
 void ShaderHook::bindTexture(vtkShaderProgram* program, const char* sampler,
                              vtkTextureObject* texture)
 {
-  texture->Activate();
-  program->SetUniformi(sampler, texture->GetTextureUnit());
-  std::vector<vtkWeakPointer<vtkTextureObject>>& active = impl_->active;
-  if (std::find(active.begin(), active.end(), texture) == active.end())
-  {
-    active.emplace_back(texture);
-  }
+  impl_->bind(program, sampler, texture);
 }
 
 void ShaderHook::setTransforms(vtkShaderProgram* program, const std::string& prefix) const
@@ -502,13 +577,14 @@ void ShaderHook::setTransforms(vtkShaderProgram* program, const std::string& pre
   }
 }
 
-void ShaderHook::install(const ShaderCode& code)
+void ShaderHook::install(const ShaderCode& given)
 {
   Impl& d = *impl_;
   if (!d.actor || d.allMappers().empty())
   {
     return;
   }
+  const ShaderCode code = withFrozenPixels(given);
   d.uninstall();
   const auto refused = d.refused.find(fingerprint(code));
   if (refused != d.refused.end())

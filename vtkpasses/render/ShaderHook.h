@@ -42,6 +42,12 @@ struct ShaderCode
   // A uniform the code uses: a program without it (another pass's) is not the code's, and the
   // shader callback is not called for it.
   std::string uniform;
+  // The pixels the accumulation pass froze (vtkAnisoAccumulationPass::FROZEN_PIXELS on the
+  // renderer's information) are discarded before the code's shading: the hook puts
+  // shaders/frozen_pixels_dec.glsl before the code's kFragmentDec text and
+  // shaders/frozen_pixels_impl.glsl before its kFragmentImpl text (the code must have both), and
+  // binds the mask before each draw (a 1x1 texture that freezes nothing while there is none).
+  bool discardFrozenPixels = false;
 };
 
 // Which of the point arrays the materials read ("Normals", "Tangents", "TCoords":

@@ -72,6 +72,7 @@ public:
         {tags::kFragmentImpl, implementation}};
     code.attributes = meshAttributes("leadr", {true, true, true});
     code.uniform = "leadrClipToWorld";
+    code.discardFrozenPixels = true;
     hook.install(code);
   }
 

@@ -28,6 +28,8 @@ set(ANISO_RENDER_SHADERS
   shaders/accumulate_fs.glsl
   shaders/display_fs.glsl
   shaders/display_transform.glsl
+  shaders/frozen_pixels_dec.glsl
+  shaders/frozen_pixels_impl.glsl
   shaders/fullscreen_vs.glsl
   shaders/lit_fs_dec.glsl
   shaders/lit_fs_impl.glsl

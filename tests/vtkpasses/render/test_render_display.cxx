@@ -17,14 +17,21 @@
 //    program; changing the specular method builds another one.
 //  - With an error target, pixels that froze at a checkpoint keep their mean to the bit while
 //    the others go on changing, the estimate then counts them (core/quality/error_estimate.h);
-//    and the material discards the fragments of the pixels FROZEN_PIXELS marks (a mask of the
-//    left half: the background there, the sphere on the right).
+//    and every material (the anisotropic one, a lit model, LEADR, the microstructure) discards
+//    the fragments of the pixels FROZEN_PIXELS marks (a mask of the left half: the background
+//    there, the sphere on the right).
 #include "core/error.h"
+#include "core/image/image.h"
+#include "core/leadr/leadr.h"
+#include "core/lights/light.h"
+#include "core/parameters/parameters.h"
 #include "core/quality/error_estimate.h"
 #include "tests/vtkpasses/render/render_test_helpers.h"
 #include "vtkpasses/mesh/BuiltinMeshes.h"
 #include "vtkpasses/render/AnisoMaterial.h"
 #include "vtkpasses/render/EnvironmentLighting.h"
+#include "vtkpasses/render/LitModelMaterial.h"
+#include "vtkpasses/render/SurfaceModelSettings.h"
 #include "vtkpasses/render/vtkAnisoAccumulationPass.h"
 
 #include <algorithm>
@@ -34,6 +41,10 @@
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>
 #include <memory>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
 #include <vtkActor.h>
 #include <vtkCamera.h>
 #include <vtkCommand.h>
@@ -746,59 +757,84 @@ TEST(RenderAccumulation, FrozenPixelsKeepTheirMean)
   EXPECT_GT(changed, 0) << "the pixels still refining did not change";
 }
 
-TEST(RenderAccumulation, TheMaterialDiscardsFrozenPixels)
+TEST(RenderAccumulation, EveryMaterialDiscardsFrozenPixels)
 {
   ANISO_REQUIRE_DISPLAY();
-  // The material alone (the scene without its accumulation pass), drawn on black with the
-  // renderer carrying a mask of the left half of the window as the pass would.
-  Scene scene;
-  scene.renderer->SetPass(nullptr);
-  scene.renderer->SetBackground(0.0, 0.0, 0.0);
-  scene.renderer->GetActiveCamera()->Zoom(1.8);
-  vtkRenderWindow* window = scene.window;
-  vtkRenderer* renderer = scene.renderer;
-  vtkActor* actor = scene.actor;
-  window->Render();
-
-  std::vector<unsigned char> mask(32 * 32, 0);
-  for (int y = 0; y < 32; ++y)
+  // Each shading model alone (the scene without its accumulation pass), drawn on black with the
+  // renderer carrying a mask of the left half of the window as the pass would: the anisotropic
+  // material (the scene's own), a lit model, LEADR and the microstructure.
+  LitModelSettings lit;
+  lit.model = LitModel::Ward;
+  lit.lights = {parseLight("dir:0,1,0.2:1,1,1"), parseLight("dir:0,-1,0.2:1,1,1")};
+  const ParameterSet defaults;
+  const DeclaredValues values = [&defaults](std::string_view key) -> const ParameterValue&
+  { return defaults.value(key); };
+  SurfaceModelInputs inputs;
+  inputs.lights = [&lit] { return lit.lights; };
+  inputs.tprMap = []() -> std::shared_ptr<const Image> { return nullptr; };
+  inputs.leadrMoments = []
+  { return std::make_shared<const LeadrMips>(bakeLeadrFromHeight(builtinLeadrRelief(), 1.0)); };
+  const std::vector<std::pair<std::string, MaterialInstaller>> models = {
+      {"as-env", nullptr},
+      {"ward", litModelInstaller(lit)},
+      {"leadr", surfaceModelInstaller("leadr", values, inputs)},
+      {"microstructure", surfaceModelInstaller("microstructure", values, inputs)}};
+  for (const auto& [name, install] : models)
   {
-    for (int x = 0; x < 16; ++x)
+    SCOPED_TRACE(name);
+    Scene scene;
+    scene.renderer->SetPass(nullptr);
+    scene.renderer->SetBackground(0.0, 0.0, 0.0);
+    scene.renderer->GetActiveCamera()->Zoom(1.8);
+    std::shared_ptr<void> material;
+    if (install)
     {
-      mask[std::size_t(y) * 32 + x] = 255;
+      scene.material.reset();
+      material = install(scene.actor, scene.renderer, scene.lighting);
     }
-  }
-  vtkNew<vtkTextureObject> texture;
-  texture->SetContext(vtkOpenGLRenderWindow::SafeDownCast(window));
-  texture->Create2DFromRaw(32, 32, 1, VTK_UNSIGNED_CHAR, mask.data());
-  const auto litColumns = [&]
-  {
+    vtkRenderWindow* window = scene.window;
     window->Render();
-    vtkNew<vtkUnsignedCharArray> pixels;
-    window->GetPixelData(0, 0, 31, 31, 0, pixels);
-    std::array<int, 2> lit{0, 0}; // left half, right half
+
+    std::vector<unsigned char> mask(32 * 32, 0);
     for (int y = 0; y < 32; ++y)
     {
-      for (int x = 0; x < 32; ++x)
+      for (int x = 0; x < 16; ++x)
       {
-        const vtkIdType i = 3 * (vtkIdType(y) * 32 + x);
-        const int sum = pixels->GetValue(i) + pixels->GetValue(i + 1) + pixels->GetValue(i + 2);
-        lit[x < 16 ? 0 : 1] += sum > 0;
+        mask[std::size_t(y) * 32 + x] = 255;
       }
     }
-    return lit;
-  };
-  const std::array<int, 2> before = litColumns();
-  EXPECT_GT(before[0], 100);
-  EXPECT_GT(before[1], 100);
-  renderer->GetInformation()->Set(vtkAnisoAccumulationPass::FROZEN_PIXELS(), texture);
-  actor->Modified();
-  const std::array<int, 2> masked = litColumns();
-  EXPECT_EQ(masked[0], 0) << "fragments of frozen pixels were shaded";
-  EXPECT_EQ(masked[1], before[1]);
-  renderer->GetInformation()->Remove(vtkAnisoAccumulationPass::FROZEN_PIXELS());
-  actor->Modified();
-  EXPECT_EQ(litColumns()[0], before[0]);
+    vtkNew<vtkTextureObject> texture;
+    texture->SetContext(vtkOpenGLRenderWindow::SafeDownCast(window));
+    texture->Create2DFromRaw(32, 32, 1, VTK_UNSIGNED_CHAR, mask.data());
+    const auto litColumns = [&]
+    {
+      window->Render();
+      vtkNew<vtkUnsignedCharArray> pixels;
+      window->GetPixelData(0, 0, 31, 31, 0, pixels);
+      std::array<int, 2> shaded{0, 0}; // left half, right half
+      for (int y = 0; y < 32; ++y)
+      {
+        for (int x = 0; x < 32; ++x)
+        {
+          const vtkIdType i = 3 * (vtkIdType(y) * 32 + x);
+          const int sum = pixels->GetValue(i) + pixels->GetValue(i + 1) + pixels->GetValue(i + 2);
+          shaded[x < 16 ? 0 : 1] += sum > 0;
+        }
+      }
+      return shaded;
+    };
+    const std::array<int, 2> before = litColumns();
+    EXPECT_GT(before[0], 100);
+    EXPECT_GT(before[1], 100);
+    scene.renderer->GetInformation()->Set(vtkAnisoAccumulationPass::FROZEN_PIXELS(), texture);
+    scene.actor->Modified();
+    const std::array<int, 2> masked = litColumns();
+    EXPECT_EQ(masked[0], 0) << "fragments of frozen pixels were shaded";
+    EXPECT_EQ(masked[1], before[1]);
+    scene.renderer->GetInformation()->Remove(vtkAnisoAccumulationPass::FROZEN_PIXELS());
+    scene.actor->Modified();
+    EXPECT_EQ(litColumns()[0], before[0]);
+  }
 }
 } // namespace
 } // namespace aniso::test

@@ -48,10 +48,6 @@ uniform float anisoLodAnisotropy; // 0.25 log2((n_max + 1) / (n_min + 1)), see a
 uniform float anisoLodBias;       // added to every filtered level
 uniform float anisoPixelDecorrelation; // 1: each pixel shifts its sample set by a hash, 0: not
 uniform vec3 anisoIrradianceSH[9]; // SH9 radiance coefficients times the cosine-lobe factors
-// The pixels whose mean no longer changes (vtkAnisoAccumulationPass::FROZEN_PIXELS: R8, 1 where
-// frozen, ivec2(gl_FragCoord.xy) the texel); anisoFrozenSize (0, 0) when none is.
-uniform sampler2D anisoFrozen;
-uniform ivec2 anisoFrozenSize;
 
 #ifdef ANISO_HALF_VECTORS_FROM_LUT
 uniform sampler2D anisoHalfVectorLut; // RGBA32F: h in tangent space, log2 p_h

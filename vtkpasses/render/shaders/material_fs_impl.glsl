@@ -1,11 +1,5 @@
-  // Anisotropic material: replaces VTK's lighting result with the image-based shading.
-  // A frozen pixel keeps its mean: nothing to shade (a discard before any work; llvmpipe then
-  // skips the rest of the shader for a block of such pixels).
-  if (all(lessThan(ivec2(gl_FragCoord.xy), anisoFrozenSize)) &&
-      texelFetch(anisoFrozen, ivec2(gl_FragCoord.xy), 0).r > 0.5)
-  {
-    discard;
-  }
+  // Anisotropic material: replaces VTK's lighting result with the image-based shading (frozen
+  // pixels discarded before it: frozen_pixels_impl.glsl).
   {
     // The view ray of this fragment from its own clip coordinates: exact for perspective and
     // parallel projections alike.
