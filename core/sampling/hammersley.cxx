@@ -2,9 +2,12 @@
 
 #include "core/error.h"
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <string>
+#include <utility>
 
 namespace aniso
 {
@@ -90,17 +93,110 @@ uint32_t log2Block(uint32_t count)
   }
   return log2;
 }
+
+bool powerOfTwo(uint32_t count)
+{
+  return count != 0 && (count & (count - 1)) == 0;
+}
+
+// Whether the d x d submatrix of the generator (rows [0, d): the fraction's digits 1 to d;
+// columns [m - d, m): bits m - d to m - 1 of the index) is invertible over GF(2). Its rows as
+// bit masks, eliminated.
+bool invertible(const SequenceColumns& columns, uint32_t m, uint32_t d)
+{
+  std::array<uint32_t, 32> rows{};
+  for (uint32_t r = 0; r < d; ++r)
+  {
+    for (uint32_t c = m - d; c < m; ++c)
+    {
+      if (columns[c] & (0x80000000u >> r))
+      {
+        rows[r] |= 1u << (c - (m - d));
+      }
+    }
+  }
+  for (uint32_t r = 0; r < d; ++r)
+  {
+    // A pivot for the lowest bit left in row r's place: a later row that has it comes up.
+    uint32_t pivot = r;
+    while (pivot < d && rows[pivot] == 0)
+    {
+      ++pivot;
+    }
+    if (pivot == d)
+    {
+      return false;
+    }
+    std::swap(rows[r], rows[pivot]);
+    const uint32_t low = rows[r] & (~rows[r] + 1u);
+    for (uint32_t k = 0; k < d; ++k)
+    {
+      if (k != r && (rows[k] & low))
+      {
+        rows[k] ^= rows[r];
+      }
+    }
+  }
+  return true;
+}
+
+SequenceColumns buildSequenceColumns(uint32_t log2Count)
+{
+  SequenceColumns columns{};
+  const uint32_t m0 = std::max(log2Count, 1u);
+  // The corner: index bit c to digit m0 - c, so that point i < 2^m0 has x = i / 2^m0.
+  for (uint32_t c = 0; c < m0; ++c)
+  {
+    columns[c] = 0x80000000u >> (m0 - 1 - c);
+  }
+  // Column m - 1 enters the nets of 2^m points: its digits 1 to m one by one, each making the
+  // submatrix of the rows so far and the last columns invertible (its cofactor is the submatrix
+  // of the net before, invertible, so exactly one choice does); deeper digits 0.
+  for (uint32_t m = m0 + 1; m <= 32; ++m)
+  {
+    for (uint32_t d = 1; d <= m; ++d)
+    {
+      if (!invertible(columns, m, d))
+      {
+        columns[m - 1] ^= 0x80000000u >> (d - 1);
+      }
+    }
+  }
+  return columns;
+}
 } // namespace
+
+const SequenceColumns& sequenceColumns(uint32_t count)
+{
+  static const std::array<SequenceColumns, 5> tables{
+      buildSequenceColumns(0), buildSequenceColumns(1), buildSequenceColumns(2),
+      buildSequenceColumns(3), buildSequenceColumns(4)};
+  static_assert(kMaxSequenceCount == 16, "a table per power of two up to the largest count");
+  return powerOfTwo(count) && count <= kMaxSequenceCount ? tables[log2Block(count)] : tables[0];
+}
+
+uint32_t sequenceBits(uint32_t index, const SequenceColumns& columns)
+{
+  uint32_t bits = 0;
+  for (uint32_t c = 0; index != 0; ++c, index >>= 1)
+  {
+    if (index & 1u)
+    {
+      bits ^= columns[c];
+    }
+  }
+  return bits;
+}
 
 SequenceBlock sequenceBlock(uint32_t frame, uint32_t count)
 {
   const uint32_t index = frame << log2Block(count);
-  return {sobol2Bits(index), reverseBits(index)};
+  return {sequenceBits(index, sequenceColumns(count)), reverseBits(index)};
 }
 
 bool takesSequence(uint32_t frame, uint32_t count)
 {
-  return frame >= 2 && count >= 2 && count <= kMaxSequenceCount;
+  return count >= 2 && count <= kMaxSequenceCount && (frame >= 2 || powerOfTwo(count));
 }
 
 glm::dvec2 progressivePoint(uint32_t frame, uint32_t i, uint32_t count)
@@ -116,7 +212,8 @@ glm::dvec2 progressivePoint(uint32_t frame, uint32_t i, uint32_t count)
                                               std::to_string(count));
   }
   const uint32_t index = (frame << log2Block(count)) | i;
-  return {static_cast<double>(sobol2Bits(index)) * 0x1.0p-32, radicalInverse2(index)};
+  return {static_cast<double>(sequenceBits(index, sequenceColumns(count))) * 0x1.0p-32,
+          radicalInverse2(index)};
 }
 
 glm::dvec2 frameShift(uint32_t frame)

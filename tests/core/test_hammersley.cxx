@@ -268,11 +268,51 @@ TEST(ProgressivePoints, SobolSecondDimension)
   }
 }
 
-// Frames 0 and 1 are the Hammersley set, rotated by frameShift(1) in frame 1 (frames of one
-// point or of more than 16: all rotated by frameShift); each later frame of 2^m points, from 2
-// to 16, is a (0, m, 2)-net, and the frames [2^a, 2^(a+1)), a >= 1, together are one
-// (0, m + a, 2)-net: the frames stratify as one set. Rotating one set anew each frame
-// (frameShift) does not: eight rotated copies of a 16-point set are not a 128-point net.
+// The sequences' generators: Sobol's second dimension for counts that are not a power of two
+// and for 2 (its corner is the Hammersley set's already); for 4, 8 and 16 points a frame the
+// first 2^m points are a (0, m, 2)-net for every m from log2(count) on (up to 2^13 points
+// checked), and the first block of count points is the Hammersley set exactly.
+TEST(ProgressivePoints, SequencesStartWithTheHammersleySetAndStayNets)
+{
+  for (uint32_t count : {1u, 2u, 3u, 12u, 24u})
+  {
+    const aniso::SequenceColumns& columns = aniso::sequenceColumns(count);
+    for (uint32_t c = 0; c < 32; ++c)
+    {
+      EXPECT_EQ(columns[c], aniso::sobol2Bits(1u << c)) << count << " points, column " << c;
+    }
+  }
+  for (uint32_t count : {4u, 8u, 16u})
+  {
+    const aniso::SequenceColumns& columns = aniso::sequenceColumns(count);
+    const int m0 = static_cast<int>(std::lround(std::log2(count)));
+    for (uint32_t i = 0; i < count; ++i)
+    {
+      EXPECT_EQ(double(aniso::sequenceBits(i, columns)) * 0x1.0p-32, aniso::hammersley(i, count).x);
+    }
+    for (int m = m0; m <= 13; ++m)
+    {
+      std::vector<glm::dvec2> points;
+      for (uint32_t j = 0; j < (1u << m); ++j)
+      {
+        points.push_back(
+            {double(aniso::sequenceBits(j, columns)) * 0x1.0p-32, aniso::radicalInverse2(j)});
+      }
+      EXPECT_TRUE(isZeroNet(points, m)) << count << " points a frame, the first 2^" << m;
+    }
+    // Below the corner the first points are no net (the Hammersley set's x = i / count).
+    EXPECT_FALSE(isZeroNet(
+        {{0.0, 0.0},
+         {double(aniso::sequenceBits(1, columns)) * 0x1.0p-32, aniso::radicalInverse2(1)}},
+        1));
+  }
+}
+
+// Each frame of 2^m points, from 2 to 16, is a (0, m, 2)-net from frame 0 on, frame 0 the
+// Hammersley set, and the frames [0, 2^a) and [2^a, 2^(a+1)) together are each one
+// (0, m + a, 2)-net: the frames stratify as one set (frames of one point or of more than 16:
+// all rotated by frameShift). Rotating one set anew each frame (frameShift) does not: eight
+// rotated copies of a 16-point set are not a 128-point net.
 TEST(ProgressivePoints, FramesFormNets)
 {
   for (uint32_t frame = 0; frame < 100; ++frame)
@@ -289,11 +329,9 @@ TEST(ProgressivePoints, FramesFormNets)
     for (uint32_t i = 0; i < count; ++i)
     {
       EXPECT_EQ(aniso::progressivePoint(0, i, count), aniso::hammersley(i, count));
-      EXPECT_EQ(aniso::progressivePoint(1, i, count),
-                aniso::cranleyPatterson(aniso::hammersley(i, count), aniso::frameShift(1)));
     }
     const int m = static_cast<int>(std::lround(std::log2(count)));
-    for (uint32_t frame = 2; frame < 40; ++frame)
+    for (uint32_t frame = 0; frame < 40; ++frame)
     {
       std::vector<glm::dvec2> points;
       for (uint32_t i = 0; i < count; ++i)
@@ -302,17 +340,21 @@ TEST(ProgressivePoints, FramesFormNets)
       }
       EXPECT_TRUE(isZeroNet(points, m)) << count << " points, frame " << frame;
     }
-    for (int a = 1; a <= 5; ++a)
+    for (int a = 0; a <= 5; ++a)
     {
-      std::vector<glm::dvec2> points;
-      for (uint32_t frame = 1u << a; frame < (2u << a); ++frame)
+      for (const uint32_t first : {0u, 1u << a})
       {
-        for (uint32_t i = 0; i < count; ++i)
+        std::vector<glm::dvec2> points;
+        for (uint32_t frame = first; frame < first + (1u << a); ++frame)
         {
-          points.push_back(aniso::progressivePoint(frame, i, count));
+          for (uint32_t i = 0; i < count; ++i)
+          {
+            points.push_back(aniso::progressivePoint(frame, i, count));
+          }
         }
+        EXPECT_TRUE(isZeroNet(points, m + a))
+            << count << " points, " << (1 << a) << " frames from " << first;
       }
-      EXPECT_TRUE(isZeroNet(points, m + a)) << count << " points, frames from " << (1 << a);
     }
   }
   std::vector<glm::dvec2> shifted;
@@ -326,11 +368,12 @@ TEST(ProgressivePoints, FramesFormNets)
   }
   EXPECT_FALSE(isZeroNet(shifted, 7));
   // Frame 2's 16 points are the sequence's indices 32 to 47.
+  const aniso::SequenceColumns& columns = aniso::sequenceColumns(16);
   for (uint32_t i = 0; i < 16; ++i)
   {
-    EXPECT_EQ(
-        aniso::progressivePoint(2, i, 16),
-        glm::dvec2(double(aniso::sobol2Bits(32 + i)) * 0x1.0p-32, aniso::radicalInverse2(32 + i)));
+    EXPECT_EQ(aniso::progressivePoint(2, i, 16),
+              glm::dvec2(double(aniso::sequenceBits(32 + i, columns)) * 0x1.0p-32,
+                         aniso::radicalInverse2(32 + i)));
   }
 }
 
@@ -360,17 +403,23 @@ TEST(ProgressivePoints, AnyCount)
 }
 
 // The shader's way to the sequence's points: point k B + i is point i XOR the block's first
-// point, in both coordinates, for every count the shader takes the sequence for.
+// point, in both coordinates, for every count and frame the shader takes the sequence for
+// (every frame for a power of two, from frame 2 on for the other counts).
 TEST(ProgressivePoints, BlockXorPointGivesThePoint)
 {
   for (uint32_t count = 2; count <= aniso::kMaxSequenceCount; ++count)
   {
-    for (uint32_t frame = 2; frame < 70; ++frame)
+    for (uint32_t frame = 0; frame < 70; ++frame)
     {
+      if (!aniso::takesSequence(frame, count))
+      {
+        EXPECT_LT(frame, 2u) << count << " points";
+        continue;
+      }
       const aniso::SequenceBlock block = aniso::sequenceBlock(frame, count);
       for (uint32_t i = 0; i < count; ++i)
       {
-        const uint32_t x = block.x ^ aniso::sobol2Bits(i);
+        const uint32_t x = block.x ^ aniso::sequenceBits(i, aniso::sequenceColumns(count));
         const uint32_t y = block.y ^ static_cast<uint32_t>(aniso::radicalInverse2(i) * 0x1.0p32);
         EXPECT_EQ(aniso::progressivePoint(frame, i, count),
                   glm::dvec2(double(x) * 0x1.0p-32, double(y) * 0x1.0p-32))

@@ -62,14 +62,23 @@ constexpr double kSourceDefensive = 0.1;
 // Which points a set of COUNT samples takes in progressive frame FRAME: COUNT_NAME is the count
 // when the set is a block of the sequence (0: the rotated Hammersley set), BLOCK_NAME the bits
 // of the block's first point (core/sampling/hammersley.h sequenceBlock).
-void setSequenceUniforms(vtkShaderProgram* program, const char* countName, const char* blockName,
+void setSequenceUniforms(vtkShaderProgram* program, const std::string& countName,
+                         const std::string& blockName, const std::string& columnsName,
                          uint32_t frame, uint32_t count)
 {
   const bool sequence = takesSequence(frame, count);
   const SequenceBlock block = sequence ? sequenceBlock(frame, count) : SequenceBlock{};
   const int bits[2] = {static_cast<int>(block.x), static_cast<int>(block.y)};
-  program->SetUniform2i(blockName, bits);
-  program->SetUniformi(countName, sequence ? static_cast<int>(count) : 0);
+  program->SetUniform2i(blockName.c_str(), bits);
+  const SequenceColumns& columns = sequenceColumns(count);
+  // (vtkShaderProgram has no ivec4 setter; the program is bound while the shader callback runs.)
+  const int location = program->FindUniform(columnsName.c_str());
+  if (location >= 0)
+  {
+    glUniform4i(location, static_cast<int>(columns[0]), static_cast<int>(columns[1]),
+                static_cast<int>(columns[2]), static_cast<int>(columns[3]));
+  }
+  program->SetUniformi(countName.c_str(), sequence ? static_cast<int>(count) : 0);
 }
 
 void setVector(vtkShaderProgram* program, const char* name, const glm::dvec3& v)
@@ -511,8 +520,8 @@ public:
     const float frameShift[2] = {static_cast<float>(shift[0]), static_cast<float>(shift[1])};
     program->SetUniform2f("anisoFrameShift", frameShift);
     const auto frame = static_cast<uint32_t>(std::max(frameIndex, 0));
-    setSequenceUniforms(program, "anisoSequenceCount", "anisoSequenceBlock", frame,
-                        static_cast<uint32_t>(std::max(settings.samples, 1)));
+    setSequenceUniforms(program, "anisoSequenceCount", "anisoSequenceBlock", "anisoSequenceColumns",
+                        frame, static_cast<uint32_t>(std::max(settings.samples, 1)));
 
     // The environment: cube with seamless filtering across faces (VTK enables it only for
     // its own image-based lighting).
@@ -566,12 +575,11 @@ public:
       // Their own blocks of the sequence, one per count, so that frames stratify them too.
       for (int k = 0; k <= 2; ++k)
       {
-        const SequenceBlock block = sequenceBlock(frame, static_cast<uint32_t>(sourceCount << k));
-        const int bits[2] = {static_cast<int>(block.x), static_cast<int>(block.y)};
-        const std::string name = "anisoSourceSequenceBlocks[" + std::to_string(k) + "]";
-        program->SetUniform2i(name.c_str(), bits);
+        const std::string index = "[" + std::to_string(k) + "]";
+        setSequenceUniforms(
+            program, "anisoSourceSequenceCounts" + index, "anisoSourceSequenceBlocks" + index,
+            "anisoSourceSequenceColumns" + index, frame, static_cast<uint32_t>(sourceCount << k));
       }
-      program->SetUniformi("anisoSourceSequence", takesSequence(frame, 2) ? 1 : 0);
     }
     program->SetUniform3fv(
         "anisoIrradianceSH", 9,

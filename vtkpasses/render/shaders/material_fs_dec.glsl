@@ -29,12 +29,14 @@ uniform vec3 anisoF0;                // Schlick reflectance at normal incidence,
 uniform vec3 anisoAlbedo;            // Lambert albedo, linear RGB
 uniform int anisoSampleCount;        // N, importance samples per fragment and frame
 uniform vec2 anisoFrameShift;        // this frame's rotation of the Hammersley set
-// From frame 2 on, sets of 2 to 16 (kMaxSequenceCount) points are a block of a (0,2)-sequence
-// (core/sampling/hammersley.h progressivePoint): N = anisoSequenceCount of them (0: the rotated
-// Hammersley set instead), point i the sequence's point i XOR anisoSequenceBlock, the bits of
-// the block's first point (as ints: the same bits).
+// Sets of 2 to 16 (kMaxSequenceCount) points are a block of a (0,2)-sequence (from frame 0 on
+// for a power of two, else from frame 2 on: core/sampling/hammersley.h progressivePoint): N =
+// anisoSequenceCount of them (0: the rotated Hammersley set instead), point i the sequence's
+// point i XOR anisoSequenceBlock, the bits of the block's first point (as ints: the same bits),
+// the first coordinate of point i from the four columns anisoSequenceColumns (sequenceColumns).
 uniform int anisoSequenceCount;
 uniform ivec2 anisoSequenceBlock;
+uniform ivec4 anisoSequenceColumns;
 uniform float anisoLog2FrameCount;   // log2(k + 1) for progressive frame k
 uniform mat3 anisoWorldToEnvironment; // undoes the environment rotation about Z
 uniform samplerCube anisoEnvironment;
@@ -114,9 +116,11 @@ uniform float anisoSourceResidualShare;
 uniform float anisoSourceLobeOnlyVariance;
 uniform float anisoSourceGroupSquared[ANISO_SOURCE_GROUPS];
 // The source samples' own blocks of the sequence, one per count M 2^k (as anisoSequenceBlock
-// for the lobe's), when anisoSourceSequence is 1 (else the rotated Hammersley set).
-uniform int anisoSourceSequence;
+// and anisoSequenceColumns for the lobe's): anisoSourceSequenceCounts[k] the count where this
+// frame's set is a block (else 0: the rotated Hammersley set).
+uniform int anisoSourceSequenceCounts[3];
 uniform ivec2 anisoSourceSequenceBlocks[3];
+uniform ivec4 anisoSourceSequenceColumns[3];
 #endif
 #ifdef ANISO_METHOD_SPLIT_SUM
 uniform sampler2D anisoBrdfLut; // RG32F: s, b with F0 s + b the directional albedo
@@ -225,25 +229,27 @@ vec2 anisoPixelShift()
   return anisoPixelDecorrelation * vec2(float(h & 0xffffu), float(h >> 16u)) * (1.0 / 65536.0);
 }
 
-// Sobol's second dimension of i < 16 as a 32-bit binary fraction: the XOR of the direction
-// numbers 0.1, 0.11, 0.101, 0.1111 of i's bits (core/sampling/hammersley.h sobol2Bits).
-uint anisoSobol2Bits16(uint i)
+// The sequence's first coordinate of i < 16 as a 32-bit binary fraction: the XOR of the columns
+// of i's bits (core/sampling/hammersley.h sequenceColumns, the first four).
+uint anisoSequenceBits16(uint i, uvec4 columns)
 {
-  return (0x80000000u * (i & 1u)) ^ (0xC0000000u * ((i >> 1u) & 1u)) ^
-         (0xA0000000u * ((i >> 2u) & 1u)) ^ (0xF0000000u * ((i >> 3u) & 1u));
+  // (Masks, not products: a 32-bit multiply per lane costs more on a CPU's vector unit.)
+  return (columns.x & (0u - (i & 1u))) ^ (columns.y & (0u - ((i >> 1u) & 1u))) ^
+         (columns.z & (0u - ((i >> 2u) & 1u))) ^ (columns.w & (0u - ((i >> 3u) & 1u)));
 }
 
 // Point i of this frame's set of count points, rotated by the pixel's shift and kept strictly
-// below 1: from frame 2 on, for 2 to 16 points, the frame's block of the (0,2)-sequence (when
-// count is the set's sequenceCount, whose block's first point has the bits of block), else the
-// Hammersley set rotated by the frame's shift.
-vec2 anisoSamplePoint(int i, int count, vec2 shift, int sequenceCount, ivec2 block)
+// below 1: for 2 to 16 points, the frame's block of the (0,2)-sequence (when count is the set's
+// sequenceCount, whose block's first point has the bits of block, and columns its generator's
+// first four columns), else the Hammersley set rotated by the frame's shift.
+vec2 anisoSamplePoint(int i, int count, vec2 shift, int sequenceCount, ivec2 block,
+                      ivec4 columns)
 {
   vec2 p;
   if (count == sequenceCount)
   {
     uvec2 bits = uvec2(block) ^
-      uvec2(anisoSobol2Bits16(uint(i)), anisoRadicalInverse2Bits(uint(i)));
+      uvec2(anisoSequenceBits16(uint(i), uvec4(columns)), anisoRadicalInverse2Bits(uint(i)));
     p = vec2(bits >> 8u) * (1.0 / 16777216.0);
   }
   else
@@ -703,7 +709,8 @@ vec3 anisoSpecular(vec3 t, vec3 b, vec3 n, vec3 v, vec3 f0)
 #endif
   for (int i = 0; i < lobeOnlyCount; ++i)
   {
-    vec2 xi = anisoSamplePoint(i, count, shift, anisoSequenceCount, anisoSequenceBlock);
+    vec2 xi = anisoSamplePoint(i, count, shift, anisoSequenceCount, anisoSequenceBlock,
+                               anisoSequenceColumns);
 #ifdef ANISO_ENVIRONMENT_MIS
     vec3 l;
     vec3 h;
@@ -783,7 +790,7 @@ vec3 anisoSpecular(vec3 t, vec3 b, vec3 n, vec3 v, vec3 f0)
   for (int i = 0; i < lobeMisCount; ++i)
   {
     vec4 hs = anisoHalfVector(anisoSamplePoint(i, count, shift, anisoSequenceCount,
-                                               anisoSequenceBlock));
+                                               anisoSequenceBlock, anisoSequenceColumns));
     vec3 h = hs.x * t + hs.y * b + hs.z * n;
     float vDotH = dot(v, h);
     vec3 l = 2.0 * vDotH * h - v;
@@ -809,15 +816,15 @@ vec3 anisoSpecular(vec3 t, vec3 b, vec3 n, vec3 v, vec3 f0)
   // to frame as the lobe's are (their own block of the sequence), each weighted as
   // anisoSourceLobeWeight says for the lobe's (times N, as the lobe's sum is divided by N).
   mat3 sourceToWorld = transpose(anisoWorldToEnvironment);
-  // (A block of the sequence for 2 to 16 points, kMaxSequenceCount.)
-  int sourceSequenceCount =
-    anisoSourceSequence != 0 && sourceCount >= 2 && sourceCount <= 16 ? sourceCount : 0;
+  int sourceBlock = max(sourceSteps, 0);
+  int sourceSequenceCount = anisoSourceSequenceCounts[sourceBlock];
   for (int j = 0; j < sourceCount; ++j)
   {
     vec2 uv;
     vec4 ls = anisoSampleSources(selection,
                                  anisoSamplePoint(j, sourceCount, shift, sourceSequenceCount,
-                                                  anisoSourceSequenceBlocks[max(sourceSteps, 0)]),
+                                                  anisoSourceSequenceBlocks[sourceBlock],
+                                                  anisoSourceSequenceColumns[sourceBlock]),
                                  uv);
     vec3 l = sourceToWorld * ls.xyz;
     float nDotL = dot(n, l);
