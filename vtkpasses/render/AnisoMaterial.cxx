@@ -61,7 +61,8 @@ constexpr double kSourceDefensive = 0.1;
 
 // Which points a set of COUNT samples takes in progressive frame FRAME: COUNT_NAME is the count
 // when the set is a block of the sequence (0: the rotated Hammersley set), BLOCK_NAME the bits
-// of the block's first point (core/sampling/hammersley.h sequenceBlock).
+// of the block's first point (core/sampling/hammersley.h sequenceBlock), COLUMNS_NAME (ivec4)
+// the first four columns of COUNT's sequence (sequenceColumns).
 void setSequenceUniforms(vtkShaderProgram* program, const std::string& countName,
                          const std::string& blockName, const std::string& columnsName,
                          uint32_t frame, uint32_t count)
