@@ -152,10 +152,11 @@ TEST_P(RenderReference, ExactConvergesAndSplitSumBiasIsMeasured)
   EXPECT_LT(exactError, fewFramesError / 3.0);
 
   // The frames stratify as one set (core/sampling/hammersley.h, progressivePoint): frames 2 and
-  // 3, one 32-point net, cut the error of frames 0 and 1 by more than 30% for the sharper
-  // lobes. Measured: to 0.625 of it for (1000, 100) and 0.623 for (20000, 70); rotating one
-  // set anew each frame (as before) gave 0.788 and 0.790. The broad lobe gains later: 0.700
-  // here against 0.690 (docs/BENCHMARKS.md, "Progressive frames as one stratified set").
+  // 3 with frames 0 and 1, one net, cut the error of frames 0 and 1 by more than 30% for the
+  // sharper lobes. Measured: to 0.482 of it for (1000, 100) and 0.449 for (20000, 70), 0.548
+  // for the broad lobe (with frames 0 and 1 the Hammersley set and its rotation, and frames 2
+  // and 3 a net of their own: 0.625, 0.623 and 0.700; rotating one set anew each frame: 0.788
+  // and 0.790) (docs/BENCHMARKS.md, "Progressive frames as one stratified set").
   RenderSettings twoFrames = exactSettings;
   twoFrames.frames = 2;
   RenderSettings fourFrames = exactSettings;
