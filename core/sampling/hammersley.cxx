@@ -2,7 +2,6 @@
 
 #include "core/error.h"
 
-#include <algorithm>
 #include <array>
 #include <cmath>
 #include <limits>
@@ -69,19 +68,6 @@ glm::dvec2 cranleyPatterson(const glm::dvec2& p, const glm::dvec2& shift)
   return {wrapUnit(p.x + shift.x), wrapUnit(p.y + shift.y)};
 }
 
-uint32_t sobol2Bits(uint32_t i)
-{
-  uint32_t result = 0;
-  for (uint32_t v = 0x80000000u; i != 0; i >>= 1, v ^= v >> 1)
-  {
-    if (i & 1u)
-    {
-      result ^= v;
-    }
-  }
-  return result;
-}
-
 namespace
 {
 uint32_t log2Block(uint32_t count)
@@ -140,10 +126,9 @@ bool invertible(const SequenceColumns& columns, uint32_t m, uint32_t d)
   return true;
 }
 
-SequenceColumns buildSequenceColumns(uint32_t log2Count)
+SequenceColumns buildSequenceColumns(uint32_t m0)
 {
   SequenceColumns columns{};
-  const uint32_t m0 = std::max(log2Count, 1u);
   // The corner: index bit c to digit m0 - c, so that point i < 2^m0 has x = i / 2^m0.
   for (uint32_t c = 0; c < m0; ++c)
   {
@@ -168,11 +153,13 @@ SequenceColumns buildSequenceColumns(uint32_t log2Count)
 
 const SequenceColumns& sequenceColumns(uint32_t count)
 {
-  static const std::array<SequenceColumns, 5> tables{
-      buildSequenceColumns(0), buildSequenceColumns(1), buildSequenceColumns(2),
-      buildSequenceColumns(3), buildSequenceColumns(4)};
+  // Corners of 1 to 4 bits; the first is Sobol's own, for every count without a corner.
+  static const std::array<SequenceColumns, 4> tables{
+      buildSequenceColumns(1), buildSequenceColumns(2), buildSequenceColumns(3),
+      buildSequenceColumns(4)};
   static_assert(kMaxSequenceCount == 16, "a table per power of two up to the largest count");
-  return powerOfTwo(count) && count <= kMaxSequenceCount ? tables[log2Block(count)] : tables[0];
+  const bool corner = powerOfTwo(count) && count >= 2 && count <= kMaxSequenceCount;
+  return tables[corner ? log2Block(count) - 1 : 0];
 }
 
 uint32_t sequenceBits(uint32_t index, const SequenceColumns& columns)

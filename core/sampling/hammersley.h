@@ -19,10 +19,6 @@ glm::dvec2 cranleyPatterson(const glm::dvec2& p, const glm::dvec2& shift);
 // the R2 low-discrepancy sequence. The microstructure's frames draw their seeds from it.
 glm::dvec2 frameShift(uint32_t frame);
 
-// Sobol's second dimension of index i (primitive polynomial x + 1: direction numbers
-// v_1 = 1/2, v_j = v_{j-1} XOR v_{j-1} / 2), as the bits of a 32-bit binary fraction.
-uint32_t sobol2Bits(uint32_t i);
-
 // The sequences the progressive frames take their points from: (x_j, radicalInverse2(j)), x_j
 // the XOR of the columns of the set bits of j (a digital sequence, linear over GF(2) in j's
 // bits: column c is the x of j = 2^c, as a 32-bit binary fraction). For COUNT = 2^m0 points a
@@ -31,7 +27,8 @@ uint32_t sobol2Bits(uint32_t i);
 // column is chosen digit by digit so that the first 2^m points are a (0, m, 2)-net for every
 // m >= m0 (one choice at each digit: docs/METHOD.md, "Progressive frames"); deeper digits 0.
 // For any other COUNT (and for 1 and 2 points, where that corner is Sobol's own), Sobol's second
-// dimension (the columns of sobol2Bits).
+// dimension (direction numbers v_1 = 1/2, v_j = v_{j-1} XOR v_{j-1} / 2: Pascal's triangle
+// modulo 2, which the construction gives from a corner of one bit).
 using SequenceColumns = std::array<uint32_t, 32>;
 const SequenceColumns& sequenceColumns(uint32_t count);
 uint32_t sequenceBits(uint32_t index, const SequenceColumns& columns);

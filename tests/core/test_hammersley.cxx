@@ -245,22 +245,38 @@ bool isZeroNet(const std::vector<glm::dvec2>& points, int t)
 
 // Sobol's second dimension, restated from its definition: direction number v_j is the binary
 // fraction of the j-th row of Pascal's triangle modulo 2 (v_1 = 0.1, v_2 = 0.11, v_3 = 0.101,
-// v_4 = 0.1111), and point i XORs the v_j of i's set bits. Its first 2^m values are a
-// permutation of j / 2^m.
+// v_4 = 0.1111, v_{j+1} = v_j XOR v_j / 2), and point i XORs the v_j of i's set bits.
+static uint32_t referenceSobol2Bits(uint32_t i)
+{
+  uint32_t result = 0;
+  for (uint32_t v = 0x80000000u; i != 0; i >>= 1, v ^= v >> 1)
+  {
+    if (i & 1u)
+    {
+      result ^= v;
+    }
+  }
+  return result;
+}
+
+// The sequence of two points a frame is Sobol's (the construction from a one-bit corner gives
+// Pascal's triangle): its exact first values, and its first 2^m values a permutation of j / 2^m.
 TEST(ProgressivePoints, SobolSecondDimension)
 {
-  EXPECT_EQ(aniso::sobol2Bits(0), 0u);
-  EXPECT_EQ(aniso::sobol2Bits(1), 0x80000000u); // 0.1
-  EXPECT_EQ(aniso::sobol2Bits(2), 0xC0000000u); // 0.11
-  EXPECT_EQ(aniso::sobol2Bits(3), 0x40000000u); // 0.1 xor 0.11 = 0.01
-  EXPECT_EQ(aniso::sobol2Bits(4), 0xA0000000u); // 0.101
-  EXPECT_EQ(aniso::sobol2Bits(8), 0xF0000000u); // 0.1111
+  const aniso::SequenceColumns& sobol = aniso::sequenceColumns(2);
+  EXPECT_EQ(aniso::sequenceBits(0, sobol), 0u);
+  EXPECT_EQ(aniso::sequenceBits(1, sobol), 0x80000000u); // 0.1
+  EXPECT_EQ(aniso::sequenceBits(2, sobol), 0xC0000000u); // 0.11
+  EXPECT_EQ(aniso::sequenceBits(3, sobol), 0x40000000u); // 0.1 xor 0.11 = 0.01
+  EXPECT_EQ(aniso::sequenceBits(4, sobol), 0xA0000000u); // 0.101
+  EXPECT_EQ(aniso::sequenceBits(8, sobol), 0xF0000000u); // 0.1111
   for (uint32_t m = 1; m <= 10; ++m)
   {
     std::set<uint32_t> values;
     for (uint32_t i = 0; i < (1u << m); ++i)
     {
-      const uint32_t bits = aniso::sobol2Bits(i);
+      const uint32_t bits = aniso::sequenceBits(i, sobol);
+      EXPECT_EQ(bits, referenceSobol2Bits(i));
       EXPECT_EQ(bits & ((1u << (32 - m)) - 1u), 0u);
       values.insert(bits >> (32 - m));
     }
@@ -279,7 +295,7 @@ TEST(ProgressivePoints, SequencesStartWithTheHammersleySetAndStayNets)
     const aniso::SequenceColumns& columns = aniso::sequenceColumns(count);
     for (uint32_t c = 0; c < 32; ++c)
     {
-      EXPECT_EQ(columns[c], aniso::sobol2Bits(1u << c)) << count << " points, column " << c;
+      EXPECT_EQ(columns[c], referenceSobol2Bits(1u << c)) << count << " points, column " << c;
     }
   }
   for (uint32_t count : {4u, 8u, 16u})
