@@ -233,7 +233,6 @@ vec2 anisoPixelShift()
 // of i's bits (core/sampling/hammersley.h sequenceColumns, the first four).
 uint anisoSequenceBits16(uint i, uvec4 columns)
 {
-  // (Masks, not products: a 32-bit multiply per lane costs more on a CPU's vector unit.)
   return (columns.x & (0u - (i & 1u))) ^ (columns.y & (0u - ((i >> 1u) & 1u))) ^
          (columns.z & (0u - ((i >> 2u) & 1u))) ^ (columns.w & (0u - ((i >> 3u) & 1u)));
 }
