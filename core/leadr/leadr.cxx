@@ -5,10 +5,12 @@
 #include "core/error.h"
 #include "core/models/height_field.h"
 #include "core/models/texture_sampling.h"
+#include "core/sampling/hammersley.h"
 
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <glm/common.hpp>
 #include <glm/geometric.hpp>
 #include <limits>
 #include <string>
@@ -454,12 +456,25 @@ double inverseNormalCdf(double p)
 
 SlopeGrid makeSlopeGrid(int n)
 {
+  return makeShiftedSlopeGrid(n, 0.5);
+}
+
+glm::dvec2 slopeGridShift(uint32_t frame)
+{
+  const glm::dvec2 s = glm::dvec2(0.5) + frameShift(frame);
+  return s - glm::floor(s);
+}
+
+SlopeGrid makeShiftedSlopeGrid(int n, double shift)
+{
   if (!(n >= 1 && n <= 64))
     throw errorAbout("slope grid", "n must be in [1, 64] (got " + std::to_string(n) + ")");
+  if (!(shift >= 0.0 && shift < 1.0))
+    throw errorAbout("slope grid", "shift must be in [0, 1) (got " + std::to_string(shift) + ")");
   SlopeGrid grid;
   grid.n = n;
   for (int i = 0; i < n; ++i)
-    grid.quantiles.push_back(inverseNormalCdf((i + 0.5) / n));
+    grid.quantiles.push_back(inverseNormalCdf(std::clamp((i + shift) / n, 0x1p-24, 1.0 - 0x1p-24)));
   return grid;
 }
 

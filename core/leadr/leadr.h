@@ -23,6 +23,7 @@
 #include "core/image/image.h"
 #include "core/lights/light.h"
 
+#include <cstdint>
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 #include <vector>
@@ -135,6 +136,16 @@ struct SlopeGrid
   std::vector<double> quantiles; // z_i, ascending
 };
 SlopeGrid makeSlopeGrid(int n);
+// The grid of the still view's progressive frame k: quantiles Phi^-1((i + s)/n) on each axis,
+// s = slopeGridShift(k) per axis (u = (i + s)/n kept in [2^-24, 1 - 2^-24]). Frame 0 is the
+// centred grid above (s = 0.5); frame k > 0 is it moved by the R2 sequence's point k
+// (core/sampling/hammersley.h frameShift, mod 1), so that the frames' points fill each of the
+// n x n cells evenly and their mean converges to the integral over the slope distribution,
+// where the one grid under a jittered camera only averages its own quadrature (docs/METHOD.md,
+// "LEADR"). (The dyadic points of a (0,2)-sequence would put a frame's first cell at u = 0,
+// the distribution's far tail, and every point at its stratum's lower end.)
+glm::dvec2 slopeGridShift(uint32_t frame);
+SlopeGrid makeShiftedSlopeGrid(int n, double shift);
 // Phi^-1(p) for p in (0, 1) (Acklam's approximation refined by one Halley step, ~1e-15).
 double inverseNormalCdf(double p);
 glm::dvec2 gridSlope(const SlopeStatistics& stats, double z1, double z2);

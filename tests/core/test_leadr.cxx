@@ -533,6 +533,45 @@ TEST(Leadr, InverseNormalCdf)
 
 // Finite and non-negative for random statistics (mean slopes up to 3, variances over six
 // decades, strong correlation) and directions including grazing and back-facing views.
+// The progressive frames' grids (slopeGridShift, makeShiftedSlopeGrid): frame 0 is the centred
+// grid, every shift lies in [0, 1), and the mean over the frames of a 2 x 2 grid converges to
+// expectations under the normal distribution (E cos z = e^-1/2, E e^-z^2 = 1/sqrt(3), and over
+// both axes' pairs E cos z1 cos z2 = e^-1), where the centred grid stays at its quadrature.
+TEST(Leadr, FrameGridsConvergeToTheDistribution)
+{
+  EXPECT_EQ(aniso::slopeGridShift(0), glm::dvec2(0.5, 0.5));
+  EXPECT_EQ(aniso::makeShiftedSlopeGrid(5, 0.5).quantiles, aniso::makeSlopeGrid(5).quantiles);
+  const auto expectations = [](int frames)
+  {
+    glm::dvec3 sum(0.0);
+    for (int k = 0; k < frames; ++k)
+    {
+      const glm::dvec2 s = aniso::slopeGridShift(uint32_t(k));
+      EXPECT_TRUE(s.x >= 0.0 && s.x < 1.0 && s.y >= 0.0 && s.y < 1.0) << k;
+      const std::vector<double> x = aniso::makeShiftedSlopeGrid(2, s.x).quantiles;
+      const std::vector<double> y = aniso::makeShiftedSlopeGrid(2, s.y).quantiles;
+      for (double z1 : x)
+      {
+        for (double z2 : y)
+        {
+          sum += glm::dvec3(std::cos(z1), std::exp(-z1 * z1), std::cos(z1) * std::cos(z2));
+        }
+      }
+    }
+    return sum / (4.0 * frames);
+  };
+  const double z = aniso::inverseNormalCdf(0.25);
+  const glm::dvec3 one = expectations(1);
+  EXPECT_NEAR(one.x, std::cos(z), 1e-12);
+  EXPECT_GT(std::abs(one.x - std::exp(-0.5)), 0.15);
+  const glm::dvec3 many = expectations(256);
+  EXPECT_NEAR(many.x, std::exp(-0.5), 1e-3);
+  EXPECT_NEAR(many.y, 1.0 / std::sqrt(3.0), 1e-3);
+  EXPECT_NEAR(many.z, std::exp(-1.0), 1e-3);
+  EXPECT_THROW(aniso::makeShiftedSlopeGrid(2, 1.0), aniso::Error);
+  EXPECT_THROW(aniso::makeShiftedSlopeGrid(2, -0.1), aniso::Error);
+}
+
 TEST(Leadr, FiniteAcrossParameterRange)
 {
   std::mt19937_64 rng(67);

@@ -5,13 +5,17 @@
 #include "core/lights/env_lights.h"
 #include "vtkpasses/render/EnvironmentLighting.h"
 #include "vtkpasses/render/RendererMatrices.h"
+#include "vtkpasses/render/vtkAnisoAccumulationPass.h"
 
 #include <algorithm>
 #include <cmath>
 #include <glm/geometric.hpp>
 #include <glm/gtc/type_ptr.hpp>
+#include <utility>
+#include <vtkInformation.h>
 #include <vtkOpenGLRenderWindow.h>
 #include <vtkOpenGLState.h>
+#include <vtkRenderer.h>
 #include <vtkShaderProgram.h>
 #include <vtkSmartPointer.h>
 #include <vtkTextureObject.h>
@@ -215,10 +219,21 @@ void LeadrShadingMaterial::setModelUniforms(vtkShaderProgram* program,
   setVector(program, "leadrF0", s.surface.f0);
   setVector(program, "leadrDiffuse", s.surface.diffuse);
   program->SetUniformi("leadrPlainNormals", s.plainNormals ? 1 : 0);
-  const SlopeGrid grid = makeSlopeGrid(s.gridN);
-  std::vector<float> quantiles(grid.quantiles.begin(), grid.quantiles.end());
-  program->SetUniformi("leadrGridN", grid.n);
-  program->SetUniform1fv("leadrQuantiles", grid.n, quantiles.data());
+  // The progressive frame's grid (slopeGridShift): frame 0 the centred one the CPU model takes.
+  vtkInformation* info = renderer() ? renderer()->GetInformation() : nullptr;
+  const int frame = info && info->Has(vtkAnisoAccumulationPass::FRAME_INDEX())
+                        ? std::max(info->Get(vtkAnisoAccumulationPass::FRAME_INDEX()), 0)
+                        : 0;
+  const glm::dvec2 shift = slopeGridShift(static_cast<uint32_t>(frame));
+  program->SetUniformi("leadrGridN", s.gridN);
+  for (const auto& [name, axisShift] :
+       {std::pair{"leadrQuantiles", shift.x}, std::pair{"leadrQuantilesY", shift.y}})
+  {
+    const SlopeGrid grid = makeShiftedSlopeGrid(s.gridN, axisShift);
+    const std::vector<float> quantiles(grid.quantiles.begin(), grid.quantiles.end());
+    program->SetUniform1fv(name, grid.n, quantiles.data());
+  }
+  program->SetUniformf("leadrLog2FrameCount", static_cast<float>(std::log2(frame + 1.0)));
   program->SetUniformi("leadrUseEnvironment", s.environment ? 1 : 0);
   // Bound even when unused: a cube sampler left on a unit that holds a 2D texture fails the draw.
   {

@@ -11,7 +11,11 @@ uniform vec3 leadrF0;
 uniform vec3 leadrDiffuse;
 uniform int leadrPlainNormals; // 1: only the mean slope (a filtered normal map), no variance
 uniform int leadrGridN;
-uniform float leadrQuantiles[16]; // standard-normal quantiles (i + 0.5) / n
+// Standard-normal quantiles at (i + s) / n on each axis, s the frame's shift
+// (core/leadr/leadr.h makeShiftedSlopeGrid, slopeGridShift): frame 0 the centred grid.
+uniform float leadrQuantiles[16];
+uniform float leadrQuantilesY[16];
+uniform float leadrLog2FrameCount; // log2(k + 1) for progressive frame k
 uniform int leadrUseEnvironment;
 uniform samplerCube leadrEnvironment;
 uniform mat3 leadrWorldToEnvironment;

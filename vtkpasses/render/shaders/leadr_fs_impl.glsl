@@ -35,7 +35,7 @@
       {
         for (int c = 0; c < gridN; ++c)
         {
-          lambert += max(dot(leadrGridNormal(shifted, leadrQuantiles[a], leadrQuantiles[c]), l), 0.0);
+          lambert += max(dot(leadrGridNormal(shifted, leadrQuantiles[a], leadrQuantilesY[c]), l), 0.0);
         }
       }
       lambert *= gridWeight;
@@ -53,12 +53,12 @@
         for (int c = 0; c < gridN; ++c)
         {
           irradiance += max(leadrIrradiance(tbn * leadrGridNormal(stats, leadrQuantiles[a],
-                                                                   leadrQuantiles[c])), 0.0);
+                                                                   leadrQuantilesY[c])), 0.0);
           if (!(g1v > 0.0))
           {
             continue;
           }
-          vec3 m = leadrGridNormal(shifted, leadrQuantiles[a], leadrQuantiles[c]);
+          vec3 m = leadrGridNormal(shifted, leadrQuantiles[a], leadrQuantilesY[c]);
           float vm = dot(v, m);
           if (!(vm > 0.0))
           {
@@ -76,7 +76,9 @@
           if (density > 0.0)
           {
             float omega = 4.0 * vm / (float(gridN * gridN) * density);
-            sampleLod = clamp(0.5 * (log2(omega) - leadrLog2TexelSolidAngle), 0.0, leadrMaxLod);
+            // Frame k's mean holds the samples of k + 1 frames: the blur fades as it converges.
+            sampleLod = clamp(0.5 * (log2(omega) - leadrLog2TexelSolidAngle - leadrLog2FrameCount),
+                              0.0, leadrMaxLod);
           }
           vec3 incoming =
             textureLod(leadrEnvironment, leadrWorldToEnvironment * (tbn * l), sampleLod).rgb;
