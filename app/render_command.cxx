@@ -287,7 +287,8 @@ Command renderCommand()
              "each part's prepared surface (normals, tangents, UVs) in its own frame, its "
              "placement as "
              "its node's matrix, and the material it is drawn with, the library's or the command "
-             "line's, as metallic-roughness with KHR_materials_anisotropy (maps are not written); "
+             "line's, as metallic-roughness with KHR_materials_anisotropy (maps and fields are "
+             "not written); "
              "besides the image, or instead of it without -o")));
   c.options.push_back(
       in(kGroupOutput,
@@ -792,6 +793,11 @@ int runRender(const std::vector<std::string>& args, std::ostream& out, std::ostr
     writeGltfScene(exported, written);
     out << "render: exported " << written.size() << (written.size() == 1 ? " part" : " parts")
         << " to " << exported << "\n";
+    for (const std::string& name : partsWithFields(written))
+    {
+      out << "render: " << name
+          << ": its field is not written (the file holds the material without it)\n";
+    }
     if (output.empty())
     {
       return 0;

@@ -1087,8 +1087,14 @@ bool MainWindow::exportGltf(const QString& path)
           throw errorAbout(file, "no visible part to export");
         }
         writeGltfScene(file, parts);
+        // glTF has the material, not a data field that varies it: said, not silently dropped.
+        const std::size_t withFields = partsWithFields(parts).size();
         statusBar()->showMessage(
-            tr("Exported %n part(s) to %1", nullptr, int(parts.size())).arg(path), 5000);
+            tr("Exported %n part(s) to %1", nullptr, int(parts.size())).arg(path) +
+                (withFields > 0 ? tr("; %n part(s) without their field (glTF has none)", nullptr,
+                                     int(withFields))
+                                : QString()),
+            5000);
       });
 }
 

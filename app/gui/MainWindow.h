@@ -117,7 +117,8 @@ public:
   bool saveSession(const QString& path);
   // Writes the scene's visible parts as glTF 2.0 (vtkpasses/mesh/GltfWriter: .glb, else .gltf
   // text): each part's loaded, prepared surface in its own frame, its placement and its library
-  // material (KHR_materials_anisotropy; maps are not written). File > Export Scene as glTF.
+  // material (KHR_materials_anisotropy; maps and fields are not written, the status bar says how
+  // many parts had a field). File > Export Scene as glTF.
   bool exportGltf(const QString& path);
   // By the file's kind: a session (.json), a mesh, an environment (.hdr, or an .exr twice as
   // wide as high), else an image taken as the normal map. With BACKGROUND a mesh opens through

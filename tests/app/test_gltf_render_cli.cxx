@@ -26,7 +26,8 @@
 //    the scene's parts (with their placements, the file's or --part's materials) that read back
 //    through loadMeshBlocks with the same names, triangles, bounds, placements and n_u, n_v, F0,
 //    albedo; without -o it writes no image, with -o both. An export file of another extension,
-//    or in a folder that does not exist, is refused naming it.
+//    or in a folder that does not exist, is refused naming it. A part drawn with a field is
+//    named as written without it.
 #include "core/image/image.h"
 #include "core/parameters/material_library.h"
 #include "tests/app/cli_runner.h"
@@ -423,6 +424,7 @@ TEST_F(GltfRenderCli, ListPartsShowsTheFilesMaterialsAndExportReadsBack)
     const Outcome r = run(command);
     ASSERT_EQ(r.exitCode, 0) << r.err;
     EXPECT_NE(r.out.find("exported 2 parts to " + exported), std::string::npos) << r.out;
+    EXPECT_EQ(r.out.find("field is not written"), std::string::npos) << r.out;
     EXPECT_EQ(aniso_test::fs::exists(picture), image);
     const aniso::LoadedBlocks back = aniso::loadMeshBlocks(exported);
     ASSERT_EQ(back.blocks.size(), 2u);
@@ -466,6 +468,22 @@ TEST_F(GltfRenderCli, ListPartsShowsTheFilesMaterialsAndExportReadsBack)
       }
     }
   }
+}
+
+// A field that varies the material has no place in glTF: the export says which parts lose it
+// (the built-in torus, drawn with the command line's material and its field), and says nothing
+// of the kind without one.
+TEST_F(GltfRenderCli, AnExportSaysWhichPartsLoseTheirField)
+{
+  const std::string exported = path("fields.glb").string();
+  const Outcome r =
+      run({"render", "--builtin", "torus", "--field", "TCoords:0", "--export-gltf", exported});
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_NE(r.out.find("exported 1 part to " + exported), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("torus: its field is not written"), std::string::npos) << r.out;
+  const Outcome without = run({"render", "--builtin", "torus", "--export-gltf", exported});
+  ASSERT_EQ(without.exitCode, 0) << without.err;
+  EXPECT_EQ(without.out.find("field is not written"), std::string::npos) << without.out;
 }
 
 TEST_F(GltfRenderCli, AnExportFileThatCannotBeWrittenIsRefusedNamingIt)

@@ -269,4 +269,17 @@ void writeGltfScene(const std::string& path, const std::vector<GltfPart>& parts)
     throw errorAbout(path, "the glTF file could not be written");
   }
 }
+std::vector<std::string> partsWithFields(const std::vector<GltfPart>& parts)
+{
+  std::vector<std::string> names;
+  for (const GltfPart& part : parts)
+  {
+    const std::string field = part.material.value("field").text;
+    if (!field.empty() && field != "none")
+    {
+      names.push_back(part.name);
+    }
+  }
+  return names;
+}
 } // namespace aniso

@@ -8,7 +8,9 @@
 // triangle primitive (POSITION, NORMAL from "Normals", TANGENT from "Tangents" with w = 1,
 // TEXCOORD_0 with v -> 1 - v; polygons fanned into triangles, lines and points left out); one
 // glTF material per library material, named by it. Not written: the maps (the material's
-// textures), the scene's lighting and camera.
+// textures), a data field that varies the material across the surface (partsWithFields names
+// the parts that have one, so that the writer's callers can say so), the scene's lighting and
+// camera.
 #include "core/parameters/material_library.h"
 #include "core/placement.h"
 
@@ -30,4 +32,7 @@ struct GltfPart
 // Throws aniso::Error "PATH: reason" when the file cannot be written or a part has no surface.
 // The extension picks the container: ".glb" binary, else JSON text.
 void writeGltfScene(const std::string& path, const std::vector<GltfPart>& parts);
+
+// The parts whose material has a field ("field" other than none): written without it.
+std::vector<std::string> partsWithFields(const std::vector<GltfPart>& parts);
 } // namespace aniso
