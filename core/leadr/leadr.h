@@ -142,8 +142,8 @@ SlopeGrid makeSlopeGrid(int n);
 // (core/sampling/hammersley.h frameShift, mod 1), so that the frames' points fill each of the
 // n x n cells evenly and their mean converges to the integral over the slope distribution,
 // where the one grid under a jittered camera only averages its own quadrature (docs/METHOD.md,
-// "LEADR"). (The dyadic points of a (0,2)-sequence would put a frame's first cell at u = 0,
-// the distribution's far tail, and every point at its stratum's lower end.)
+// "LEADR's frames"). (The dyadic points of a (0,2)-sequence would put one frame's first point
+// at u = 0, the distribution's far tail, and every point at its stratum's lower end.)
 glm::dvec2 slopeGridShift(uint32_t frame);
 SlopeGrid makeShiftedSlopeGrid(int n, double shift);
 // Phi^-1(p) for p in (0, 1) (Acklam's approximation refined by one Halley step, ~1e-15).

@@ -269,6 +269,7 @@ void writeGltfScene(const std::string& path, const std::vector<GltfPart>& parts)
     throw errorAbout(path, "the glTF file could not be written");
   }
 }
+
 std::vector<std::string> partsWithFields(const std::vector<GltfPart>& parts)
 {
   std::vector<std::string> names;

@@ -509,9 +509,7 @@ public:
     // the Hammersley set rotated by the frame's shift, or a block of a (0,2)-sequence, which the
     // shader takes as its points XOR the bits of the block's first point.
     vtkInformation* info = hook.renderer()->GetInformation();
-    const int frameIndex = info && info->Has(vtkAnisoAccumulationPass::FRAME_INDEX())
-                               ? info->Get(vtkAnisoAccumulationPass::FRAME_INDEX())
-                               : 0;
+    const int frameIndex = vtkAnisoAccumulationPass::GetFrameIndex(hook.renderer());
     program->SetUniformf("anisoLog2FrameCount", static_cast<float>(std::log2(frameIndex + 1.0)));
     double shift[2] = {0.0, 0.0};
     if (info && info->Has(vtkAnisoAccumulationPass::FRAME_SHIFT()))
@@ -520,7 +518,7 @@ public:
     }
     const float frameShift[2] = {static_cast<float>(shift[0]), static_cast<float>(shift[1])};
     program->SetUniform2f("anisoFrameShift", frameShift);
-    const auto frame = static_cast<uint32_t>(std::max(frameIndex, 0));
+    const auto frame = static_cast<uint32_t>(frameIndex);
     setSequenceUniforms(program, "anisoSequenceCount", "anisoSequenceBlock", "anisoSequenceColumns",
                         frame, static_cast<uint32_t>(std::max(settings.samples, 1)));
 

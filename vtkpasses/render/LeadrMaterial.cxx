@@ -12,10 +12,8 @@
 #include <glm/geometric.hpp>
 #include <glm/gtc/type_ptr.hpp>
 #include <utility>
-#include <vtkInformation.h>
 #include <vtkOpenGLRenderWindow.h>
 #include <vtkOpenGLState.h>
-#include <vtkRenderer.h>
 #include <vtkShaderProgram.h>
 #include <vtkSmartPointer.h>
 #include <vtkTextureObject.h>
@@ -220,10 +218,7 @@ void LeadrShadingMaterial::setModelUniforms(vtkShaderProgram* program,
   setVector(program, "leadrDiffuse", s.surface.diffuse);
   program->SetUniformi("leadrPlainNormals", s.plainNormals ? 1 : 0);
   // The progressive frame's grid (slopeGridShift): frame 0 the centred one the CPU model takes.
-  vtkInformation* info = renderer() ? renderer()->GetInformation() : nullptr;
-  const int frame = info && info->Has(vtkAnisoAccumulationPass::FRAME_INDEX())
-                        ? std::max(info->Get(vtkAnisoAccumulationPass::FRAME_INDEX()), 0)
-                        : 0;
+  const int frame = vtkAnisoAccumulationPass::GetFrameIndex(renderer());
   const glm::dvec2 shift = slopeGridShift(static_cast<uint32_t>(frame));
   program->SetUniformi("leadrGridN", s.gridN);
   for (const auto& [name, axisShift] :

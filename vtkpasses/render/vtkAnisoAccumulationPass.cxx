@@ -51,6 +51,12 @@ vtkStandardNewMacro(vtkAnisoAccumulationPass);
 vtkCxxSetObjectMacro(vtkAnisoAccumulationPass, DelegatePass, vtkRenderPass);
 vtkInformationKeyRestrictedMacro(vtkAnisoAccumulationPass, FRAME_SHIFT, DoubleVector, 2);
 vtkInformationKeyMacro(vtkAnisoAccumulationPass, FRAME_INDEX, Integer);
+
+int vtkAnisoAccumulationPass::GetFrameIndex(vtkRenderer* renderer)
+{
+  vtkInformation* info = renderer ? renderer->GetInformation() : nullptr;
+  return info && info->Has(FRAME_INDEX()) ? std::max(info->Get(FRAME_INDEX()), 0) : 0;
+}
 vtkInformationKeyMacro(vtkAnisoAccumulationPass, FROZEN_PIXELS, ObjectBase);
 
 namespace

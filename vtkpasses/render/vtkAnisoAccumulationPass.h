@@ -86,6 +86,8 @@ public:
   // Index k of that frame (0 for the first after a reset), set alongside FRAME_SHIFT: filtered
   // importance sampling blurs less as the mean gathers more samples.
   static vtkInformationIntegerKey* FRAME_INDEX();
+  // FRAME_INDEX on RENDERER's information, 0 where it is not set (no renderer, no pass).
+  static int GetFrameIndex(vtkRenderer* renderer);
   // The pixels of this mean that no longer change (an R8 texture of the frame's size, GL rows, 1
   // where frozen), set alongside FRAME_SHIFT while any pixel is frozen: a material may discard
   // their fragments (ivec2(gl_FragCoord.xy) is the texel), and only then does freezing save time.
