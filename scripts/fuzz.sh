@@ -136,6 +136,13 @@ fuzz_one() {
   fi
 }
 
+# Each harness writes its inputs (fuzz/fuzz_input.h), and the reader program's harnesses their
+# fixtures and caches (fuzz/fuzz_reader_program.cxx), under TMPDIR, a file and a folder per
+# process: here a folder of this run's own, removed at its end (a finding's input is kept in
+# $out/findings), where they were left in /tmp, some 30 entries a run.
+TMPDIR="$(mktemp -d "${TMPDIR:-/tmp}/aniso-fuzz.XXXXXX")"
+export TMPDIR
+trap 'rm -rf "$TMPDIR"' EXIT
 # The harnesses run side by side, one a core (each is one process of one thread); their
 # outcomes are printed in the list's order.
 for h in "${harnesses[@]}"; do
