@@ -52,6 +52,9 @@ struct Config
   HalfVectorSource halfVectors = HalfVectorSource::Lut;
   EnvironmentSampling sampling = EnvironmentSampling::Off;
   int samples = 16;
+  // With sources: each pixel's own source samples instead of the points the frame's pixels
+  // share (MaterialSettings::sharedSourcePoints off).
+  bool pixelSources = false;
 };
 
 struct ReferenceSpec
@@ -232,6 +235,8 @@ std::vector<ScenePlan> planHdri(bool quick, const std::string& hdriDirectory)
     {
       plan.progressive.push_back({M::Exact, true, H::Lut, sampling, 16});
     }
+    // The two designs of the sources' technique side by side: per-pixel source samples.
+    plan.progressive.push_back({M::Exact, true, H::Lut, S::Sources, 16, true});
     plan.progressiveFrames =
         quick ? std::vector<int>{1, 4, 16} : std::vector<int>{1, 2, 4, 8, 16, 32, 64};
     if (!quick)
@@ -262,10 +267,11 @@ std::string describe(const Config& c, EnvironmentSampling resolved = Environment
   std::ostringstream s;
   s << methodName(c.method) << (c.filtered ? " filtered" : " unfiltered")
     << (c.halfVectors == HalfVectorSource::Lut ? " LUT" : " shader")
-    << (c.sampling == EnvironmentSampling::Mis       ? std::string(" MIS")
-        : c.sampling == EnvironmentSampling::Sources ? std::string(" sources")
-        : c.sampling == EnvironmentSampling::Auto    ? " " + autoText(resolved)
-                                                     : std::string())
+    << (c.sampling == EnvironmentSampling::Mis ? std::string(" MIS")
+        : c.sampling == EnvironmentSampling::Sources
+            ? std::string(c.pixelSources ? " sources(pixel)" : " sources")
+        : c.sampling == EnvironmentSampling::Auto ? " " + autoText(resolved)
+                                                  : std::string())
     << " N=" << c.samples;
   return s.str();
 }
@@ -319,6 +325,7 @@ MaterialSettings materialFor(const AsLobe& lobe, const Config& c)
   m.halfVectors = c.halfVectors;
   m.environmentSampling = c.sampling;
   m.samples = c.samples;
+  m.sharedSourcePoints = !c.pixelSources;
   return m;
 }
 
@@ -406,10 +413,9 @@ public:
             autoRows.begin(), autoRows.end(),
             [&](const std::pair<Config, std::size_t>& a)
             {
-              return config.sampling == autoResolved_ && a.first.method == config.method &&
-                     a.first.filtered == config.filtered &&
-                     a.first.halfVectors == config.halfVectors &&
-                     a.first.samples == config.samples;
+              return config.sampling == autoResolved_ && !config.pixelSources &&
+                     a.first.method == config.method && a.first.filtered == config.filtered &&
+                     a.first.halfVectors == config.halfVectors && a.first.samples == config.samples;
             });
         if (same != autoRows.end())
         {
@@ -754,7 +760,7 @@ private:
     }
     else if (config.sampling == EnvironmentSampling::Sources)
     {
-      row.method += "+sources";
+      row.method += config.pixelSources ? "+sources(pixel)" : "+sources";
     }
     else if (config.sampling == EnvironmentSampling::Auto)
     {

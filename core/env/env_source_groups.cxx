@@ -2,6 +2,7 @@
 
 #include "core/env/environment.h"
 #include "core/error.h"
+#include "core/sampling/hammersley.h"
 
 #include <algorithm>
 #include <cmath>
@@ -277,6 +278,50 @@ double lobePdfAtCap(const SourceGroup& group, const glm::dvec3& r,
   return lobePdf(nearest);
 }
 } // namespace
+
+std::vector<SourcePoint> sourcePoints(const SourceGroups& groups,
+                                      const std::vector<double>& selection,
+                                      const Environment& excess, std::uint32_t frame, int count)
+{
+  std::vector<SourcePoint> points;
+  if (groups.groups.empty() || count <= 0)
+    return points;
+  // Digital shifts of the two coordinates (XOR keeps every block a net).
+  constexpr std::uint32_t kShiftX = 0x9E3779B9u;
+  constexpr std::uint32_t kShiftY = 0x7F4A7C15u;
+  const SequenceColumns& columns = sequenceColumns(1);
+  points.reserve(std::size_t(count));
+  for (int i = 0; i < count; ++i)
+  {
+    const std::uint32_t index = frame * std::uint32_t(count) + std::uint32_t(i);
+    const std::uint32_t x = sequenceBits(index, columns) ^ kShiftX;
+    const auto y = std::uint32_t(radicalInverse2(index) * 0x1.0p32) ^ kShiftY;
+    const SourceGroupSample s = groups.sample(selection, {x * 0x1.0p-32, y * 0x1.0p-32});
+    SourcePoint p;
+    p.direction = s.direction;
+    if (s.pdf > 0.0)
+    {
+      p.radiance = excess.radiance(s.direction);
+      p.density = count * s.pdf;
+    }
+    points.push_back(p);
+  }
+  return points;
+}
+
+std::vector<double> pointSelection(const SourceGroups& groups)
+{
+  std::vector<double> selection = groups.powerSelection();
+  const double n = double(selection.size());
+  for (double& q : selection)
+    q = (1.0 - kPointUniformShare) * q + kPointUniformShare / n;
+  return selection;
+}
+
+int sourcePointCount(int lobeSamples)
+{
+  return std::clamp(4 * lobeSamples, 16, kMaxSourcePoints);
+}
 
 std::vector<double> lobeAwareSelection(const SourceGroups& groups, const glm::dvec3& mirror,
                                        const std::function<double(const glm::dvec3&)>& lobePdf,

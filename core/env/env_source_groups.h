@@ -25,6 +25,7 @@
 // sum_k w_k q_{g_k} density_k / sin theta(d) over the four texels of d's bilinear
 // interpolation (weights w_k).
 #include "core/env/env_sources.h"
+#include "core/env/environment.h"
 
 #include <cstdint>
 #include <functional>
@@ -87,6 +88,38 @@ struct SourceGroups
   // The selection in proportion to the groups' power alone.
   std::vector<double> powerSelection() const;
 };
+
+// The source technique shared by a frame's pixels (env-sampling sources, docs/METHOD.md "The
+// sources split off"): COUNT points drawn by SourceGroups::sample under pointSelection, the
+// same for every pixel of the frame, each with the excess radiance there (EXCESS: the analysis'
+// excess as an equirectangular environment, read as the image interpolates it) and COUNT times
+// its density. A pixel adds f (n.l) L / (N p_lobe(l) + density) for each, and its N lobe
+// samples read the excess at weight N p_lobe / (N p_lobe + COUNT pdf) (multi-sample MIS,
+// balance heuristic); what a point costs a pixel is one evaluation of its lobe, no texel read
+// and no search. Point i of frame k is point k COUNT + i of Sobol's (0, 2)-sequence
+// (sequenceColumns(1) and the radical inverse), its digits shifted by fixed constants: frames
+// [0, 2^a) together stratify as one net when COUNT is a power of two, and no point lands on
+// the edge of a tent (where the density is 0).
+struct SourcePoint
+{
+  glm::dvec3 direction{0.0, 0.0, 1.0}; // env coords, unit
+  glm::dvec3 radiance{0.0};            // the excess there (RGB)
+  double density = 0.0;                // COUNT x the selection's pdf; 0: the point adds nothing
+};
+std::vector<SourcePoint> sourcePoints(const SourceGroups& groups,
+                                      const std::vector<double>& selection,
+                                      const Environment& excess, std::uint32_t frame, int count);
+
+// The selection the shared points are drawn under: by power, with kPointUniformShare of it
+// spread evenly over the groups (a lamp of 2% of the power keeps points where its lobe needs
+// them; docs/BENCHMARKS.md, "Source points shared by a frame's pixels").
+std::vector<double> pointSelection(const SourceGroups& groups);
+constexpr double kPointUniformShare = 0.25;
+
+// How many shared points a frame of N lobe samples draws: 4 N within [16, kMaxSourcePoints]
+// (16 at one lobe sample, as while moving; 64 at the default 16).
+constexpr int kMaxSourcePoints = 64;
+int sourcePointCount(int lobeSamples);
 
 // The first index i of the run [first, first + count) of cdf (cumulative ends, the last 1)
 // with cdf[i] > u (the last when none), found from the run's guide: start at the guide of u's

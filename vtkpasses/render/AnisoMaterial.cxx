@@ -19,6 +19,7 @@
 #include <cmath>
 #include <functional>
 #include <glm/gtc/type_ptr.hpp>
+#include <glm/matrix.hpp>
 #include <map>
 #include <memory>
 #include <string>
@@ -560,8 +561,10 @@ public:
       hook.bindTexture(program, "anisoSourceTables", lighting->sourceTableTexture(window));
       hook.bindTexture(program, "anisoSourceDensity", lighting->sourceDensityTexture(window));
       setSourceGroupUniforms(program, *lighting->sourceSplit().groups);
-      // M a pixel, up to 4 M where its lobe sees sources smaller than itself (a count set in
-      // the settings is taken as it is; one lobe sample, as while moving, takes one).
+      setSourcePointUniforms(program, frame);
+      // The points the frame's pixels share; or, with a count set in the settings, that many
+      // source samples of each pixel's own (M a pixel, up to 4 M where its lobe sees sources
+      // smaller than itself without a count set, as before the shared points).
       const int sourceCount =
           settings.sourceSamples > 0 ? settings.sourceSamples : std::max(1, settings.samples / 4);
       const int sourceSteps =
@@ -614,6 +617,55 @@ public:
       }
     }
     program->SetUniformf("anisoHeightScale", static_cast<float>(settings.heightScale));
+  }
+
+  // The points the frame's pixels share (sourcePoints): world directions with their densities
+  // (count x pdf), their excess radiance, and the selection they are drawn under, which the
+  // lobe samples' MIS weights read. None where the settings ask for per-pixel source samples
+  // (sharedSourcePoints off, or a count of them set: the pixels then draw their own, by their
+  // lobe's selection).
+  void setSourcePointUniforms(vtkShaderProgram* program, uint32_t frame)
+  {
+    const int count = settings.sharedSourcePoints && settings.sourceSamples == 0
+                          ? sourcePointCount(settings.samples)
+                          : 0;
+    program->SetUniformi("anisoSourcePointCount", count);
+    if (count == 0)
+    {
+      return;
+    }
+    const EnvironmentLighting::SourceSplit& split = lighting->sourceSplit();
+    const SourceGroups& groups = *split.groups;
+    constexpr int kGroups = SourceGroups::kMaxGroups;
+    const std::vector<double> selection = pointSelection(groups);
+    std::array<float, kGroups> q{};
+    for (std::size_t g = 0; g < selection.size() && g < q.size(); ++g)
+    {
+      q[g] = static_cast<float>(selection[g]);
+    }
+    program->SetUniform1fv("anisoSourcePointSelection", kGroups, q.data());
+    const glm::dmat3 environmentToWorld = glm::transpose(lighting->worldToEnvironment());
+    std::array<float, 4 * kMaxSourcePoints> points{};
+    std::array<float, 3 * kMaxSourcePoints> radiance{};
+    const std::vector<SourcePoint> drawn =
+        sourcePoints(groups, selection, *split.excess, frame, count);
+    for (std::size_t i = 0; i < drawn.size(); ++i)
+    {
+      const SourcePoint& p = drawn[i];
+      const glm::dvec3 d = environmentToWorld * p.direction;
+      // A point of density 0 (the edge of a tent) adds nothing: radiance 0 over density 1.
+      points[4 * i] = static_cast<float>(d.x);
+      points[4 * i + 1] = static_cast<float>(d.y);
+      points[4 * i + 2] = static_cast<float>(d.z);
+      points[4 * i + 3] = p.density > 0.0 ? static_cast<float>(p.density) : 1.0f;
+      radiance[3 * i] = static_cast<float>(p.radiance.x);
+      radiance[3 * i + 1] = static_cast<float>(p.radiance.y);
+      radiance[3 * i + 2] = static_cast<float>(p.radiance.z);
+    }
+    program->SetUniform4fv("anisoSourcePoints", kMaxSourcePoints,
+                           reinterpret_cast<const float(*)[4]>(points.data()));
+    program->SetUniform3fv("anisoSourcePointRadiance", kMaxSourcePoints,
+                           reinterpret_cast<const float(*)[3]>(radiance.data()));
   }
 
   // The source groups' caps, shares and entries (anisoSourceSelection, anisoSampleSources).

@@ -273,6 +273,8 @@ const EnvironmentLighting::SourceSplit& EnvironmentLighting::sourceSplit()
     split->residualCube = buildCubemap(residual, cubemap_.size);
     split->residualIrradiance = irradianceSh9(residual);
     split->groups = std::make_shared<const SourceGroups>(buildSourceGroups(*analysis_));
+    split->excess =
+        std::make_shared<const EquirectEnvironment>(analysis_->excess, analysis_->key + ":excess");
     split_ = std::move(split);
   }
   return *split_;

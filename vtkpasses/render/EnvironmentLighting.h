@@ -114,6 +114,9 @@ public:
     // lights are the sources (LEADR with env-lights, core/lights/env_lights.h).
     std::array<glm::vec3, 9> residualIrradiance{};
     std::shared_ptr<const SourceGroups> groups;
+    // The excess as an environment (bilinear, as the shader reads it): the radiance of the
+    // points a frame's pixels share (sourcePoints).
+    std::shared_ptr<const EquirectEnvironment> excess;
   };
   const SourceSplit& sourceSplit();
   // In WINDOW's context: the residual cube (as cubeTexture), the excess (RGB float,

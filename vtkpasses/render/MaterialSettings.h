@@ -34,8 +34,12 @@ struct MaterialSettings
   // environment (misLobeFraction, core/env/env_sampling.h); a value in (0, 1) is used as it is
   // (benchmarks compare rules with it).
   double misLobeShare = 0.0;
-  // Source samples per fragment and frame with environment sampling `sources`: 0 = chosen
-  // from the sample count, max(1, samples / 4).
+  // With environment sampling `sources`: the source technique is the points a frame's pixels
+  // share (sourcePointCount of the sample count, core/env/env_source_groups.h), or, with
+  // sharedSourcePoints off or sourceSamples set, each pixel's own source samples: sourceSamples
+  // a frame, 0 = chosen from the sample count, max(1, samples / 4), doubled up to twice where
+  // the pixel's lobe sees sources smaller than itself (benchmarks compare the two).
+  bool sharedSourcePoints = true;
   int sourceSamples = 0;
 
   // Variants.
@@ -74,7 +78,7 @@ struct MaterialSettings
     return lobe.nu == o.lobe.nu && lobe.nv == o.lobe.nv && f0 == o.f0 && albedo == o.albedo &&
            samples == o.samples && heightScale == o.heightScale &&
            pixelDecorrelation == o.pixelDecorrelation && misLobeShare == o.misLobeShare &&
-           sourceSamples == o.sourceSamples &&
+           sharedSourcePoints == o.sharedSourcePoints && sourceSamples == o.sourceSamples &&
            method == o.method && filtered == o.filtered && halfVectors == o.halfVectors &&
            lutSize == o.lutSize && brdfLutSamples == o.brdfLutSamples &&
            environmentSampling == o.environmentSampling && normalMap == o.normalMap &&

@@ -121,6 +121,15 @@ uniform float anisoSourceGroupSquared[ANISO_SOURCE_GROUPS];
 uniform int anisoSourceSequenceCounts[3];
 uniform ivec2 anisoSourceSequenceBlocks[3];
 uniform ivec4 anisoSourceSequenceColumns[3];
+// The points a frame's pixels share (sourcePoints in core/env/env_source_groups.h; at most
+// kMaxSourcePoints): world direction and K times its density (.w), the excess radiance there,
+// and the selection they were drawn under. anisoSourcePointCount 0: each pixel draws its own
+// source samples instead (a count fixed in the settings).
+#define ANISO_SOURCE_POINTS 64
+uniform int anisoSourcePointCount;
+uniform vec4 anisoSourcePoints[ANISO_SOURCE_POINTS];
+uniform vec3 anisoSourcePointRadiance[ANISO_SOURCE_POINTS];
+uniform float anisoSourcePointSelection[ANISO_SOURCE_GROUPS];
 #endif
 #ifdef ANISO_METHOD_SPLIT_SUM
 uniform sampler2D anisoBrdfLut; // RG32F: s, b with F0 s + b the directional albedo
@@ -698,6 +707,19 @@ vec3 anisoSpecular(vec3 t, vec3 b, vec3 n, vec3 v, vec3 f0)
   int sourceSteps;
   anisoSourceSelection(t, b, n, v, count, selection, sourceSteps);
   int sourceCount = sourceSteps < 0 ? 0 : max(anisoSourceSampleCount, 1) << sourceSteps;
+  // With the shared points a pixel that takes sources takes all K of them, and the lobe
+  // samples' weights read the density they were drawn with (the frame's selection, not the
+  // pixel's).
+  int pointCount = 0;
+  if (anisoSourcePointCount > 0 && sourceCount > 0)
+  {
+    pointCount = anisoSourcePointCount;
+    sourceCount = anisoSourcePointCount;
+    for (int g = 0; g < ANISO_SOURCE_GROUPS; ++g)
+    {
+      selection[g] = anisoSourcePointSelection[g];
+    }
+  }
   // A pixel without source samples takes the sources in this loop, at weight 1; one with them
   // in the loop after it, at their MIS weight. Two loops, not a branch in one: a software
   // rasteriser runs both sides of a branch for a block of pixels, but leaves a loop as soon as
@@ -811,13 +833,34 @@ vec3 anisoSpecular(vec3 t, vec3 b, vec3 n, vec3 v, vec3 f0)
     float chi = m * m * m * m * m;
     sum += radiance * (f0 + (1.0 - f0) * chi) * (nDotL / max(nDotL, nDotV));
   }
-  // The source samples: M points of the sources' distribution, stratified and taken from frame
-  // to frame as the lobe's are (their own block of the sequence), each weighted as
-  // anisoSourceLobeWeight says for the lobe's (times N, as the lobe's sum is divided by N).
+  // The shared points: each adds f (n.l) L / (N p_lobe + K p_s), as a source sample does.
+  for (int j = 0; j < pointCount; ++j)
+  {
+    vec3 l = anisoSourcePoints[j].xyz;
+    float nDotL = dot(n, l);
+    vec3 h = normalize(v + l);
+    float vDotH = dot(v, h);
+    if (nDotL <= 0.0 || vDotH <= 0.0)
+    {
+      continue;
+    }
+    float pdfLobe =
+      exp2(anisoLog2HalfVectorPdf(vec3(dot(h, t), dot(h, b), dot(h, n))) - log2(4.0 * vDotH));
+    float n0 = float(count);
+    float m = clamp(1.0 - vDotH, 0.0, 1.0);
+    float chi = m * m * m * m * m;
+    sum += anisoSourcePointRadiance[j] * (f0 + (1.0 - f0) * chi) * (nDotL / max(nDotL, nDotV)) *
+      (n0 * pdfLobe / (n0 * pdfLobe + anisoSourcePoints[j].w));
+  }
+  // Or the pixel's own source samples: M points of the sources' distribution under its
+  // selection, stratified and taken from frame to frame as the lobe's are (their own block of
+  // the sequence), each weighted as anisoSourceLobeWeight says for the lobe's (times N, as the
+  // lobe's sum is divided by N).
+  int sampledCount = pointCount > 0 ? 0 : sourceCount;
   mat3 sourceToWorld = transpose(anisoWorldToEnvironment);
   int sourceBlock = max(sourceSteps, 0);
   int sourceSequenceCount = anisoSourceSequenceCounts[sourceBlock];
-  for (int j = 0; j < sourceCount; ++j)
+  for (int j = 0; j < sampledCount; ++j)
   {
     vec2 uv;
     vec4 ls = anisoSampleSources(selection,
