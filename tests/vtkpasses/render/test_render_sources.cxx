@@ -159,8 +159,9 @@ TEST(SourcesVariant, TheSplitAddsUpToTheEnvironment)
 }
 
 // A rough and a medium lobe next to a sun of 1e5 (the case lobe samples miss): at the same N
-// (16 x 16) the split must beat lobe-only sampling severalfold and do at least as well as
-// one-sample MIS of the whole environment; auto picks it, and converges below 1% (16 x 64).
+// (16 x 16) the split must beat lobe-only sampling severalfold (with the points the frame's
+// pixels share, the default, and with each pixel's own source samples) and do at least as well
+// as one-sample MIS of the whole environment; auto picks it, and converges below 1% (16 x 64).
 class SourcesUnderTheSun : public ::testing::TestWithParam<AsLobe>
 {
 };
@@ -184,6 +185,11 @@ TEST_P(SourcesUnderTheSun, ConvergeBelowOnePercent)
   const double sources =
       measure("sources", withSampling(base, EnvironmentSampling::Sources), pixels);
   const double automatic = measure("auto", withSampling(base, EnvironmentSampling::Auto), pixels);
+  // The other design of the sources' technique: each pixel's own source samples.
+  RenderSettings perPixel = withSampling(base, EnvironmentSampling::Sources);
+  perPixel.material.sharedSourcePoints = false;
+  const double own = measure("sources, each pixel's own samples", perPixel, pixels);
+  EXPECT_LT(own, off / 4.0);
   EXPECT_LT(sources, off / 4.0);
   EXPECT_LE(sources, 1.05 * mis);
   EXPECT_EQ(automatic, sources); // the same variant, the same image
