@@ -14,8 +14,9 @@
 //   - BenchCommand.HdriQuickRunHasItsRows runs `aniso bench --models hdri --quick`: only the
 //     hdri family's rows, each configuration at each checkpoint for both environments and
 //     lobes, auto resolved as the environments' analyses say (off under the built-in studio,
-//     sources under the sun-sky), and under the sun the default far closer to the reference
-//     than lobe samples alone (as test_render_sources finds on its own scene); the window's
+//     sources under the sun-sky), and under the sun the default (the points the frame's pixels
+//     share) and each pixel's own source samples far closer to the reference than lobe samples
+//     alone (as test_render_sources finds on its own scene); the window's
 //     still view of each stops by its own estimate (from 16 frames, within 3/4 of 1%) at or
 //     below 1% against the reference; the report's section and the figure exist.
 //   - `--models`: the families' list parsed, unknown and repeated names refused.
@@ -357,7 +358,7 @@ TEST_F(BenchCommand, HdriQuickRunHasItsRows)
       std::map<std::string, std::map<int, double>> errors; // method, frames: error
       for (const std::string& method :
            {expectation.first, std::string("exact"), std::string("exact+mis"),
-            std::string("exact+sources")})
+            std::string("exact+sources"), std::string("exact+sources(pixel)")})
       {
         for (int frames : {1, 4, 16})
         {
@@ -401,13 +402,14 @@ TEST_F(BenchCommand, HdriQuickRunHasItsRows)
                     }),
                 1)
           << environment << " " << lobe << ": the still view";
-      expected += 1 + 4 * 3 + 1;
-      // Under the sun lobe samples alone miss the disc; the default (sources) does not: at 16
-      // frames of 16 samples at least 4 times closer (test_render_sources bounds its own scene
-      // the same way).
+      expected += 1 + 5 * 3 + 1;
+      // Under the sun lobe samples alone miss the disc; the default (sources, the points the
+      // frame's pixels share) does not, nor each pixel's own source samples: at 16 frames of 16
+      // samples at least 4 times closer (test_render_sources bounds its own scene the same way).
       if (expectation.second == "sun")
       {
         EXPECT_LT(4.0 * errors[expectation.first][16], errors["exact"][16]) << lobe;
+        EXPECT_LT(4.0 * errors["exact+sources(pixel)"][16], errors["exact"][16]) << lobe;
       }
     }
   }
