@@ -299,6 +299,7 @@ std::vector<SourcePoint> sourcePoints(const SourceGroups& groups,
     const SourceGroupSample s = groups.sample(selection, {x * 0x1.0p-32, y * 0x1.0p-32});
     SourcePoint p;
     p.direction = s.direction;
+    p.group = s.group;
     if (s.pdf > 0.0)
     {
       p.radiance = excess.radiance(s.direction);
@@ -320,7 +321,7 @@ std::vector<double> pointSelection(const SourceGroups& groups)
 
 int sourcePointCount(int lobeSamples)
 {
-  return std::clamp(4 * lobeSamples, 16, kMaxSourcePoints);
+  return std::clamp(8 * lobeSamples, 16, kMaxSourcePoints);
 }
 
 std::vector<double> lobeAwareSelection(const SourceGroups& groups, const glm::dvec3& mirror,

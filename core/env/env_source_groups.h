@@ -99,12 +99,15 @@ struct SourceGroups
 // and no search. Point i of frame k is point k COUNT + i of Sobol's (0, 2)-sequence
 // (sequenceColumns(1) and the radical inverse), its digits shifted by fixed constants: frames
 // [0, 2^a) together stratify as one net when COUNT is a power of two, and no point lands on
-// the edge of a tent (where the density is 0).
+// the edge of a tent (where the density is 0). The points come in the order they were drawn,
+// each with its group (the material orders them by group: a pixel takes a group's run of
+// points or leaves the group to its lobe samples).
 struct SourcePoint
 {
   glm::dvec3 direction{0.0, 0.0, 1.0}; // env coords, unit
   glm::dvec3 radiance{0.0};            // the excess there (RGB)
   double density = 0.0;                // COUNT x the selection's pdf; 0: the point adds nothing
+  int group = -1;                      // the group it was drawn from
 };
 std::vector<SourcePoint> sourcePoints(const SourceGroups& groups,
                                       const std::vector<double>& selection,
@@ -116,9 +119,9 @@ std::vector<SourcePoint> sourcePoints(const SourceGroups& groups,
 std::vector<double> pointSelection(const SourceGroups& groups);
 constexpr double kPointUniformShare = 0.25;
 
-// How many shared points a frame of N lobe samples draws: 4 N within [16, kMaxSourcePoints]
-// (16 at one lobe sample, as while moving; 64 at the default 16).
-constexpr int kMaxSourcePoints = 64;
+// How many shared points a frame of N lobe samples draws: 8 N within [16, kMaxSourcePoints]
+// (16 at one lobe sample, as while moving; 128 at the default 16).
+constexpr int kMaxSourcePoints = 128;
 int sourcePointCount(int lobeSamples);
 
 // The first index i of the run [first, first + count) of cdf (cumulative ends, the last 1)

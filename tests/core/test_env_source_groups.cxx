@@ -272,7 +272,7 @@ TEST(SourceGroups, SharedPointsIntegrateTheExcess)
   }
   EXPECT_NEAR(sum, 1.0, 1e-12);
   EXPECT_EQ(aniso::sourcePointCount(1), 16);
-  EXPECT_EQ(aniso::sourcePointCount(16), 64);
+  EXPECT_EQ(aniso::sourcePointCount(16), 128);
   EXPECT_EQ(aniso::sourcePointCount(64), aniso::kMaxSourcePoints);
 
   const glm::dvec3 axis = texelCentre(5, 41);

@@ -647,8 +647,29 @@ public:
     const glm::dmat3 environmentToWorld = glm::transpose(lighting->worldToEnvironment());
     std::array<float, 4 * kMaxSourcePoints> points{};
     std::array<float, 3 * kMaxSourcePoints> radiance{};
-    const std::vector<SourcePoint> drawn =
-        sourcePoints(groups, selection, *split.excess, frame, count);
+    std::vector<SourcePoint> drawn = sourcePoints(groups, selection, *split.excess, frame, count);
+    // Ordered by group, each group's run given: a pixel takes a group's points or leaves it
+    // to its lobe samples (anisoSourceSelection).
+    std::stable_sort(drawn.begin(), drawn.end(),
+                     [](const SourcePoint& a, const SourcePoint& b) { return a.group < b.group; });
+    std::array<int, 2 * kGroups> runs{};
+    for (std::size_t i = 0; i < drawn.size(); ++i)
+    {
+      const int g = drawn[i].group;
+      if (g >= 0 && g < kGroups)
+      {
+        if (runs[2 * std::size_t(g) + 1] == 0)
+        {
+          runs[2 * std::size_t(g)] = int(i);
+        }
+        ++runs[2 * std::size_t(g) + 1];
+      }
+    }
+    for (int g = 0; g < kGroups; ++g)
+    {
+      program->SetUniform2i(("anisoSourcePointRuns[" + std::to_string(g) + "]").c_str(),
+                            runs.data() + 2 * g);
+    }
     for (std::size_t i = 0; i < drawn.size(); ++i)
     {
       const SourcePoint& p = drawn[i];

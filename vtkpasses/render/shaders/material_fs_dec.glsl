@@ -125,11 +125,13 @@ uniform ivec4 anisoSourceSequenceColumns[3];
 // kMaxSourcePoints): world direction and K times its density (.w), the excess radiance there,
 // and the selection they were drawn under. anisoSourcePointCount 0: each pixel draws its own
 // source samples instead (a count fixed in the settings).
-#define ANISO_SOURCE_POINTS 64
+#define ANISO_SOURCE_POINTS 128
 uniform int anisoSourcePointCount;
 uniform vec4 anisoSourcePoints[ANISO_SOURCE_POINTS];
 uniform vec3 anisoSourcePointRadiance[ANISO_SOURCE_POINTS];
 uniform float anisoSourcePointSelection[ANISO_SOURCE_GROUPS];
+// Each group's run of the points (first, count): they come ordered by group.
+uniform ivec2 anisoSourcePointRuns[ANISO_SOURCE_GROUPS];
 #endif
 #ifdef ANISO_METHOD_SPLIT_SUM
 uniform sampler2D anisoBrdfLut; // RG32F: s, b with F0 s + b the directional albedo
@@ -477,6 +479,7 @@ void anisoSourceSelection(vec3 t, vec3 b, vec3 n, vec3 v, int lobeCount,
 {
   float small = 0.0;
   float secondMoment = 0.0;
+  float groupMoment[ANISO_SOURCE_GROUPS];
   mat3 environmentToWorld = transpose(anisoWorldToEnvironment);
   vec3 r = anisoWorldToEnvironment * (2.0 * dot(n, v) * n - v);
   float w[ANISO_SOURCE_GROUPS];
@@ -484,6 +487,7 @@ void anisoSourceSelection(vec3 t, vec3 b, vec3 n, vec3 v, int lobeCount,
   for (int g = 0; g < ANISO_SOURCE_GROUPS; ++g)
   {
     w[g] = 0.0;
+    groupMoment[g] = 0.0;
     if (g >= anisoSourceGroupCount)
     {
       continue;
@@ -519,7 +523,8 @@ void anisoSourceSelection(vec3 t, vec3 b, vec3 n, vec3 v, int lobeCount,
     sum += w[g];
     // Down by its solid angle against the lobe's where the lobe fits inside it.
     small += w[g] * min(anisoSourceGroupInfo[g].y / pdf, 1.0);
-    secondMoment += pdf * anisoSourceGroupSquared[g];
+    groupMoment[g] = pdf * anisoSourceGroupSquared[g];
+    secondMoment += groupMoment[g];
   }
   float whole = sum + anisoSourceResidualShare;
   if (secondMoment < anisoSourceLobeOnlyVariance * float(lobeCount) * whole * whole)
@@ -533,6 +538,19 @@ void anisoSourceSelection(vec3 t, vec3 b, vec3 n, vec3 v, int lobeCount,
   }
   float share = clamp(small / max(whole, 1e-30), 0.0, 1.0);
   sampleSteps = clamp(int(round(log2(1.0 + 3.0 * share))), 0, anisoSourceSampleSteps);
+  if (anisoSourcePointCount > 0)
+  {
+    // The shared points, group by group: a group whose part of the moment is within its share
+    // of the same budget is left to the lobe samples (its q 0: weight 1 there), the others
+    // take their points at the frame's selection.
+    float groupBudget = anisoSourceLobeOnlyVariance * float(lobeCount) * whole * whole /
+      float(max(anisoSourceGroupCount, 1));
+    for (int g = 0; g < ANISO_SOURCE_GROUPS; ++g)
+    {
+      q[g] = groupMoment[g] < groupBudget ? 0.0 : anisoSourcePointSelection[g];
+    }
+    return;
+  }
   for (int g = 0; g < ANISO_SOURCE_GROUPS; ++g)
   {
     float share = g < anisoSourceGroupCount ? anisoSourceGroupInfo[g].x : 0.0;
@@ -707,18 +725,13 @@ vec3 anisoSpecular(vec3 t, vec3 b, vec3 n, vec3 v, vec3 f0)
   int sourceSteps;
   anisoSourceSelection(t, b, n, v, count, selection, sourceSteps);
   int sourceCount = sourceSteps < 0 ? 0 : max(anisoSourceSampleCount, 1) << sourceSteps;
-  // With the shared points a pixel that takes sources takes all K of them, and the lobe
-  // samples' weights read the density they were drawn with (the frame's selection, not the
-  // pixel's).
-  int pointCount = 0;
-  if (anisoSourcePointCount > 0 && sourceCount > 0)
+  // With the shared points a pixel that takes sources takes the points of each group its
+  // selection keeps (anisoSourceSelection), and the lobe samples' weights read the density the
+  // points were drawn with (the frame's selection, 0 for the groups left to them).
+  bool points = anisoSourcePointCount > 0 && sourceCount > 0;
+  if (points)
   {
-    pointCount = anisoSourcePointCount;
     sourceCount = anisoSourcePointCount;
-    for (int g = 0; g < ANISO_SOURCE_GROUPS; ++g)
-    {
-      selection[g] = anisoSourcePointSelection[g];
-    }
   }
   // A pixel without source samples takes the sources in this loop, at weight 1; one with them
   // in the loop after it, at their MIS weight. Two loops, not a branch in one: a software
@@ -834,8 +847,12 @@ vec3 anisoSpecular(vec3 t, vec3 b, vec3 n, vec3 v, vec3 f0)
     sum += radiance * (f0 + (1.0 - f0) * chi) * (nDotL / max(nDotL, nDotV));
   }
   // The shared points: each adds f (n.l) L / (N p_lobe + K p_s), as a source sample does.
-  for (int j = 0; j < pointCount; ++j)
+  int pointGroups = points ? anisoSourceGroupCount : 0;
+  for (int g = 0; g < pointGroups; ++g)
   {
+    ivec2 run = selection[g] > 0.0 ? anisoSourcePointRuns[g] : ivec2(0);
+    for (int j = run.x; j < run.x + run.y; ++j)
+    {
     vec3 l = anisoSourcePoints[j].xyz;
     float nDotL = dot(n, l);
     vec3 h = normalize(v + l);
@@ -851,12 +868,13 @@ vec3 anisoSpecular(vec3 t, vec3 b, vec3 n, vec3 v, vec3 f0)
     float chi = m * m * m * m * m;
     sum += anisoSourcePointRadiance[j] * (f0 + (1.0 - f0) * chi) * (nDotL / max(nDotL, nDotV)) *
       (n0 * pdfLobe / (n0 * pdfLobe + anisoSourcePoints[j].w));
+    }
   }
   // Or the pixel's own source samples: M points of the sources' distribution under its
   // selection, stratified and taken from frame to frame as the lobe's are (their own block of
   // the sequence), each weighted as anisoSourceLobeWeight says for the lobe's (times N, as the
   // lobe's sum is divided by N).
-  int sampledCount = pointCount > 0 ? 0 : sourceCount;
+  int sampledCount = points ? 0 : sourceCount;
   mat3 sourceToWorld = transpose(anisoWorldToEnvironment);
   int sourceBlock = max(sourceSteps, 0);
   int sourceSequenceCount = anisoSourceSequenceCounts[sourceBlock];
