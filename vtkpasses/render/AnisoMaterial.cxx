@@ -19,7 +19,6 @@
 #include <cmath>
 #include <functional>
 #include <glm/gtc/type_ptr.hpp>
-#include <glm/matrix.hpp>
 #include <map>
 #include <memory>
 #include <string>
@@ -634,59 +633,19 @@ public:
     {
       return;
     }
-    const EnvironmentLighting::SourceSplit& split = lighting->sourceSplit();
-    const SourceGroups& groups = *split.groups;
+    const EnvironmentLighting::SharedSourcePoints& shared =
+        lighting->sharedSourcePoints(frame, count);
     constexpr int kGroups = SourceGroups::kMaxGroups;
-    const std::vector<double> selection = pointSelection(groups);
-    std::array<float, kGroups> q{};
-    for (std::size_t g = 0; g < selection.size() && g < q.size(); ++g)
-    {
-      q[g] = static_cast<float>(selection[g]);
-    }
-    program->SetUniform1fv("anisoSourcePointSelection", kGroups, q.data());
-    const glm::dmat3 environmentToWorld = glm::transpose(lighting->worldToEnvironment());
-    std::array<float, 4 * kMaxSourcePoints> points{};
-    std::array<float, 3 * kMaxSourcePoints> radiance{};
-    std::vector<SourcePoint> drawn = sourcePoints(groups, selection, *split.excess, frame, count);
-    // Ordered by group, each group's run given: a pixel takes a group's points or leaves it
-    // to its lobe samples (anisoSourceSelection).
-    std::stable_sort(drawn.begin(), drawn.end(),
-                     [](const SourcePoint& a, const SourcePoint& b) { return a.group < b.group; });
-    std::array<int, 2 * kGroups> runs{};
-    for (std::size_t i = 0; i < drawn.size(); ++i)
-    {
-      const int g = drawn[i].group;
-      if (g >= 0 && g < kGroups)
-      {
-        if (runs[2 * std::size_t(g) + 1] == 0)
-        {
-          runs[2 * std::size_t(g)] = int(i);
-        }
-        ++runs[2 * std::size_t(g) + 1];
-      }
-    }
+    program->SetUniform1fv("anisoSourcePointSelection", kGroups, shared.selection.data());
     for (int g = 0; g < kGroups; ++g)
     {
       program->SetUniform2i(("anisoSourcePointRuns[" + std::to_string(g) + "]").c_str(),
-                            runs.data() + 2 * g);
-    }
-    for (std::size_t i = 0; i < drawn.size(); ++i)
-    {
-      const SourcePoint& p = drawn[i];
-      const glm::dvec3 d = environmentToWorld * p.direction;
-      // A point of density 0 (the edge of a tent) adds nothing: radiance 0 over density 1.
-      points[4 * i] = static_cast<float>(d.x);
-      points[4 * i + 1] = static_cast<float>(d.y);
-      points[4 * i + 2] = static_cast<float>(d.z);
-      points[4 * i + 3] = p.density > 0.0 ? static_cast<float>(p.density) : 1.0f;
-      radiance[3 * i] = static_cast<float>(p.radiance.x);
-      radiance[3 * i + 1] = static_cast<float>(p.radiance.y);
-      radiance[3 * i + 2] = static_cast<float>(p.radiance.z);
+                            shared.runs.data() + 2 * g);
     }
     program->SetUniform4fv("anisoSourcePoints", kMaxSourcePoints,
-                           reinterpret_cast<const float(*)[4]>(points.data()));
+                           reinterpret_cast<const float(*)[4]>(shared.points.data()));
     program->SetUniform3fv("anisoSourcePointRadiance", kMaxSourcePoints,
-                           reinterpret_cast<const float(*)[3]>(radiance.data()));
+                           reinterpret_cast<const float(*)[3]>(shared.radiance.data()));
   }
 
   // The source groups' caps, shares and entries (anisoSourceSelection, anisoSampleSources).

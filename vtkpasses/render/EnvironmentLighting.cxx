@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <glm/matrix.hpp>
 #include <vtkOpenGLRenderWindow.h>
 #include <vtkTextureObject.h>
 
@@ -278,6 +279,55 @@ const EnvironmentLighting::SourceSplit& EnvironmentLighting::sourceSplit()
     split_ = std::move(split);
   }
   return *split_;
+}
+
+const EnvironmentLighting::SharedSourcePoints&
+EnvironmentLighting::sharedSourcePoints(std::uint32_t frame, int count)
+{
+  count = std::clamp(count, 0, kMaxSourcePoints);
+  if (sharedPoints_ && sharedPoints_->frame == frame && sharedPoints_->count == count &&
+      sharedPoints_->rotationDegrees == rotationDegrees_)
+  {
+    return *sharedPoints_;
+  }
+  const SourceSplit& split = sourceSplit();
+  const SourceGroups& groups = *split.groups;
+  auto packed = std::make_unique<SharedSourcePoints>();
+  packed->frame = frame;
+  packed->count = count;
+  packed->rotationDegrees = rotationDegrees_;
+  const std::vector<double> selection = pointSelection(groups);
+  for (std::size_t g = 0; g < selection.size() && g < packed->selection.size(); ++g)
+  {
+    packed->selection[g] = static_cast<float>(selection[g]);
+  }
+  std::vector<SourcePoint> drawn = sourcePoints(groups, selection, *split.excess, frame, count);
+  std::stable_sort(drawn.begin(), drawn.end(),
+                   [](const SourcePoint& a, const SourcePoint& b) { return a.group < b.group; });
+  const glm::dmat3 environmentToWorld = glm::transpose(worldToEnvironment());
+  for (std::size_t i = 0; i < drawn.size(); ++i)
+  {
+    const SourcePoint& p = drawn[i];
+    if (p.group >= 0 && p.group < SourceGroups::kMaxGroups)
+    {
+      const std::size_t g = std::size_t(p.group);
+      if (packed->runs[2 * g + 1] == 0)
+      {
+        packed->runs[2 * g] = int(i);
+      }
+      ++packed->runs[2 * g + 1];
+    }
+    const glm::dvec3 d = environmentToWorld * p.direction;
+    packed->points[4 * i] = static_cast<float>(d.x);
+    packed->points[4 * i + 1] = static_cast<float>(d.y);
+    packed->points[4 * i + 2] = static_cast<float>(d.z);
+    packed->points[4 * i + 3] = p.density > 0.0 ? static_cast<float>(p.density) : 1.0f;
+    packed->radiance[3 * i] = static_cast<float>(p.radiance.x);
+    packed->radiance[3 * i + 1] = static_cast<float>(p.radiance.y);
+    packed->radiance[3 * i + 2] = static_cast<float>(p.radiance.z);
+  }
+  sharedPoints_ = std::move(packed);
+  return *sharedPoints_;
 }
 
 void EnvironmentLighting::uploadSourceTextures(vtkOpenGLRenderWindow* window)

@@ -119,6 +119,21 @@ public:
     std::shared_ptr<const EquirectEnvironment> excess;
   };
   const SourceSplit& sourceSplit();
+  // The points a frame's pixels share (core sourcePoints under pointSelection, COUNT of them
+  // for FRAME), ordered by group, in world coordinates, packed as the shader's uniforms (a
+  // point of density 0 as radiance 0 over density 1). Kept for the last frame, count and
+  // rotation asked: the parts of a scene drawing one frame share one draw of them.
+  struct SharedSourcePoints
+  {
+    std::uint32_t frame = 0;
+    int count = 0;
+    double rotationDegrees = 0.0;
+    std::array<float, SourceGroups::kMaxGroups> selection{};
+    std::array<int, 2 * SourceGroups::kMaxGroups> runs{}; // per group: first point, count
+    std::array<float, 4 * kMaxSourcePoints> points{};     // world direction, count x pdf
+    std::array<float, 3 * kMaxSourcePoints> radiance{};
+  };
+  const SharedSourcePoints& sharedSourcePoints(std::uint32_t frame, int count);
   // In WINDOW's context: the residual cube (as cubeTexture), the excess (RGB float,
   // equirectangular, nearest), the groups' tables (RGBA float, kSourceTableWidth wide, cell i at
   // (i mod width, i / width): the rows, then the entries, as SourceGroups lays them out, a row's
@@ -151,6 +166,7 @@ private:
   std::shared_ptr<const EnvAnalysis> analysis_;
   bool analysisFailed_ = false; // resolveSampling found no analysis: auto is off
   std::unique_ptr<SourceSplit> split_;
+  std::unique_ptr<SharedSourcePoints> sharedPoints_;
   // residual cube, excess, entries, density and group
   std::array<vtkSmartPointer<vtkTextureObject>, 4> sourceTextures_;
   vtkWeakPointer<vtkOpenGLRenderWindow> sourceWindow_;

@@ -853,21 +853,21 @@ vec3 anisoSpecular(vec3 t, vec3 b, vec3 n, vec3 v, vec3 f0)
     ivec2 run = selection[g] > 0.0 ? anisoSourcePointRuns[g] : ivec2(0);
     for (int j = run.x; j < run.x + run.y; ++j)
     {
-    vec3 l = anisoSourcePoints[j].xyz;
-    float nDotL = dot(n, l);
-    vec3 h = normalize(v + l);
-    float vDotH = dot(v, h);
-    if (nDotL <= 0.0 || vDotH <= 0.0)
-    {
-      continue;
-    }
-    float pdfLobe =
-      exp2(anisoLog2HalfVectorPdf(vec3(dot(h, t), dot(h, b), dot(h, n))) - log2(4.0 * vDotH));
-    float n0 = float(count);
-    float m = clamp(1.0 - vDotH, 0.0, 1.0);
-    float chi = m * m * m * m * m;
-    sum += anisoSourcePointRadiance[j] * (f0 + (1.0 - f0) * chi) * (nDotL / max(nDotL, nDotV)) *
-      (n0 * pdfLobe / (n0 * pdfLobe + anisoSourcePoints[j].w));
+      vec3 l = anisoSourcePoints[j].xyz;
+      float nDotL = dot(n, l);
+      vec3 h = normalize(v + l);
+      float vDotH = dot(v, h);
+      if (nDotL <= 0.0 || vDotH <= 0.0)
+      {
+        continue;
+      }
+      float pdfLobe =
+        exp2(anisoLog2HalfVectorPdf(vec3(dot(h, t), dot(h, b), dot(h, n))) - log2(4.0 * vDotH));
+      float n0 = float(count);
+      float m = clamp(1.0 - vDotH, 0.0, 1.0);
+      float chi = m * m * m * m * m;
+      sum += anisoSourcePointRadiance[j] * (f0 + (1.0 - f0) * chi) * (nDotL / max(nDotL, nDotV)) *
+        (n0 * pdfLobe / (n0 * pdfLobe + anisoSourcePoints[j].w));
     }
   }
   // Or the pixel's own source samples: M points of the sources' distribution under its
